@@ -1,0 +1,123 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <regex>
+
+#include "backend_factory.h"
+#include "commands.h"
+#include "image/image_io.h"
+#include "progress.h"
+#include "render/path_tracer.h"
+#include "render/tonemapper.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+
+namespace penumbra::app {
+namespace {
+
+struct RenderOptions {
+  std::string scene = "cornell-box";
+  std::string size = "512x512";
+  uint32_t spp = 64;
+  uint32_t sppPerFrame = 16;
+  std::string out = "render.png";
+  std::string backend = "vulkan";
+  int device = -1;
+  uint32_t seed = 0;
+  uint32_t maxDepth = 8;
+  bool noNee = false;
+  bool noMis = false;
+  bool noRoulette = false;
+  bool validation = false;
+  float exposure = 1.0f;
+};
+
+std::pair<uint32_t, uint32_t> parseSize(const std::string& text) {
+  static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
+  std::smatch m;
+  if (!std::regex_match(text, m, pattern))
+    throw Error(fmt::format("--size '{}': expected WIDTHxHEIGHT, e.g. 512x512", text));
+  uint32_t w = std::stoul(m[1]), h = std::stoul(m[2]);
+  if (w == 0 || h == 0 || w > 16384 || h > 16384)
+    throw Error(fmt::format("--size '{}': width and height must be 1..16384", text));
+  return {w, h};
+}
+
+int runRender(const RenderOptions& o) {
+  auto [width, height] = parseSize(o.size);
+  // Everything that can fail on bad input fails before any rendering starts.
+  image::checkWritable(o.out);
+  const scene::Scene scene = scene::loadScene(o.scene);
+
+  rhi::DeviceCreateInfo info;
+  info.adapterIndex = o.device;
+  info.validation = o.validation;
+  auto device = backends::createDevice(o.backend, info);
+  const auto& adapter = device->adapter();
+  fmt::print("device: {} ({}, {}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
+             adapter.apiVersion, device->backendName());
+  fmt::print("scene: {} ({} triangles), {}x{}, {} spp, seed {}\n", scene.name, scene.triangleCount(),
+             width, height, o.spp, o.seed);
+
+  render::PathTracer tracer(*device, scene, width, height);
+  render::PathTracerSettings settings;
+  settings.seed = o.seed;
+  settings.maxDepth = o.maxDepth;
+  settings.nextEventEstimation = !o.noNee;
+  settings.multipleImportanceSampling = !o.noMis;
+  settings.russianRoulette = !o.noRoulette;
+
+  Progress progress(o.spp);
+  double gpuSeconds = 0;
+  uint64_t rays = 0;
+  while (tracer.accumulatedSamples() < o.spp) {
+    const uint32_t n = std::min(o.sppPerFrame, o.spp - tracer.accumulatedSamples());
+    auto stats = tracer.renderFrame(settings, n);
+    gpuSeconds += stats.gpuSeconds;
+    rays += stats.rays;
+    progress.update(tracer.accumulatedSamples());
+  }
+  progress.finish();
+
+  if (image::formatFromPath(o.out) == image::FileFormat::Exr) {
+    image::saveExr(o.out, tracer.readback());
+  } else {
+    render::Tonemapper tonemapper(*device);
+    image::savePng(o.out, tonemapper.run(tracer.accumulation(), o.exposure));
+  }
+  fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel\n", gpuSeconds * 1e3,
+             gpuSeconds * 1e3 / o.spp);
+  fmt::print("rays: {} ({:.2f} Mrays/s)\n", rays, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0);
+  fmt::print("wrote {}\n", o.out);
+  if (o.validation && device->validationMessageCount() > 0) {
+    fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command addRenderCommand(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  auto* cmd = app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
+  cmd->add_option("--scene", o->scene, "Built-in scene name or scene file (.json)")->capture_default_str();
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 20))->capture_default_str();
+  cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")
+      ->check(CLI::Range(1u, 16u))->capture_default_str();
+  cmd->add_option("--out", o->out, "Output image: .exr (linear float) or .png (tone-mapped sRGB)")
+      ->capture_default_str();
+  cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
+  cmd->add_option("--device", o->device, "Device index from 'penumbra devices' (default: best with ray tracing)");
+  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+  cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")->check(CLI::Range(0u, 1024u))->capture_default_str();
+  cmd->add_flag("--no-nee", o->noNee, "Disable next-event estimation (BSDF sampling only)");
+  cmd->add_flag("--no-mis", o->noMis, "Disable multiple importance sampling (NEE only for lights)");
+  cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
+  cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")->capture_default_str();
+  cmd->add_flag("--validation", o->validation, "Enable the API validation layer; fail on any message");
+  return [o] { return runRender(*o); };
+}
+
+}  // namespace penumbra::app

@@ -1,0 +1,19 @@
+#pragma once
+// Creates RHI devices by backend name. The only place that knows which
+// backends this build contains.
+#include <string>
+#include <vector>
+
+#include "rhi/device.h"
+
+namespace penumbra::backends {
+
+// Backends compiled into this build ("vulkan"; "d3d12" on Windows builds).
+std::vector<std::string> availableBackends();
+
+// Throws penumbra::Error with a one-line reason for an unknown backend, a
+// backend missing from this build, or no suitable device.
+rhi::DeviceHandle createDevice(const std::string& backend, const rhi::DeviceCreateInfo& info);
+std::vector<rhi::AdapterInfo> listAdapters(const std::string& backend);
+
+}  // namespace penumbra::backends

@@ -1,0 +1,324 @@
+#pragma once
+// The Vulkan KHR ray-tracing implementation of engine/rhi. Nothing outside
+// backends/vulkan includes this header; apps reach it through
+// backends/backend_factory.h.
+#include <atomic>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "rhi/rhi.h"
+#include "vulkan_functions.h"
+
+namespace penumbra::vk {
+
+// Owns the VkInstance and the validation messenger. Shared by the devices
+// created from it; counts validation warnings/errors for the tests.
+class VulkanInstance {
+ public:
+  explicit VulkanInstance(bool validation);
+  ~VulkanInstance();
+  VulkanInstance(const VulkanInstance&) = delete;
+  VulkanInstance& operator=(const VulkanInstance&) = delete;
+
+  VkInstance handle() const { return instance_; }
+  bool hasDebugUtils() const { return debugUtils_; }
+  uint64_t validationMessages() const { return validationMessages_; }
+  std::vector<rhi::AdapterInfo> adapters();
+  std::vector<VkPhysicalDevice> physicalDevices();
+
+ private:
+  static VKAPI_ATTR VkBool32 VKAPI_CALL messengerCallback(
+      VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  bool debugUtils_ = false;
+  std::atomic<uint64_t> validationMessages_{0};
+};
+
+class VulkanDevice;
+
+class VulkanBuffer final : public rhi::IBuffer {
+ public:
+  VulkanBuffer(VulkanDevice& device, const rhi::BufferDesc& desc, uint64_t alignment = 0);
+  ~VulkanBuffer() override;
+  const rhi::BufferDesc& desc() const override { return desc_; }
+  uint64_t deviceAddress() const override { return address_; }
+  void* mappedData() override;
+  VkBuffer handle() const { return buffer_; }
+  // Bytes between the VkBuffer's start and the aligned address (see constructor).
+  uint64_t alignedOffset() const { return alignedOffset_; }
+
+ private:
+  VulkanDevice& device_;
+  rhi::BufferDesc desc_;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  uint64_t address_ = 0;
+  uint64_t alignedOffset_ = 0;
+  void* mapped_ = nullptr;
+};
+
+class VulkanTexture final : public rhi::ITexture {
+ public:
+  VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc);
+  ~VulkanTexture() override;
+  const rhi::TextureDesc& desc() const override { return desc_; }
+  VkImage image() const { return image_; }
+  VkImageView view() const { return view_; }
+
+ private:
+  VulkanDevice& device_;
+  rhi::TextureDesc desc_;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+};
+
+// The geometry arrays vkCmdBuildAccelerationStructuresKHR and
+// vkGetAccelerationStructureBuildSizesKHR take, derived from an AccelStructDesc.
+struct AccelStructBuildInputs {
+  std::vector<VkAccelerationStructureGeometryKHR> geometries;
+  std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges;
+  std::vector<uint32_t> maxPrimitiveCounts;
+  VkAccelerationStructureBuildGeometryInfoKHR info{};
+};
+
+class VulkanAccelStruct final : public rhi::rt::IAccelStruct {
+ public:
+  VulkanAccelStruct(VulkanDevice& device, const rhi::rt::AccelStructDesc& desc);
+  ~VulkanAccelStruct() override;
+  const rhi::rt::AccelStructDesc& desc() const override { return desc_; }
+  uint64_t deviceAddress() const override { return address_; }
+  VkAccelerationStructureKHR handle() const { return handle_; }
+  uint64_t scratchBytes() const { return scratchBytes_; }
+  // Inputs for a build; for a top level, `instanceAddress`/`instanceCount`
+  // describe the instance array.
+  AccelStructBuildInputs buildInputs(uint64_t instanceAddress = 0, uint32_t instanceCount = 0) const;
+
+ private:
+  VulkanDevice& device_;
+  rhi::rt::AccelStructDesc desc_;
+  std::unique_ptr<VulkanBuffer> storage_;
+  VkAccelerationStructureKHR handle_ = VK_NULL_HANDLE;
+  uint64_t address_ = 0;
+  uint64_t scratchBytes_ = 0;
+};
+
+// Descriptor set layouts + pipeline layout built from reflected SPIR-V.
+class VulkanPipelineLayout {
+ public:
+  VulkanPipelineLayout(VulkanDevice& device, rhi::PipelineBindingLayout layout, VkShaderStageFlags stages);
+  ~VulkanPipelineLayout();
+  const rhi::PipelineBindingLayout& bindingLayout() const { return layout_; }
+  VkPipelineLayout handle() const { return pipelineLayout_; }
+  VkDescriptorSetLayout setLayout(uint32_t space) const { return setLayouts_.at(space); }
+  VkShaderStageFlags stages() const { return stages_; }
+
+ private:
+  VulkanDevice& device_;
+  rhi::PipelineBindingLayout layout_;
+  VkShaderStageFlags stages_;
+  std::vector<VkDescriptorSetLayout> setLayouts_;
+  VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
+};
+
+class VulkanComputePipeline final : public rhi::IComputePipeline {
+ public:
+  VulkanComputePipeline(VulkanDevice& device, const rhi::ComputePipelineDesc& desc);
+  ~VulkanComputePipeline() override;
+  const rhi::PipelineBindingLayout& bindingLayout() const override { return layout_->bindingLayout(); }
+  const VulkanPipelineLayout& layout() const { return *layout_; }
+  VkPipeline handle() const { return pipeline_; }
+
+ private:
+  VulkanDevice& device_;
+  std::unique_ptr<VulkanPipelineLayout> layout_;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+class VulkanRayTracingPipeline final : public rhi::IRayTracingPipeline,
+                                       public std::enable_shared_from_this<VulkanRayTracingPipeline> {
+ public:
+  VulkanRayTracingPipeline(VulkanDevice& device, const rhi::RayTracingPipelineDesc& desc);
+  ~VulkanRayTracingPipeline() override;
+  const rhi::RayTracingPipelineDesc& desc() const override { return desc_; }
+  const rhi::PipelineBindingLayout& bindingLayout() const override { return layout_->bindingLayout(); }
+  rhi::ShaderTableHandle createShaderTable(const std::string& debugName) override;
+  const VulkanPipelineLayout& layout() const { return *layout_; }
+  VkPipeline handle() const { return pipeline_; }
+  // The shader group handle of a raygen/miss shader or hit group, by export name.
+  const uint8_t* groupHandle(const std::string& exportName) const;
+
+ private:
+  VulkanDevice& device_;
+  rhi::RayTracingPipelineDesc desc_;
+  std::unique_ptr<VulkanPipelineLayout> layout_;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  std::map<std::string, uint32_t> groupIndex_;
+  std::vector<uint8_t> groupHandles_;
+};
+
+class VulkanBindingSet final : public rhi::IBindingSet {
+ public:
+  VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDesc& desc, const VulkanPipelineLayout& layout);
+  ~VulkanBindingSet() override;
+  const rhi::BindingSetDesc& desc() const override { return desc_; }
+  VkDescriptorSet handle() const { return set_; }
+  // Whether the shaders write the resource at `slot` (UAV) or only read it.
+  bool isWritable(uint32_t slot) const;
+
+ private:
+  VulkanDevice& device_;
+  rhi::BindingSetDesc desc_;
+  std::vector<rhi::BindingLayoutItem> layoutItems_;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+
+class VulkanShaderTable final : public rhi::IShaderTable {
+ public:
+  VulkanShaderTable(VulkanDevice& device, std::shared_ptr<VulkanRayTracingPipeline> pipeline,
+                    std::string debugName);
+  void setRayGenerationShader(const std::string& exportName, const void* localData,
+                              size_t localBytes) override;
+  uint32_t addMissShader(const std::string& exportName, const void* localData, size_t localBytes) override;
+  uint32_t addHitGroup(const std::string& exportName, const void* localData, size_t localBytes) override;
+  void clearMissShaders() override;
+  void clearHitGroups() override;
+
+  // Uploads the records if they changed and returns the regions to trace with.
+  struct Regions {
+    VkStridedDeviceAddressRegionKHR rayGen{}, miss{}, hit{}, callable{};
+  };
+  Regions prepare();
+  std::shared_ptr<VulkanBuffer> buffer() const { return buffer_; }
+
+ private:
+  struct Record {
+    std::string exportName;
+    std::vector<uint8_t> localData;
+  };
+  Record makeRecord(const std::string& exportName, const void* data, size_t bytes) const;
+  VulkanDevice& device_;
+  std::shared_ptr<VulkanRayTracingPipeline> pipeline_;
+  std::string debugName_;
+  Record rayGen_;
+  std::vector<Record> miss_, hit_;
+  bool dirty_ = true;
+  std::shared_ptr<VulkanBuffer> buffer_;
+  Regions regions_;
+};
+
+class VulkanTimerQuery final : public rhi::ITimerQuery {
+ public:
+  explicit VulkanTimerQuery(VulkanDevice& device);
+  ~VulkanTimerQuery() override;
+  VkQueryPool pool() const { return pool_; }
+
+ private:
+  VulkanDevice& device_;
+  VkQueryPool pool_ = VK_NULL_HANDLE;
+};
+
+class VulkanCommandList final : public rhi::ICommandList {
+ public:
+  explicit VulkanCommandList(VulkanDevice& device);
+  ~VulkanCommandList() override;
+  void open() override;
+  void close() override;
+  void writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) override;
+  void copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
+                  uint64_t bytes) override;
+  void copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) override;
+  void clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) override;
+  void clearBufferUint(rhi::IBuffer* buffer, uint32_t value) override;
+  void setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) override;
+  void setTextureState(rhi::ITexture* texture, rhi::ResourceState state) override;
+  void setAccelStructState(rhi::rt::IAccelStruct* as, rhi::ResourceState state) override;
+  void buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) override;
+  void buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as, const rhi::rt::InstanceDesc* instances,
+                                uint32_t count) override;
+  void setRayTracingState(const rhi::RayTracingState& state) override;
+  void setComputeState(const rhi::ComputeState& state) override;
+  void setPushConstants(const void* data, size_t bytes) override;
+  void dispatchRays(uint32_t width, uint32_t height, uint32_t depth) override;
+  void dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) override;
+  void beginTimerQuery(rhi::ITimerQuery* query) override;
+  void endTimerQuery(rhi::ITimerQuery* query) override;
+
+  VkCommandBuffer handle() const { return commandBuffer_; }
+  VkFence fence() const { return fence_; }
+  // Called by the device once the GPU finished this list's work.
+  void releaseTransientResources() { transient_.clear(); }
+
+ private:
+  std::shared_ptr<VulkanBuffer> makeTransientBuffer(uint64_t bytes, rhi::BufferUsage usage,
+                                                    rhi::MemoryLocation memory, uint64_t alignment,
+                                                    const char* name);
+  void transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets);
+  void requireOpen(const char* what) const;
+  VulkanDevice& device_;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  bool recording_ = false;
+  VkPipelineLayout boundLayout_ = VK_NULL_HANDLE;
+  VkShaderStageFlags boundStages_ = 0;
+  VulkanShaderTable::Regions boundRegions_;
+  bool rayTracingBound_ = false;
+  bool computeBound_ = false;
+  std::vector<std::shared_ptr<VulkanBuffer>> transient_;
+};
+
+class VulkanDevice final : public rhi::IDevice {
+ public:
+  VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalDevice physicalDevice,
+               rhi::AdapterInfo adapter);
+  ~VulkanDevice() override;
+  const char* backendName() const override { return "vulkan"; }
+  const rhi::AdapterInfo& adapter() const override { return adapter_; }
+  rhi::BufferHandle createBuffer(const rhi::BufferDesc& desc) override;
+  rhi::TextureHandle createTexture(const rhi::TextureDesc& desc) override;
+  rhi::rt::AccelStructHandle createAccelStruct(const rhi::rt::AccelStructDesc& desc) override;
+  rhi::RayTracingPipelineHandle createRayTracingPipeline(const rhi::RayTracingPipelineDesc& desc) override;
+  rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
+  rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
+  rhi::TimerQueryHandle createTimerQuery() override;
+  rhi::CommandListHandle createCommandList() override;
+  void submit(rhi::ICommandList* commandList) override;
+  void waitForIdle() override;
+  double timerQuerySeconds(rhi::ITimerQuery* query) override;
+  uint64_t validationMessageCount() const override { return instance_->validationMessages(); }
+
+  VkDevice handle() const { return device_; }
+  VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+  uint32_t queueFamily() const { return queueFamily_; }
+  uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
+  uint64_t scratchAlignment() const { return scratchAlignment_; }
+  // VK_EXT_debug_utils object name, shown by RenderDoc/Nsight and in validation messages.
+  void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
+
+ private:
+  std::shared_ptr<VulkanInstance> instance_;
+  VkPhysicalDevice physicalDevice_;
+  rhi::AdapterInfo adapter_;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  VkPhysicalDeviceMemoryProperties memoryProperties_{};
+  uint64_t scratchAlignment_ = 128;
+  double timestampPeriodNs_ = 1.0;
+  uint32_t timestampValidBits_ = 64;
+  std::vector<VulkanCommandList*> inFlight_;
+};
+
+// Device listing and creation for backends/backend_factory.cpp.
+std::vector<rhi::AdapterInfo> listAdapters();
+rhi::DeviceHandle createDevice(const rhi::DeviceCreateInfo& info);
+
+// Maps of RHI enums to Vulkan ones.
+VkFormat toVkFormat(rhi::Format format);
+
+}  // namespace penumbra::vk

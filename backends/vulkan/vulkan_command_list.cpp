@@ -1,0 +1,383 @@
+#include <fmt/format.h>
+
+#include <cstring>
+
+#include "rhi/shader_table_layout.h"
+#include "util/error.h"
+#include "vulkan_backend.h"
+
+namespace penumbra::vk {
+namespace {
+
+struct StageAccess {
+  VkPipelineStageFlags stages;
+  VkAccessFlags access;
+};
+
+constexpr VkPipelineStageFlags kShaderStages =
+    VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+
+StageAccess stageAccess(rhi::ResourceState state) {
+  using S = rhi::ResourceState;
+  switch (state) {
+    case S::Undefined: return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
+    case S::ShaderResource: return {kShaderStages, VK_ACCESS_SHADER_READ_BIT};
+    case S::UnorderedAccess:
+      return {kShaderStages, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+    case S::ConstantBuffer: return {kShaderStages, VK_ACCESS_UNIFORM_READ_BIT};
+    case S::CopySource: return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
+    case S::CopyDest: return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
+    case S::AccelStructBuildInput:
+      return {VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, VK_ACCESS_SHADER_READ_BIT};
+    case S::AccelStructWrite:
+      return {VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+              VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                  VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR};
+    case S::AccelStructRead:
+      return {kShaderStages | VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+              VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR};
+    case S::ShaderTable:
+      return {VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT};
+    case S::HostRead: return {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
+  }
+  return {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT};
+}
+
+bool isWriteState(rhi::ResourceState s) {
+  return s == rhi::ResourceState::UnorderedAccess || s == rhi::ResourceState::CopyDest ||
+         s == rhi::ResourceState::AccelStructWrite;
+}
+
+// Whether moving from `from` to `to` needs a barrier: always after a write
+// (write-after-write and read-after-write hazards), and between different read
+// states only if they belong to different stages.
+bool needsBarrier(rhi::ResourceState from, rhi::ResourceState to) {
+  return from != to || isWriteState(from);
+}
+
+}  // namespace
+
+VulkanCommandList::VulkanCommandList(VulkanDevice& device) : device_(device) {
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.queueFamilyIndex = device_.queueFamily();
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  check(vkCreateCommandPool(device_.handle(), &poolInfo, nullptr, &pool_), "vkCreateCommandPool");
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = pool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  check(vkAllocateCommandBuffers(device_.handle(), &alloc, &commandBuffer_), "vkAllocateCommandBuffers");
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+  check(vkCreateFence(device_.handle(), &fenceInfo, nullptr, &fence_), "vkCreateFence");
+}
+
+VulkanCommandList::~VulkanCommandList() {
+  vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX);
+  vkDestroyFence(device_.handle(), fence_, nullptr);
+  vkDestroyCommandPool(device_.handle(), pool_, nullptr);
+}
+
+void VulkanCommandList::requireOpen(const char* what) const {
+  if (!recording_) throw Error(fmt::format("vulkan: {} on a command list that is not open", what));
+}
+
+void VulkanCommandList::open() {
+  // A list still executing is waited for before it is recorded again.
+  check(vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  releaseTransientResources();
+  check(vkResetCommandPool(device_.handle(), pool_, 0), "vkResetCommandPool");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(commandBuffer_, &begin), "vkBeginCommandBuffer");
+  recording_ = true;
+  rayTracingBound_ = computeBound_ = false;
+  boundLayout_ = VK_NULL_HANDLE;
+}
+
+void VulkanCommandList::close() {
+  requireOpen("close");
+  check(vkEndCommandBuffer(commandBuffer_), "vkEndCommandBuffer");
+  recording_ = false;
+}
+
+std::shared_ptr<VulkanBuffer> VulkanCommandList::makeTransientBuffer(uint64_t bytes,
+                                                                     rhi::BufferUsage usage,
+                                                                     rhi::MemoryLocation memory,
+                                                                     uint64_t alignment,
+                                                                     const char* name) {
+  rhi::BufferDesc desc;
+  desc.byteSize = std::max<uint64_t>(bytes, 4);
+  desc.usage = usage;
+  desc.memory = memory;
+  desc.debugName = name;
+  auto buffer = std::make_shared<VulkanBuffer>(device_, desc, alignment);
+  transient_.push_back(buffer);
+  return buffer;
+}
+
+void VulkanCommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) {
+  requireOpen("setBufferState");
+  if (!needsBarrier(buffer->state, state)) return;
+  auto from = stageAccess(buffer->state), to = stageAccess(state);
+  // Buffers and acceleration structures share one global memory barrier
+  // shape; drivers handle these as cheaply as buffer-range barriers.
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = from.access;
+  barrier.dstAccessMask = to.access;
+  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  buffer->state = state;
+}
+
+void VulkanCommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::ResourceState state) {
+  requireOpen("setAccelStructState");
+  if (!needsBarrier(as->state, state)) return;
+  auto from = stageAccess(as->state), to = stageAccess(state);
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = from.access;
+  barrier.dstAccessMask = to.access;
+  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  as->state = state;
+}
+
+void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceState state) {
+  requireOpen("setTextureState");
+  if (!needsBarrier(texture->state, state)) return;
+  auto* t = static_cast<VulkanTexture*>(texture);
+  auto from = stageAccess(texture->state), to = stageAccess(state);
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = from.access;
+  barrier.dstAccessMask = to.access;
+  // Textures live in GENERAL (valid for storage, copies and sampling) once used.
+  barrier.oldLayout = texture->state == rhi::ResourceState::Undefined ? VK_IMAGE_LAYOUT_UNDEFINED
+                                                                      : VK_IMAGE_LAYOUT_GENERAL;
+  barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = t->image();
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+  texture->state = state;
+}
+
+void VulkanCommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes,
+                                    uint64_t offset) {
+  requireOpen("writeBuffer");
+  if (offset + bytes > buffer->desc().byteSize)
+    throw Error(fmt::format("vulkan: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)", bytes,
+                            offset, buffer->desc().debugName, buffer->desc().byteSize));
+  if (bytes == 0) return;
+  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
+                                     0, "writeBuffer staging");
+  std::memcpy(staging->mappedData(), data, bytes);
+  setBufferState(buffer, rhi::ResourceState::CopyDest);
+  VkBufferCopy region{0, offset, bytes};
+  vkCmdCopyBuffer(commandBuffer_, staging->handle(), static_cast<VulkanBuffer*>(buffer)->handle(), 1,
+                  &region);
+}
+
+void VulkanCommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,
+                                   uint64_t srcOffset, uint64_t bytes) {
+  requireOpen("copyBuffer");
+  setBufferState(src, rhi::ResourceState::CopySource);
+  setBufferState(dst, rhi::ResourceState::CopyDest);
+  VkBufferCopy region{srcOffset, dstOffset, bytes};
+  vkCmdCopyBuffer(commandBuffer_, static_cast<VulkanBuffer*>(src)->handle(),
+                  static_cast<VulkanBuffer*>(dst)->handle(), 1, &region);
+  // Make the copy visible to the CPU once the list has finished.
+  if (dst->desc().memory == rhi::MemoryLocation::Readback)
+    setBufferState(dst, rhi::ResourceState::HostRead);
+}
+
+void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) {
+  requireOpen("copyTextureToBuffer");
+  const auto& d = src->desc();
+  const uint64_t bytes = uint64_t(d.width) * d.height * rhi::formatByteSize(d.format);
+  if (dstOffset + bytes > dst->desc().byteSize)
+    throw Error(fmt::format("vulkan: texture '{}' ({} bytes) does not fit in buffer '{}'",
+                            d.debugName, bytes, dst->desc().debugName));
+  setTextureState(src, rhi::ResourceState::CopySource);
+  setBufferState(dst, rhi::ResourceState::CopyDest);
+  VkBufferImageCopy region{};
+  region.bufferOffset = dstOffset;
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {d.width, d.height, 1};
+  vkCmdCopyImageToBuffer(commandBuffer_, static_cast<VulkanTexture*>(src)->image(),
+                         VK_IMAGE_LAYOUT_GENERAL, static_cast<VulkanBuffer*>(dst)->handle(), 1, &region);
+  if (dst->desc().memory == rhi::MemoryLocation::Readback)
+    setBufferState(dst, rhi::ResourceState::HostRead);
+}
+
+void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) {
+  requireOpen("clearTextureFloat");
+  setTextureState(texture, rhi::ResourceState::CopyDest);
+  VkClearColorValue color{};
+  color.float32[0] = r;
+  color.float32[1] = g;
+  color.float32[2] = b;
+  color.float32[3] = a;
+  VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(commandBuffer_, static_cast<VulkanTexture*>(texture)->image(),
+                       VK_IMAGE_LAYOUT_GENERAL, &color, 1, &range);
+}
+
+void VulkanCommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
+  requireOpen("clearBufferUint");
+  setBufferState(buffer, rhi::ResourceState::CopyDest);
+  vkCmdFillBuffer(commandBuffer_, static_cast<VulkanBuffer*>(buffer)->handle(), 0, VK_WHOLE_SIZE, value);
+}
+
+void VulkanCommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
+  requireOpen("buildBottomLevelAccelStruct");
+  auto* vas = static_cast<VulkanAccelStruct*>(as);
+  if (vas->desc().isTopLevel)
+    throw Error(fmt::format("vulkan: '{}' is a top level; use buildTopLevelAccelStruct",
+                            as->desc().debugName));
+  for (const auto& g : vas->desc().bottomLevelGeometries) {
+    if (g.type == rhi::rt::GeometryType::Triangles) {
+      setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
+      if (g.triangles.indexBuffer)
+        setBufferState(g.triangles.indexBuffer, rhi::ResourceState::AccelStructBuildInput);
+    } else {
+      setBufferState(g.aabbs.buffer, rhi::ResourceState::AccelStructBuildInput);
+    }
+  }
+  setAccelStructState(as, rhi::ResourceState::AccelStructWrite);
+  auto scratch = makeTransientBuffer(vas->scratchBytes(), rhi::BufferUsage::StorageBuffer,
+                                     rhi::MemoryLocation::DeviceLocal, device_.scratchAlignment(),
+                                     "BLAS scratch");
+  AccelStructBuildInputs inputs = vas->buildInputs();
+  inputs.info.scratchData.deviceAddress = scratch->deviceAddress();
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = inputs.ranges.data();
+  vkCmdBuildAccelerationStructuresKHR(commandBuffer_, 1, &inputs.info, &ranges);
+}
+
+void VulkanCommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as,
+                                                 const rhi::rt::InstanceDesc* instances,
+                                                 uint32_t count) {
+  requireOpen("buildTopLevelAccelStruct");
+  auto* vas = static_cast<VulkanAccelStruct*>(as);
+  if (!vas->desc().isTopLevel)
+    throw Error(fmt::format("vulkan: '{}' is a bottom level; use buildBottomLevelAccelStruct",
+                            as->desc().debugName));
+  if (count > vas->desc().topLevelMaxInstances)
+    throw Error(fmt::format("vulkan: {} instances exceed '{}' topLevelMaxInstances = {}", count,
+                            as->desc().debugName, vas->desc().topLevelMaxInstances));
+  for (uint32_t i = 0; i < count; ++i)
+    if (instances[i].bottomLevelAddress == 0)
+      throw Error(fmt::format("vulkan: instance {} of '{}' has no bottom level", i,
+                              as->desc().debugName));
+  // Bottom levels built earlier in this list are read by this build; the
+  // instances only hold their addresses, so one global barrier covers them.
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+  vkCmdPipelineBarrier(commandBuffer_, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &barrier, 0,
+                       nullptr, 0, nullptr);
+
+  const uint64_t bytes = uint64_t(count) * sizeof(rhi::rt::InstanceDesc);
+  // Instance data must be 16-byte aligned (VkAccelerationStructureGeometryInstancesDataKHR).
+  auto instanceBuffer = makeTransientBuffer(bytes, rhi::BufferUsage::AccelStructBuildInput,
+                                            rhi::MemoryLocation::Upload, 16, "TLAS instances");
+  if (count > 0) std::memcpy(instanceBuffer->mappedData(), instances, bytes);
+  auto scratch = makeTransientBuffer(vas->scratchBytes(), rhi::BufferUsage::StorageBuffer,
+                                     rhi::MemoryLocation::DeviceLocal, device_.scratchAlignment(),
+                                     "TLAS scratch");
+  setAccelStructState(as, rhi::ResourceState::AccelStructWrite);
+  AccelStructBuildInputs inputs = vas->buildInputs(instanceBuffer->deviceAddress(), count);
+  inputs.info.scratchData.deviceAddress = scratch->deviceAddress();
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = inputs.ranges.data();
+  vkCmdBuildAccelerationStructuresKHR(commandBuffer_, 1, &inputs.info, &ranges);
+}
+
+void VulkanCommandList::transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets) {
+  for (auto* s : sets) {
+    if (!s) continue;
+    auto* set = static_cast<VulkanBindingSet*>(s);
+    for (const auto& item : set->desc().items) {
+      const auto shaderState = set->isWritable(item.slot) ? rhi::ResourceState::UnorderedAccess
+                                                          : rhi::ResourceState::ShaderResource;
+      switch (item.type) {
+        case rhi::ResourceType::AccelStruct:
+          setAccelStructState(item.accelStruct.get(), rhi::ResourceState::AccelStructRead);
+          break;
+        case rhi::ResourceType::StorageBuffer: setBufferState(item.buffer.get(), shaderState); break;
+        case rhi::ResourceType::ConstantBuffer:
+          setBufferState(item.buffer.get(), rhi::ResourceState::ConstantBuffer);
+          break;
+        case rhi::ResourceType::StorageTexture: setTextureState(item.texture.get(), shaderState); break;
+      }
+    }
+  }
+}
+
+void VulkanCommandList::setRayTracingState(const rhi::RayTracingState& state) {
+  requireOpen("setRayTracingState");
+  auto* pipeline = static_cast<VulkanRayTracingPipeline*>(state.pipeline);
+  auto* table = static_cast<VulkanShaderTable*>(state.shaderTable);
+  if (!pipeline || !table) throw Error("vulkan: setRayTracingState needs a pipeline and a shader table");
+  transitionBindingSets(state.bindingSets);
+  boundRegions_ = table->prepare();
+  transient_.push_back(table->buffer());
+  vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline->handle());
+  std::vector<VkDescriptorSet> sets;
+  for (auto* s : state.bindingSets) sets.push_back(static_cast<VulkanBindingSet*>(s)->handle());
+  if (!sets.empty())
+    vkCmdBindDescriptorSets(commandBuffer_, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR,
+                            pipeline->layout().handle(), 0, uint32_t(sets.size()), sets.data(), 0, nullptr);
+  boundLayout_ = pipeline->layout().handle();
+  boundStages_ = pipeline->layout().stages();
+  rayTracingBound_ = true;
+  computeBound_ = false;
+}
+
+void VulkanCommandList::setComputeState(const rhi::ComputeState& state) {
+  requireOpen("setComputeState");
+  auto* pipeline = static_cast<VulkanComputePipeline*>(state.pipeline);
+  if (!pipeline) throw Error("vulkan: setComputeState needs a pipeline");
+  transitionBindingSets(state.bindingSets);
+  vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->handle());
+  std::vector<VkDescriptorSet> sets;
+  for (auto* s : state.bindingSets) sets.push_back(static_cast<VulkanBindingSet*>(s)->handle());
+  if (!sets.empty())
+    vkCmdBindDescriptorSets(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->layout().handle(),
+                            0, uint32_t(sets.size()), sets.data(), 0, nullptr);
+  boundLayout_ = pipeline->layout().handle();
+  boundStages_ = pipeline->layout().stages();
+  computeBound_ = true;
+  rayTracingBound_ = false;
+}
+
+void VulkanCommandList::setPushConstants(const void* data, size_t bytes) {
+  requireOpen("setPushConstants");
+  if (!boundLayout_) throw Error("vulkan: setPushConstants before a pipeline was bound");
+  vkCmdPushConstants(commandBuffer_, boundLayout_, boundStages_, 0, uint32_t(bytes), data);
+}
+
+void VulkanCommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t depth) {
+  requireOpen("dispatchRays");
+  if (!rayTracingBound_) throw Error("vulkan: dispatchRays without setRayTracingState");
+  vkCmdTraceRaysKHR(commandBuffer_, &boundRegions_.rayGen, &boundRegions_.miss, &boundRegions_.hit,
+                    &boundRegions_.callable, width, height, depth);
+}
+
+void VulkanCommandList::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) {
+  requireOpen("dispatch");
+  if (!computeBound_) throw Error("vulkan: dispatch without setComputeState");
+  vkCmdDispatch(commandBuffer_, groupsX, groupsY, groupsZ);
+}
+
+void VulkanCommandList::beginTimerQuery(rhi::ITimerQuery* query) {
+  requireOpen("beginTimerQuery");
+  auto* q = static_cast<VulkanTimerQuery*>(query);
+  vkCmdResetQueryPool(commandBuffer_, q->pool(), 0, 2);
+  vkCmdWriteTimestamp(commandBuffer_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, q->pool(), 0);
+}
+
+void VulkanCommandList::endTimerQuery(rhi::ITimerQuery* query) {
+  requireOpen("endTimerQuery");
+  auto* q = static_cast<VulkanTimerQuery*>(query);
+  vkCmdWriteTimestamp(commandBuffer_, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, q->pool(), 1);
+}
+
+}  // namespace penumbra::vk

@@ -1,0 +1,187 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "util/error.h"
+#include "vulkan_backend.h"
+
+namespace penumbra::vk {
+
+VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalDevice physicalDevice,
+                           rhi::AdapterInfo adapter)
+    : instance_(std::move(instance)), physicalDevice_(physicalDevice), adapter_(std::move(adapter)) {
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, families.data());
+  // Ray tracing runs on any queue with compute; prefer the universal queue,
+  // which presentation (the viewer) will want too.
+  int family = -1;
+  for (uint32_t i = 0; i < familyCount; ++i) {
+    const auto flags = families[i].queueFlags;
+    if ((flags & VK_QUEUE_COMPUTE_BIT) && (family < 0 || (flags & VK_QUEUE_GRAPHICS_BIT))) {
+      if (family < 0 || !(families[family].queueFlags & VK_QUEUE_GRAPHICS_BIT)) family = int(i);
+    }
+  }
+  if (family < 0) throw Error(fmt::format("vulkan: {} has no compute queue", adapter_.name));
+  queueFamily_ = uint32_t(family);
+  timestampValidBits_ = families[family].timestampValidBits;
+
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(physicalDevice_, &props);
+  timestampPeriodNs_ = props.limits.timestampPeriod;
+  vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memoryProperties_);
+
+  VkPhysicalDeviceAccelerationStructurePropertiesKHR asProps{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+  VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  props2.pNext = &asProps;
+  vkGetPhysicalDeviceProperties2(physicalDevice_, &props2);
+  scratchAlignment_ = std::max<uint64_t>(asProps.minAccelerationStructureScratchOffsetAlignment, 1);
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queueFamily_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+
+  const char* extensions[] = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                              VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rtFeatures{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  rtFeatures.rayTracingPipeline = VK_TRUE;
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR asFeatures{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  asFeatures.accelerationStructure = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  v12.bufferDeviceAddress = VK_TRUE;
+  rtFeatures.pNext = &asFeatures;
+  asFeatures.pNext = &v12;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &rtFeatures;
+
+  VkDeviceCreateInfo create{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  create.pNext = &features;
+  create.queueCreateInfoCount = 1;
+  create.pQueueCreateInfos = &queueInfo;
+  create.enabledExtensionCount = uint32_t(std::size(extensions));
+  create.ppEnabledExtensionNames = extensions;
+  check(vkCreateDevice(physicalDevice_, &create, nullptr, &device_), "vkCreateDevice");
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  setName(VK_OBJECT_TYPE_DEVICE, uint64_t(device_), adapter_.name);
+  setName(VK_OBJECT_TYPE_QUEUE, uint64_t(queue_), "main queue");
+}
+
+VulkanDevice::~VulkanDevice() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    vkDestroyDevice(device_, nullptr);
+  }
+}
+
+void VulkanDevice::setName(VkObjectType type, uint64_t handle, const std::string& name) const {
+  if (!instance_->hasDebugUtils() || name.empty() || !vkSetDebugUtilsObjectNameEXT) return;
+  VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+  info.objectType = type;
+  info.objectHandle = handle;
+  info.pObjectName = name.c_str();
+  vkSetDebugUtilsObjectNameEXT(device_, &info);
+}
+
+uint32_t VulkanDevice::memoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
+                                  VkMemoryPropertyFlags preferred) const {
+  for (VkMemoryPropertyFlags wanted : {required | preferred, required}) {
+    for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i) {
+      if ((typeBits & (1u << i)) &&
+          (memoryProperties_.memoryTypes[i].propertyFlags & wanted) == wanted)
+        return i;
+    }
+  }
+  throw Error(fmt::format("vulkan: {} has no memory type with properties 0x{:x}", adapter_.name,
+                          required));
+}
+
+rhi::BufferHandle VulkanDevice::createBuffer(const rhi::BufferDesc& desc) {
+  return std::make_shared<VulkanBuffer>(*this, desc);
+}
+
+rhi::TextureHandle VulkanDevice::createTexture(const rhi::TextureDesc& desc) {
+  return std::make_shared<VulkanTexture>(*this, desc);
+}
+
+rhi::rt::AccelStructHandle VulkanDevice::createAccelStruct(const rhi::rt::AccelStructDesc& desc) {
+  return std::make_shared<VulkanAccelStruct>(*this, desc);
+}
+
+rhi::RayTracingPipelineHandle VulkanDevice::createRayTracingPipeline(
+    const rhi::RayTracingPipelineDesc& desc) {
+  return std::make_shared<VulkanRayTracingPipeline>(*this, desc);
+}
+
+rhi::ComputePipelineHandle VulkanDevice::createComputePipeline(const rhi::ComputePipelineDesc& desc) {
+  return std::make_shared<VulkanComputePipeline>(*this, desc);
+}
+
+rhi::BindingSetHandle VulkanDevice::createBindingSet(const rhi::BindingSetDesc& desc,
+                                                     const rhi::IPipeline& pipeline) {
+  const VulkanPipelineLayout* layout = nullptr;
+  if (auto* rt = dynamic_cast<const VulkanRayTracingPipeline*>(&pipeline))
+    layout = &rt->layout();
+  else if (auto* cs = dynamic_cast<const VulkanComputePipeline*>(&pipeline))
+    layout = &cs->layout();
+  else
+    throw Error("vulkan: createBindingSet needs a pipeline of this device's backend");
+  return std::make_shared<VulkanBindingSet>(*this, desc, *layout);
+}
+
+rhi::TimerQueryHandle VulkanDevice::createTimerQuery() {
+  if (timestampValidBits_ == 0)
+    throw Error(fmt::format("vulkan: {} does not support timestamps on its queue", adapter_.name));
+  return std::make_shared<VulkanTimerQuery>(*this);
+}
+
+rhi::CommandListHandle VulkanDevice::createCommandList() {
+  return std::make_shared<VulkanCommandList>(*this);
+}
+
+void VulkanDevice::submit(rhi::ICommandList* commandList) {
+  auto* list = static_cast<VulkanCommandList*>(commandList);
+  VkCommandBuffer cb = list->handle();
+  VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  info.commandBufferCount = 1;
+  info.pCommandBuffers = &cb;
+  VkFence fence = list->fence();
+  check(vkResetFences(device_, 1, &fence), "vkResetFences");
+  check(vkQueueSubmit(queue_, 1, &info, fence), "vkQueueSubmit");
+  inFlight_.push_back(list);
+}
+
+void VulkanDevice::waitForIdle() {
+  check(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
+  for (auto* list : inFlight_) list->releaseTransientResources();
+  inFlight_.clear();
+}
+
+double VulkanDevice::timerQuerySeconds(rhi::ITimerQuery* query) {
+  auto* q = static_cast<VulkanTimerQuery*>(query);
+  uint64_t ticks[2] = {};
+  check(vkGetQueryPoolResults(device_, q->pool(), 0, 2, sizeof(ticks), ticks, sizeof(uint64_t),
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults");
+  const uint64_t mask = timestampValidBits_ >= 64 ? ~0ull : ((1ull << timestampValidBits_) - 1);
+  const uint64_t delta = ((ticks[1] & mask) - (ticks[0] & mask)) & mask;
+  return double(delta) * timestampPeriodNs_ * 1e-9;
+}
+
+VulkanTimerQuery::VulkanTimerQuery(VulkanDevice& device) : device_(device) {
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = 2;
+  check(vkCreateQueryPool(device_.handle(), &info, nullptr, &pool_), "vkCreateQueryPool");
+}
+
+VulkanTimerQuery::~VulkanTimerQuery() { vkDestroyQueryPool(device_.handle(), pool_, nullptr); }
+
+}  // namespace penumbra::vk

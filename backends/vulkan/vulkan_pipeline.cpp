@@ -1,0 +1,407 @@
+// Pipeline layouts (from reflection), compute and ray-tracing pipelines,
+// binding sets and shader tables.
+#include <fmt/format.h>
+
+#include <cstring>
+
+#include "rhi/shader_reflection.h"
+#include "rhi/shader_table_layout.h"
+#include "util/error.h"
+#include "vulkan_backend.h"
+
+namespace penumbra::vk {
+namespace {
+
+VkDescriptorType toDescriptorType(rhi::ResourceType type) {
+  switch (type) {
+    case rhi::ResourceType::AccelStruct: return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    case rhi::ResourceType::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case rhi::ResourceType::ConstantBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case rhi::ResourceType::StorageTexture: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  }
+  return VK_DESCRIPTOR_TYPE_MAX_ENUM;
+}
+
+VkShaderStageFlagBits toVkStage(rhi::ShaderStage stage) {
+  switch (stage) {
+    case rhi::ShaderStage::Compute: return VK_SHADER_STAGE_COMPUTE_BIT;
+    case rhi::ShaderStage::RayGeneration: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    case rhi::ShaderStage::Miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
+    case rhi::ShaderStage::ClosestHit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+    case rhi::ShaderStage::AnyHit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+    case rhi::ShaderStage::Intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+  }
+  return VK_SHADER_STAGE_ALL;
+}
+
+std::span<const uint32_t> spirvOf(const rhi::ShaderDesc& shader) {
+  if (!shader.bytecode || shader.byteSize == 0 || shader.byteSize % 4 != 0)
+    throw Error(fmt::format("vulkan: shader '{}' has no SPIR-V", shader.exportName));
+  return {static_cast<const uint32_t*>(shader.bytecode), shader.byteSize / 4};
+}
+
+VkShaderModule createModule(VulkanDevice& device, const rhi::ShaderDesc& shader) {
+  auto words = spirvOf(shader);
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = words.size_bytes();
+  info.pCode = words.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  check(vkCreateShaderModule(device.handle(), &info, nullptr, &module), "vkCreateShaderModule");
+  device.setName(VK_OBJECT_TYPE_SHADER_MODULE, uint64_t(module), shader.exportName);
+  return module;
+}
+
+}  // namespace
+
+VulkanPipelineLayout::VulkanPipelineLayout(VulkanDevice& device, rhi::PipelineBindingLayout layout,
+                                           VkShaderStageFlags stages)
+    : device_(device), layout_(std::move(layout)), stages_(stages) {
+  for (const auto& space : layout_.spaces) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (const auto& item : space.items) {
+      VkDescriptorSetLayoutBinding b{};
+      b.binding = item.slot;
+      b.descriptorType = toDescriptorType(item.type);
+      b.descriptorCount = item.arraySize;
+      b.stageFlags = stages_;
+      bindings.push_back(b);
+    }
+    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.bindingCount = uint32_t(bindings.size());
+    info.pBindings = bindings.data();
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    check(vkCreateDescriptorSetLayout(device_.handle(), &info, nullptr, &setLayout),
+          "vkCreateDescriptorSetLayout");
+    setLayouts_.push_back(setLayout);
+  }
+  VkPushConstantRange range{stages_, 0, layout_.pushConstantBytes};
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = uint32_t(setLayouts_.size());
+  info.pSetLayouts = setLayouts_.data();
+  info.pushConstantRangeCount = layout_.pushConstantBytes > 0 ? 1 : 0;
+  info.pPushConstantRanges = &range;
+  check(vkCreatePipelineLayout(device_.handle(), &info, nullptr, &pipelineLayout_),
+        "vkCreatePipelineLayout");
+}
+
+VulkanPipelineLayout::~VulkanPipelineLayout() {
+  vkDestroyPipelineLayout(device_.handle(), pipelineLayout_, nullptr);
+  for (auto l : setLayouts_) vkDestroyDescriptorSetLayout(device_.handle(), l, nullptr);
+}
+
+VulkanComputePipeline::VulkanComputePipeline(VulkanDevice& device, const rhi::ComputePipelineDesc& desc)
+    : device_(device) {
+  rhi::PipelineBindingLayout reflected;
+  reflectSpirv(spirvOf(desc.shader), desc.shader.exportName, reflected);
+  layout_ = std::make_unique<VulkanPipelineLayout>(device_, std::move(reflected),
+                                                   VK_SHADER_STAGE_COMPUTE_BIT);
+  VkShaderModule module = createModule(device_, desc.shader);
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module;
+  info.stage.pName = desc.shader.entryPoint.c_str();
+  info.layout = layout_->handle();
+  VkResult r = vkCreateComputePipelines(device_.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
+  vkDestroyShaderModule(device_.handle(), module, nullptr);
+  check(r, "vkCreateComputePipelines");
+  device_.setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), desc.debugName);
+}
+
+VulkanComputePipeline::~VulkanComputePipeline() {
+  vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
+}
+
+VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
+                                                   const rhi::RayTracingPipelineDesc& desc)
+    : device_(device), desc_(desc) {
+  const auto& adapter = device_.adapter();
+  if (desc.maxRecursionDepth > adapter.maxRecursionDepth)
+    throw Error(fmt::format("vulkan: pipeline '{}' asks for recursion depth {} but {} allows {}",
+                            desc.debugName, desc.maxRecursionDepth, adapter.name,
+                            adapter.maxRecursionDepth));
+
+  rhi::PipelineBindingLayout reflected;
+  std::map<std::string, uint32_t> stageIndex;
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  std::vector<VkShaderModule> modules;
+  VkShaderStageFlags usedStages = 0;
+  for (const auto& shader : desc.shaders) {
+    if (shader.stage == rhi::ShaderStage::Compute)
+      throw Error(fmt::format("vulkan: pipeline '{}': '{}' is a compute shader", desc.debugName,
+                              shader.exportName));
+    if (!stageIndex.emplace(shader.exportName, uint32_t(stages.size())).second)
+      throw Error(fmt::format("vulkan: pipeline '{}': export name '{}' used twice",
+                              desc.debugName, shader.exportName));
+    reflectSpirv(spirvOf(shader), shader.exportName, reflected);
+    modules.push_back(createModule(device_, shader));
+    VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    s.stage = toVkStage(shader.stage);
+    s.module = modules.back();
+    s.pName = shader.entryPoint.c_str();
+    stages.push_back(s);
+    usedStages |= s.stage;
+  }
+
+  auto destroyModules = [&] {
+    for (auto m : modules) vkDestroyShaderModule(device_.handle(), m, nullptr);
+  };
+  std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+  auto newGroup = [](VkRayTracingShaderGroupTypeKHR type) {
+    VkRayTracingShaderGroupCreateInfoKHR g{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+    g.type = type;
+    g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader =
+        VK_SHADER_UNUSED_KHR;
+    return g;
+  };
+  for (const auto& shader : desc.shaders) {
+    if (shader.stage == rhi::ShaderStage::RayGeneration || shader.stage == rhi::ShaderStage::Miss) {
+      auto g = newGroup(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR);
+      g.generalShader = stageIndex.at(shader.exportName);
+      groupIndex_[shader.exportName] = uint32_t(groups.size());
+      groups.push_back(g);
+    }
+  }
+  auto lookup = [&](const std::string& name, const std::string& group) {
+    if (name.empty()) return VK_SHADER_UNUSED_KHR;
+    auto it = stageIndex.find(name);
+    if (it == stageIndex.end()) {
+      destroyModules();
+      throw Error(fmt::format("vulkan: pipeline '{}': hit group '{}' names unknown shader '{}'",
+                              desc.debugName, group, name));
+    }
+    return it->second;
+  };
+  for (const auto& hg : desc.hitGroups) {
+    auto g = newGroup(hg.isProcedural ? VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR
+                                      : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR);
+    g.closestHitShader = lookup(hg.closestHit, hg.exportName);
+    g.anyHitShader = lookup(hg.anyHit, hg.exportName);
+    g.intersectionShader = lookup(hg.intersection, hg.exportName);
+    if (hg.isProcedural && g.intersectionShader == VK_SHADER_UNUSED_KHR) {
+      destroyModules();
+      throw Error(fmt::format("vulkan: pipeline '{}': procedural hit group '{}' has no "
+                              "intersection shader", desc.debugName, hg.exportName));
+    }
+    if (!groupIndex_.emplace(hg.exportName, uint32_t(groups.size())).second) {
+      destroyModules();
+      throw Error(fmt::format("vulkan: pipeline '{}': export name '{}' used twice",
+                              desc.debugName, hg.exportName));
+    }
+    groups.push_back(g);
+  }
+
+  layout_ = std::make_unique<VulkanPipelineLayout>(device_, std::move(reflected), usedStages);
+  VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
+  info.stageCount = uint32_t(stages.size());
+  info.pStages = stages.data();
+  info.groupCount = uint32_t(groups.size());
+  info.pGroups = groups.data();
+  info.maxPipelineRayRecursionDepth = desc.maxRecursionDepth;
+  info.layout = layout_->handle();
+  VkResult r = vkCreateRayTracingPipelinesKHR(device_.handle(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1,
+                                              &info, nullptr, &pipeline_);
+  destroyModules();
+  check(r, "vkCreateRayTracingPipelinesKHR");
+  device_.setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), desc.debugName);
+
+  const uint32_t handleSize = adapter.shaderTable.handleSize;
+  groupHandles_.resize(size_t(handleSize) * groups.size());
+  check(vkGetRayTracingShaderGroupHandlesKHR(device_.handle(), pipeline_, 0, uint32_t(groups.size()),
+                                             groupHandles_.size(), groupHandles_.data()),
+        "vkGetRayTracingShaderGroupHandlesKHR");
+}
+
+VulkanRayTracingPipeline::~VulkanRayTracingPipeline() {
+  vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
+}
+
+const uint8_t* VulkanRayTracingPipeline::groupHandle(const std::string& exportName) const {
+  auto it = groupIndex_.find(exportName);
+  if (it == groupIndex_.end())
+    throw Error(fmt::format("vulkan: pipeline '{}' has no raygen/miss shader or hit group '{}'",
+                            desc_.debugName, exportName));
+  return groupHandles_.data() + size_t(it->second) * device_.adapter().shaderTable.handleSize;
+}
+
+rhi::ShaderTableHandle VulkanRayTracingPipeline::createShaderTable(const std::string& debugName) {
+  return std::make_shared<VulkanShaderTable>(device_, shared_from_this(), debugName);
+}
+
+VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDesc& desc,
+                                   const VulkanPipelineLayout& layout)
+    : device_(device), desc_(desc) {
+  rhi::validateBindingSet(desc, layout.bindingLayout());
+  if (desc.space < layout.bindingLayout().spaces.size())
+    layoutItems_ = layout.bindingLayout().spaces[desc.space].items;
+
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const auto& item : desc.items) sizes.push_back({toDescriptorType(item.type), 1});
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = uint32_t(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  VkDescriptorPoolSize dummy{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1};
+  if (sizes.empty()) {
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &dummy;
+  }
+  check(vkCreateDescriptorPool(device_.handle(), &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+  VkDescriptorSetLayout setLayout = layout.setLayout(desc.space);
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool_;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &setLayout;
+  check(vkAllocateDescriptorSets(device_.handle(), &alloc, &set_), "vkAllocateDescriptorSets");
+  device_.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET, uint64_t(set_), desc.debugName);
+
+  // Reserve so the pointers the writes keep stay valid.
+  std::vector<VkDescriptorBufferInfo> bufferInfos;
+  std::vector<VkDescriptorImageInfo> imageInfos;
+  std::vector<VkWriteDescriptorSetAccelerationStructureKHR> asInfos;
+  std::vector<VkAccelerationStructureKHR> asHandles;
+  bufferInfos.reserve(desc.items.size());
+  imageInfos.reserve(desc.items.size());
+  asInfos.reserve(desc.items.size());
+  asHandles.reserve(desc.items.size());
+  std::vector<VkWriteDescriptorSet> writes;
+  for (const auto& item : desc.items) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set_;
+    w.dstBinding = item.slot;
+    w.descriptorCount = 1;
+    w.descriptorType = toDescriptorType(item.type);
+    switch (item.type) {
+      case rhi::ResourceType::AccelStruct: {
+        asHandles.push_back(static_cast<VulkanAccelStruct*>(item.accelStruct.get())->handle());
+        VkWriteDescriptorSetAccelerationStructureKHR a{
+            VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+        a.accelerationStructureCount = 1;
+        a.pAccelerationStructures = &asHandles.back();
+        asInfos.push_back(a);
+        w.pNext = &asInfos.back();
+        break;
+      }
+      case rhi::ResourceType::StorageBuffer:
+      case rhi::ResourceType::ConstantBuffer: {
+        auto* b = static_cast<VulkanBuffer*>(item.buffer.get());
+        bufferInfos.push_back({b->handle(), 0, VK_WHOLE_SIZE});
+        w.pBufferInfo = &bufferInfos.back();
+        break;
+      }
+      case rhi::ResourceType::StorageTexture: {
+        auto* t = static_cast<VulkanTexture*>(item.texture.get());
+        imageInfos.push_back({VK_NULL_HANDLE, t->view(), VK_IMAGE_LAYOUT_GENERAL});
+        w.pImageInfo = &imageInfos.back();
+        break;
+      }
+    }
+    writes.push_back(w);
+  }
+  vkUpdateDescriptorSets(device_.handle(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+VulkanBindingSet::~VulkanBindingSet() { vkDestroyDescriptorPool(device_.handle(), pool_, nullptr); }
+
+bool VulkanBindingSet::isWritable(uint32_t slot) const {
+  for (const auto& item : layoutItems_)
+    if (item.slot == slot) return item.writable;
+  return false;
+}
+
+VulkanShaderTable::VulkanShaderTable(VulkanDevice& device,
+                                     std::shared_ptr<VulkanRayTracingPipeline> pipeline,
+                                     std::string debugName)
+    : device_(device), pipeline_(std::move(pipeline)), debugName_(std::move(debugName)) {}
+
+VulkanShaderTable::Record VulkanShaderTable::makeRecord(const std::string& exportName,
+                                                        const void* data, size_t bytes) const {
+  pipeline_->groupHandle(exportName);  // throws on an unknown name, now rather than at dispatch
+  Record r{exportName, {}};
+  if (bytes > 0) {
+    const auto* p = static_cast<const uint8_t*>(data);
+    r.localData.assign(p, p + bytes);
+  }
+  return r;
+}
+
+void VulkanShaderTable::setRayGenerationShader(const std::string& exportName, const void* localData,
+                                               size_t localBytes) {
+  rayGen_ = makeRecord(exportName, localData, localBytes);
+  dirty_ = true;
+}
+
+uint32_t VulkanShaderTable::addMissShader(const std::string& exportName, const void* localData,
+                                          size_t localBytes) {
+  miss_.push_back(makeRecord(exportName, localData, localBytes));
+  dirty_ = true;
+  return uint32_t(miss_.size() - 1);
+}
+
+uint32_t VulkanShaderTable::addHitGroup(const std::string& exportName, const void* localData,
+                                        size_t localBytes) {
+  hit_.push_back(makeRecord(exportName, localData, localBytes));
+  dirty_ = true;
+  return uint32_t(hit_.size() - 1);
+}
+
+void VulkanShaderTable::clearMissShaders() {
+  miss_.clear();
+  dirty_ = true;
+}
+
+void VulkanShaderTable::clearHitGroups() {
+  hit_.clear();
+  dirty_ = true;
+}
+
+VulkanShaderTable::Regions VulkanShaderTable::prepare() {
+  if (!dirty_) return regions_;
+  if (rayGen_.exportName.empty())
+    throw Error(fmt::format("vulkan: shader table '{}' has no ray generation shader", debugName_));
+  auto maxLocal = [](const std::vector<Record>& records) {
+    uint32_t m = 0;
+    for (const auto& r : records) m = std::max(m, uint32_t(r.localData.size()));
+    return m;
+  };
+  const auto& align = device_.adapter().shaderTable;
+  const rhi::ShaderTableLayout layout = rhi::computeShaderTableLayout(
+      align, uint32_t(rayGen_.localData.size()), uint32_t(miss_.size()), maxLocal(miss_),
+      uint32_t(hit_.size()), maxLocal(hit_));
+
+  rhi::BufferDesc desc;
+  desc.byteSize = layout.totalBytes;
+  desc.usage = rhi::BufferUsage::ShaderTable;
+  desc.memory = rhi::MemoryLocation::Upload;
+  desc.debugName = debugName_;
+  // A fresh buffer each time the records change: a list still in flight keeps
+  // the old one alive (VulkanCommandList holds it).
+  buffer_ = std::make_shared<VulkanBuffer>(device_, desc, align.tableAlignment);
+  auto* base = static_cast<uint8_t*>(buffer_->mappedData());
+  std::memset(base, 0, layout.totalBytes);
+  auto write = [&](const rhi::ShaderTableRegion& region, uint32_t i, const Record& r) {
+    uint8_t* dst = base + region.offset + region.stride * i;
+    std::memcpy(dst, pipeline_->groupHandle(r.exportName), align.handleSize);
+    if (!r.localData.empty()) std::memcpy(dst + align.handleSize, r.localData.data(), r.localData.size());
+  };
+  write(layout.rayGeneration, 0, rayGen_);
+  for (uint32_t i = 0; i < miss_.size(); ++i) write(layout.miss, i, miss_[i]);
+  for (uint32_t i = 0; i < hit_.size(); ++i) write(layout.hitGroup, i, hit_[i]);
+
+  const uint64_t address = buffer_->deviceAddress();
+  auto region = [&](const rhi::ShaderTableRegion& r) {
+    VkStridedDeviceAddressRegionKHR v{};
+    if (r.count == 0) return v;
+    v.deviceAddress = address + r.offset;
+    v.stride = r.stride;
+    v.size = r.size;
+    return v;
+  };
+  regions_.rayGen = region(layout.rayGeneration);
+  regions_.miss = region(layout.miss);
+  regions_.hit = region(layout.hitGroup);
+  dirty_ = false;
+  return regions_;
+}
+
+}  // namespace penumbra::vk

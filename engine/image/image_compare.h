@@ -1,0 +1,24 @@
+#pragma once
+// Per-pixel comparison of two linear images (backend vs backend, device vs
+// device, render vs reference).
+#include <string>
+
+#include "image/image.h"
+
+namespace penumbra::image {
+
+struct ComparisonStats {
+  double meanAbsoluteDifference = 0;  // over RGB channels of all pixels
+  double maxAbsoluteDifference = 0;
+  // Pixels where some RGB channel differs by more than relativeTolerance *
+  // max(|a|, |b|, 1e-3): "beyond the tolerance".
+  double fractionBeyondTolerance = 0;
+  uint64_t pixelsBeyondTolerance = 0;
+  double psnr = 0;  // dB, peak = max value of image a (infinite if identical)
+  uint64_t nonFiniteA = 0, nonFiniteB = 0;
+};
+
+// Throws penumbra::Error if the sizes differ.
+ComparisonStats compareImages(const Image& a, const Image& b, double relativeTolerance);
+
+}  // namespace penumbra::image

@@ -1,0 +1,300 @@
+#include "render/path_tracer.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "path_tracer_shared.h"
+#include "penumbra_shaders.h"
+#include "util/error.h"
+
+namespace penumbra::render {
+namespace {
+
+gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
+
+rhi::rt::AffineTransform toAffine(const glm::mat4& m) {
+  rhi::rt::AffineTransform t{};
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 4; ++col) t[row * 4 + col] = m[col][row];  // glm is column-major
+  return t;
+}
+
+rhi::ShaderDesc shader(rhi::ShaderStage stage, const char* file) {
+  auto words = shaders::find(file);
+  if (words.empty()) throw Error(fmt::format("path tracer: shader '{}' is not embedded", file));
+  rhi::ShaderDesc d;
+  d.stage = stage;
+  d.bytecode = words.data();
+  d.byteSize = words.size_bytes();
+  d.exportName = file;
+  return d;
+}
+
+template <class T>
+rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& data,
+                                    rhi::BufferUsage extra, const char* name) {
+  rhi::BufferDesc desc;
+  desc.byteSize = std::max<uint64_t>(data.size() * sizeof(T), 16);
+  desc.usage = rhi::BufferUsage::StorageBuffer | extra;
+  desc.debugName = name;
+  return device.createBuffer(desc);
+}
+
+}  // namespace
+
+struct PathTracer::SceneBuffers {
+  rhi::BufferHandle vertices, indices, instances, materials, emissive;
+  std::vector<rhi::rt::AccelStructHandle> bottomLevels;
+  rhi::rt::AccelStructHandle topLevel;
+};
+
+PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height)
+    : device_(device), width_(width), height_(height), camera_(scene.camera) {
+  if (width == 0 || height == 0 || width > 16384 || height > 16384)
+    throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
+  scene::validate(scene);
+  commandList_ = device_.createCommandList();
+  timer_ = device_.createTimerQuery();
+
+  rhi::TextureDesc tex;
+  tex.width = width;
+  tex.height = height;
+  tex.format = rhi::Format::RGBA32_FLOAT;
+  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+  tex.debugName = "accumulation";
+  accumulation_ = device_.createTexture(tex);
+
+  rhi::BufferDesc counter;
+  counter.byteSize = 4;
+  counter.usage = rhi::BufferUsage::StorageBuffer;
+  counter.debugName = "ray counter";
+  rayCounter_ = device_.createBuffer(counter);
+  counter.memory = rhi::MemoryLocation::Readback;
+  counter.usage = rhi::BufferUsage::CopyDest;
+  counter.debugName = "ray counter readback";
+  rayCounterReadback_ = device_.createBuffer(counter);
+
+  uploadScene(scene);
+  createPipeline();
+}
+
+PathTracer::~PathTracer() = default;
+
+void PathTracer::uploadScene(const scene::Scene& scene) {
+  scene_ = std::make_unique<SceneBuffers>();
+  std::vector<gpu::float4> vertices;
+  std::vector<uint32_t> indices;
+  std::vector<uint32_t> firstVertex, firstIndex;
+  for (const auto& mesh : scene.meshes) {
+    firstVertex.push_back(uint32_t(vertices.size()));
+    firstIndex.push_back(uint32_t(indices.size()));
+    for (const auto& p : mesh.positions) vertices.push_back(toFloat4(p, 1.0f));
+    indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
+  }
+
+  std::vector<gpu::MaterialData> materials;
+  for (const auto& m : scene.materials)
+    materials.push_back({toFloat4(m.albedo), toFloat4(m.emission)});
+
+  // Emitters: world-space triangles of every instance of an emissive mesh,
+  // chosen for NEE in proportion to power (area x luminance).
+  std::vector<gpu::InstanceData> instances;
+  std::vector<gpu::EmissiveTriangle> emissive;
+  std::vector<double> power;
+  for (const auto& inst : scene.instances) {
+    const auto& mesh = scene.meshes[inst.mesh];
+    const auto& material = scene.materials[mesh.material];
+    gpu::InstanceData data{firstIndex[inst.mesh], firstVertex[inst.mesh], mesh.material,
+                           PT_NO_EMISSION};
+    if (material.isEmissive()) {
+      data.firstEmissiveTriangle = uint32_t(emissive.size());
+      const double lum = 0.2126 * material.emission.x + 0.7152 * material.emission.y +
+                         0.0722 * material.emission.z;
+      for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k)
+          p[k] = glm::vec3(inst.transform * glm::vec4(mesh.positions[mesh.indices[t + k]], 1.0f));
+        const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+        gpu::EmissiveTriangle tri{toFloat4(p[0]), toFloat4(p[1], area), toFloat4(p[2]),
+                                  toFloat4(material.emission)};
+        emissive.push_back(tri);
+        power.push_back(area > 0.0f ? area * lum : 0.0);
+      }
+    }
+    instances.push_back(data);
+  }
+  double totalPower = 0;
+  for (double p : power) totalPower += p;
+  double cumulative = 0;
+  for (size_t i = 0; i < emissive.size(); ++i) {
+    const double pmf = totalPower > 0 ? power[i] / totalPower : 0.0;
+    cumulative += pmf;
+    emissive[i].p0.w = float(pmf);
+    emissive[i].radiance.w = float(cumulative);
+  }
+  // Degenerate (zero-area) emitters get probability 0 and are never chosen;
+  // the last cumulative value is exactly 1 so the search always ends in range.
+  if (!emissive.empty() && totalPower > 0) {
+    for (size_t i = emissive.size(); i-- > 0;) {
+      if (emissive[i].p0.w > 0) {
+        emissive[i].radiance.w = 1.0f;
+        for (size_t j = i + 1; j < emissive.size(); ++j) emissive[j].radiance.w = 1.0f;
+        break;
+      }
+    }
+  }
+  emissiveTriangleCount_ = totalPower > 0 ? uint32_t(emissive.size()) : 0;
+
+  using rhi::BufferUsage;
+  auto& s = *scene_;
+  s.vertices = makeStorageBuffer(device_, vertices, BufferUsage::AccelStructBuildInput, "vertices");
+  s.indices = makeStorageBuffer(device_, indices, BufferUsage::AccelStructBuildInput, "indices");
+  s.instances = makeStorageBuffer(device_, instances, BufferUsage::None, "instances");
+  s.materials = makeStorageBuffer(device_, materials, BufferUsage::None, "materials");
+  s.emissive = makeStorageBuffer(device_, emissive, BufferUsage::None, "emissive triangles");
+
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->writeBuffer(s.vertices.get(), vertices.data(), vertices.size() * sizeof(gpu::float4));
+  cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
+  cmd->writeBuffer(s.instances.get(), instances.data(), instances.size() * sizeof(gpu::InstanceData));
+  cmd->writeBuffer(s.materials.get(), materials.data(), materials.size() * sizeof(gpu::MaterialData));
+  if (!emissive.empty())
+    cmd->writeBuffer(s.emissive.get(), emissive.data(), emissive.size() * sizeof(gpu::EmissiveTriangle));
+
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    rhi::rt::AccelStructDesc blas;
+    blas.debugName = "BLAS " + scene.meshes[m].name;
+    rhi::rt::GeometryDesc geo;
+    geo.type = rhi::rt::GeometryType::Triangles;
+    geo.flags = rhi::rt::GeometryFlags::Opaque;
+    geo.triangles.vertexBuffer = s.vertices.get();
+    geo.triangles.vertexOffset = uint64_t(firstVertex[m]) * sizeof(gpu::float4);
+    geo.triangles.vertexStride = sizeof(gpu::float4);
+    geo.triangles.vertexCount = uint32_t(scene.meshes[m].positions.size());
+    geo.triangles.indexBuffer = s.indices.get();
+    geo.triangles.indexOffset = uint64_t(firstIndex[m]) * sizeof(uint32_t);
+    geo.triangles.indexCount = uint32_t(scene.meshes[m].indices.size());
+    blas.bottomLevelGeometries.push_back(geo);
+    s.bottomLevels.push_back(device_.createAccelStruct(blas));
+    cmd->buildBottomLevelAccelStruct(s.bottomLevels.back().get());
+  }
+
+  std::vector<rhi::rt::InstanceDesc> tlasInstances;
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    rhi::rt::InstanceDesc d;
+    d.transform = toAffine(scene.instances[i].transform);
+    d.instanceID = uint32_t(i);
+    d.instanceMask = 0xff;
+    d.instanceContributionToHitGroupIndex = 0;
+    d.flags = rhi::rt::InstanceTriangleCullDisable;
+    d.bottomLevelAddress = s.bottomLevels[scene.instances[i].mesh]->deviceAddress();
+    tlasInstances.push_back(d);
+  }
+  rhi::rt::AccelStructDesc tlas;
+  tlas.isTopLevel = true;
+  tlas.topLevelMaxInstances = uint32_t(tlasInstances.size());
+  tlas.debugName = "TLAS " + scene.name;
+  s.topLevel = device_.createAccelStruct(tlas);
+  cmd->buildTopLevelAccelStruct(s.topLevel.get(), tlasInstances.data(), uint32_t(tlasInstances.size()));
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+}
+
+void PathTracer::createPipeline() {
+  using rhi::ShaderStage;
+  rhi::RayTracingPipelineDesc desc;
+  desc.debugName = "path tracer";
+  desc.shaders = {shader(ShaderStage::RayGeneration, "path_trace.rgen"),
+                  shader(ShaderStage::Miss, "path_trace.rmiss"),
+                  shader(ShaderStage::Miss, "shadow.rmiss"),
+                  shader(ShaderStage::ClosestHit, "triangle.rchit")};
+  desc.hitGroups = {{"triangles", "triangle.rchit", "", "", false}};
+  desc.maxPayloadBytes = 36;  // SurfaceHit
+  desc.maxRecursionDepth = 1; // only the ray generation shader traces
+  pipeline_ = device_.createRayTracingPipeline(desc);
+
+  shaderTable_ = pipeline_->createShaderTable("path tracer shader table");
+  shaderTable_->setRayGenerationShader("path_trace.rgen");
+  shaderTable_->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
+  shaderTable_->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
+  shaderTable_->addHitGroup("triangles");
+
+  using Item = rhi::BindingSetItem;
+  rhi::BindingSetDesc set;
+  set.debugName = "path tracer bindings";
+  set.items = {Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
+               Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
+               Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
+               Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
+               Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
+               Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
+               Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
+               Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
+  bindings_ = device_.createBindingSet(set, *pipeline_);
+}
+
+FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t samples) {
+  if (samples < 1 || samples > kMaxSamplesPerFrame)
+    throw Error(fmt::format("path tracer: {} samples per frame is outside 1..{}", samples,
+                            kMaxSamplesPerFrame));
+  gpu::FrameConstants c;
+  const glm::vec3 forward = glm::normalize(camera_.forward);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  c.cameraPosition = toFloat4(camera_.position, std::tan(glm::radians(camera_.verticalFovDegrees) * 0.5f));
+  c.cameraRight = toFloat4(right, float(width_) / float(height_));
+  c.cameraUp = toFloat4(up);
+  c.cameraForward = toFloat4(forward);
+  c.image = {width_, height_, samples, accumulatedSamples_};
+  uint32_t flags = 0;
+  if (settings.nextEventEstimation) flags |= PT_FLAG_NEE;
+  if (settings.multipleImportanceSampling) flags |= PT_FLAG_MIS;
+  if (settings.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
+  c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth, flags};
+  c.lights = {emissiveTriangleCount_, 0, 0, 0};
+
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->clearBufferUint(rayCounter_.get(), 0);
+  cmd->setRayTracingState({pipeline_.get(), shaderTable_.get(), {bindings_.get()}});
+  cmd->setPushConstants(&c, sizeof(c));
+  cmd->beginTimerQuery(timer_.get());
+  cmd->dispatchRays(width_, height_);
+  cmd->endTimerQuery(timer_.get());
+  cmd->copyBuffer(rayCounterReadback_.get(), 0, rayCounter_.get(), 0, 4);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+
+  accumulatedSamples_ += samples;
+  FrameStats stats;
+  stats.gpuSeconds = device_.timerQuerySeconds(timer_.get());
+  std::memcpy(&stats.rays, rayCounterReadback_->mappedData(), 4);
+  stats.samples = samples;
+  return stats;
+}
+
+image::Image PathTracer::readback() {
+  rhi::BufferDesc desc;
+  desc.byteSize = uint64_t(width_) * height_ * 16;
+  desc.usage = rhi::BufferUsage::CopyDest;
+  desc.memory = rhi::MemoryLocation::Readback;
+  desc.debugName = "accumulation readback";
+  auto buffer = device_.createBuffer(desc);
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->copyTextureToBuffer(accumulation_.get(), buffer.get());
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  image::Image img(width_, height_);
+  std::memcpy(img.rgba.data(), buffer->mappedData(), desc.byteSize);
+  return img;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,64 @@
+#include "render/tonemapper.h"
+
+#include <cstring>
+
+#include "bindings.hlsli"
+#include "penumbra_shaders.h"
+#include "util/error.h"
+
+namespace penumbra::render {
+
+Tonemapper::Tonemapper(rhi::IDevice& device) : device_(device) {
+  auto words = shaders::find("tonemap.comp");
+  if (words.empty()) throw Error("tonemapper: shader 'tonemap.comp' is not embedded");
+  rhi::ComputePipelineDesc desc;
+  desc.shader.stage = rhi::ShaderStage::Compute;
+  desc.shader.bytecode = words.data();
+  desc.shader.byteSize = words.size_bytes();
+  desc.shader.exportName = "tonemap.comp";
+  desc.debugName = "tonemap";
+  pipeline_ = device_.createComputePipeline(desc);
+  commandList_ = device_.createCommandList();
+}
+
+image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure) {
+  const uint32_t w = hdr->desc().width, h = hdr->desc().height;
+  rhi::BufferDesc out;
+  out.byteSize = uint64_t(w) * h * 4;
+  out.usage = rhi::BufferUsage::StorageBuffer;
+  out.debugName = "tonemapped";
+  auto pixels = device_.createBuffer(out);
+  out.usage = rhi::BufferUsage::CopyDest;
+  out.memory = rhi::MemoryLocation::Readback;
+  out.debugName = "tonemapped readback";
+  auto readback = device_.createBuffer(out);
+
+  rhi::BindingSetDesc set;
+  set.debugName = "tonemap bindings";
+  set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(0), hdr),
+               rhi::BindingSetItem::storageBuffer(PENUMBRA_U(0), pixels)};
+  auto bindings = device_.createBindingSet(set, *pipeline_);
+
+  struct {
+    uint32_t width, height;
+    float exposure;
+  } push{w, h, exposure};
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->setComputeState({pipeline_.get(), {bindings.get()}});
+  cmd->setPushConstants(&push, sizeof(push));
+  cmd->dispatch((w + 7) / 8, (h + 7) / 8);
+  cmd->copyBuffer(readback.get(), 0, pixels.get(), 0, out.byteSize);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+
+  image::Image8 img;
+  img.width = w;
+  img.height = h;
+  img.rgba.resize(out.byteSize);
+  std::memcpy(img.rgba.data(), readback->mappedData(), out.byteSize);
+  return img;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,159 @@
+#pragma once
+// Shaders, binding layouts, binding sets, pipelines and shader tables.
+#include <cstddef>
+#include <vector>
+
+#include "rhi/resources.h"
+
+namespace penumbra::rhi {
+
+// ---- Binding model -------------------------------------------------------
+// A pipeline's binding layout is derived from its shaders' SPIR-V by
+// reflection (engine/rhi/shader_reflection.h), never written by hand.
+// space N = Vulkan descriptor set N = D3D12 register space N; the slot is the
+// Vulkan binding number, which encodes the D3D12 register through the shift
+// table in register_shifts.h.
+
+enum class ResourceType : uint8_t {
+  AccelStruct,     // D3D12: SRV (RaytracingAccelerationStructure). Vulkan: ACCELERATION_STRUCTURE_KHR
+  StorageBuffer,   // D3D12: (RW)StructuredBuffer SRV/UAV. Vulkan: STORAGE_BUFFER
+  ConstantBuffer,  // D3D12: CBV. Vulkan: UNIFORM_BUFFER
+  StorageTexture,  // D3D12: RWTexture2D UAV. Vulkan: STORAGE_IMAGE
+};
+const char* resourceTypeName(ResourceType type);
+
+struct BindingLayoutItem {
+  uint32_t slot = 0;
+  ResourceType type = ResourceType::StorageBuffer;
+  uint32_t arraySize = 1;
+  bool writable = false;  // UAV rather than SRV on D3D12
+  std::string name;       // the shader's variable/block name, for error messages
+};
+
+struct BindingLayout {
+  uint32_t space = 0;
+  std::vector<BindingLayoutItem> items;  // sorted by slot
+};
+
+struct PipelineBindingLayout {
+  std::vector<BindingLayout> spaces;  // index = space number (may have empty spaces)
+  uint32_t pushConstantBytes = 0;     // D3D12: root constants. Vulkan: push constant range
+};
+
+struct BindingSetItem {
+  uint32_t slot = 0;
+  ResourceType type = ResourceType::StorageBuffer;
+  BufferHandle buffer;
+  TextureHandle texture;
+  rt::AccelStructHandle accelStruct;
+
+  static BindingSetItem storageBuffer(uint32_t slot, BufferHandle b) {
+    return {slot, ResourceType::StorageBuffer, std::move(b), {}, {}};
+  }
+  static BindingSetItem constantBuffer(uint32_t slot, BufferHandle b) {
+    return {slot, ResourceType::ConstantBuffer, std::move(b), {}, {}};
+  }
+  static BindingSetItem storageTexture(uint32_t slot, TextureHandle t) {
+    return {slot, ResourceType::StorageTexture, {}, std::move(t), {}};
+  }
+  static BindingSetItem accelStructure(uint32_t slot, rt::AccelStructHandle a) {
+    return {slot, ResourceType::AccelStruct, {}, {}, std::move(a)};
+  }
+};
+
+struct BindingSetDesc {
+  uint32_t space = 0;
+  std::vector<BindingSetItem> items;
+  std::string debugName;
+};
+
+// D3D12: a range of a shader-visible CBV/SRV/UAV descriptor heap, bound as a
+// descriptor table of the global root signature.
+// Vulkan: a VkDescriptorSet bound with vkCmdBindDescriptorSets.
+class IBindingSet {
+ public:
+  virtual ~IBindingSet() = default;
+  virtual const BindingSetDesc& desc() const = 0;
+};
+using BindingSetHandle = std::shared_ptr<IBindingSet>;
+
+// ---- Shaders and pipelines ----------------------------------------------
+
+// One entry point. On Vulkan `bytecode` is SPIR-V, on D3D12 a DXIL library.
+// The bytes must outlive pipeline creation only.
+struct ShaderDesc {
+  ShaderStage stage = ShaderStage::Compute;
+  const void* bytecode = nullptr;
+  size_t byteSize = 0;
+  std::string entryPoint = "main";  // name inside the module / DXIL library
+  std::string exportName;           // name used by hit groups and shader tables
+};
+
+// D3D12: D3D12_HIT_GROUP_DESC (TRIANGLES or PROCEDURAL_PRIMITIVE).
+// Vulkan: a VkRayTracingShaderGroupCreateInfoKHR of type
+// TRIANGLES_HIT_GROUP or PROCEDURAL_HIT_GROUP.
+struct HitGroupDesc {
+  std::string exportName;
+  std::string closestHit;    // export names of shaders in the pipeline ("" = none)
+  std::string anyHit;
+  std::string intersection;  // required when isProcedural
+  bool isProcedural = false;
+};
+
+struct RayTracingPipelineDesc {
+  std::vector<ShaderDesc> shaders;  // raygen, miss and hit shaders
+  std::vector<HitGroupDesc> hitGroups;
+  uint32_t maxPayloadBytes = 32;    // D3D12_RAYTRACING_SHADER_CONFIG (Vulkan infers it)
+  uint32_t maxAttributeBytes = 8;
+  uint32_t maxRecursionDepth = 1;   // D3D12 pipeline config / VkRayTracingPipelineCreateInfoKHR
+  std::string debugName;
+};
+
+struct ComputePipelineDesc {
+  ShaderDesc shader;
+  std::string debugName;
+};
+
+class IPipeline {
+ public:
+  virtual ~IPipeline() = default;
+  virtual const PipelineBindingLayout& bindingLayout() const = 0;
+};
+
+// D3D12: ID3D12PipelineState (compute) + root signature.
+// Vulkan: VkPipeline (compute) + VkPipelineLayout.
+class IComputePipeline : public IPipeline {};
+using ComputePipelineHandle = std::shared_ptr<IComputePipeline>;
+
+class IShaderTable;
+using ShaderTableHandle = std::shared_ptr<IShaderTable>;
+
+// D3D12: ID3D12StateObject (DXIL libraries, hit groups, shader/pipeline config).
+// Vulkan: VkPipeline from vkCreateRayTracingPipelinesKHR.
+class IRayTracingPipeline : public IPipeline {
+ public:
+  virtual const RayTracingPipelineDesc& desc() const = 0;
+  virtual ShaderTableHandle createShaderTable(const std::string& debugName) = 0;
+};
+using RayTracingPipelineHandle = std::shared_ptr<IRayTracingPipeline>;
+
+// The records DispatchRays / vkCmdTraceRaysKHR read. Each record is a shader
+// identifier followed by optional local data (D3D12 local root constants,
+// Vulkan shaderRecordEXT). The backend lays records out with its API's
+// alignments (shader_table_layout.h) and uploads them when the table changed.
+// Miss index i and hit-group index j in TraceRay refer to the order of the
+// add* calls.
+class IShaderTable {
+ public:
+  virtual ~IShaderTable() = default;
+  virtual void setRayGenerationShader(const std::string& exportName, const void* localData = nullptr,
+                                      size_t localBytes = 0) = 0;
+  virtual uint32_t addMissShader(const std::string& exportName, const void* localData = nullptr,
+                                 size_t localBytes = 0) = 0;
+  virtual uint32_t addHitGroup(const std::string& exportName, const void* localData = nullptr,
+                               size_t localBytes = 0) = 0;
+  virtual void clearMissShaders() = 0;
+  virtual void clearHitGroups() = 0;
+};
+
+}  // namespace penumbra::rhi

@@ -1,0 +1,38 @@
+#include "rhi/rhi.h"
+
+namespace penumbra::rhi {
+
+uint32_t formatByteSize(Format format) {
+  switch (format) {
+    case Format::RGBA8_UNORM: return 4;
+    case Format::RGBA32_FLOAT: return 16;
+    case Format::RGB32_FLOAT: return 12;
+    case Format::R32_UINT: return 4;
+    case Format::R16_UINT: return 2;
+    case Format::Unknown: return 0;
+  }
+  return 0;
+}
+
+const char* resourceTypeName(ResourceType type) {
+  switch (type) {
+    case ResourceType::AccelStruct: return "acceleration structure";
+    case ResourceType::StorageBuffer: return "storage buffer";
+    case ResourceType::ConstantBuffer: return "constant buffer";
+    case ResourceType::StorageTexture: return "storage texture";
+  }
+  return "?";
+}
+
+const char* adapterTypeName(AdapterType type) {
+  switch (type) {
+    case AdapterType::Discrete: return "discrete GPU";
+    case AdapterType::Integrated: return "integrated GPU";
+    case AdapterType::Virtual: return "virtual GPU";
+    case AdapterType::Cpu: return "CPU";
+    case AdapterType::Other: return "other";
+  }
+  return "?";
+}
+
+}  // namespace penumbra::rhi

@@ -1,0 +1,79 @@
+#pragma once
+// Plain enums and flags shared by every RHI object. No API headers here:
+// engine/ never sees Vulkan or D3D12 types.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace penumbra::rhi {
+
+enum class Format : uint8_t {
+  Unknown,
+  RGBA8_UNORM,    // D3D12: DXGI_FORMAT_R8G8B8A8_UNORM      Vulkan: VK_FORMAT_R8G8B8A8_UNORM
+  RGBA32_FLOAT,   // D3D12: DXGI_FORMAT_R32G32B32A32_FLOAT  Vulkan: VK_FORMAT_R32G32B32A32_SFLOAT
+  RGB32_FLOAT,    // vertex positions only (AS build input)
+  R32_UINT,       // index buffers, counters
+  R16_UINT,
+};
+uint32_t formatByteSize(Format format);
+
+// Where a buffer lives. D3D12: heap type DEFAULT / UPLOAD / READBACK.
+// Vulkan: DEVICE_LOCAL / HOST_VISIBLE|HOST_COHERENT / HOST_VISIBLE|HOST_CACHED.
+enum class MemoryLocation : uint8_t { DeviceLocal, Upload, Readback };
+
+enum class BufferUsage : uint32_t {
+  None = 0,
+  StorageBuffer = 1 << 0,        // structured/raw UAV or SRV; Vulkan STORAGE_BUFFER
+  ConstantBuffer = 1 << 1,       // CBV; Vulkan UNIFORM_BUFFER
+  AccelStructBuildInput = 1 << 2,// vertex/index/AABB/instance data read by AS builds
+  AccelStructStorage = 1 << 3,   // backing memory of an acceleration structure
+  ShaderTable = 1 << 4,          // shader binding table records
+  CopySource = 1 << 5,
+  CopyDest = 1 << 6,
+};
+constexpr BufferUsage operator|(BufferUsage a, BufferUsage b) {
+  return BufferUsage(uint32_t(a) | uint32_t(b));
+}
+constexpr bool hasFlag(BufferUsage set, BufferUsage flag) { return (uint32_t(set) & uint32_t(flag)) != 0; }
+
+enum class TextureUsage : uint32_t {
+  None = 0,
+  Storage = 1 << 0,  // UAV; Vulkan STORAGE image
+  Sampled = 1 << 1,  // SRV; Vulkan SAMPLED image
+  CopySource = 1 << 2,
+  CopyDest = 1 << 3,
+};
+constexpr TextureUsage operator|(TextureUsage a, TextureUsage b) {
+  return TextureUsage(uint32_t(a) | uint32_t(b));
+}
+constexpr bool hasFlag(TextureUsage set, TextureUsage flag) { return (uint32_t(set) & uint32_t(flag)) != 0; }
+
+// How a resource is about to be used. Command lists move resources between
+// states explicitly (ICommandList::setBufferState and friends).
+// D3D12: D3D12_RESOURCE_STATES transitions, UAV barriers for UAV->UAV.
+// Vulkan: pipeline barriers with the stage/access masks of each state; images
+// stay in VK_IMAGE_LAYOUT_GENERAL after their first use.
+enum class ResourceState : uint8_t {
+  Undefined,
+  ShaderResource,        // read in shaders
+  UnorderedAccess,       // read/write in shaders
+  ConstantBuffer,
+  CopySource,
+  CopyDest,
+  AccelStructBuildInput, // vertex/index/instance data read by an AS build
+  AccelStructWrite,      // AS being built
+  AccelStructRead,       // AS traced against, or read by a TLAS build
+  ShaderTable,           // read by DispatchRays / vkCmdTraceRaysKHR
+  HostRead,              // mapped and read by the CPU after a copy
+};
+
+enum class ShaderStage : uint8_t {
+  Compute,
+  RayGeneration,
+  Miss,
+  ClosestHit,
+  AnyHit,
+  Intersection,
+};
+
+}  // namespace penumbra::rhi

@@ -1,0 +1,28 @@
+#pragma once
+// Penumbra's scene files (JSON). Built-in scenes are embedded in the binary
+// and found by name; anything else is read from a path.
+//
+// Format (version 1):
+//   { "format": "penumbra-scene", "version": 1, "name": "...",
+//     "unitScale": 0.001,                        // file units -> metres
+//     "camera": { "position": [x,y,z], "forward": [x,y,z], "up": [x,y,z],
+//                 "verticalFovDegrees": 39.3077 },
+//     "materials": { "white": { "albedo": [r,g,b], "emission": [r,g,b] }, ... },
+//     "meshes": [ { "name": "floor", "material": "white",
+//                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ] }
+// Each quad is split into two counter-clockwise triangles (v0 v1 v2, v0 v2 v3);
+// each mesh becomes one instance with the identity transform.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace penumbra::scene {
+
+// `nameOrPath`: a built-in scene name ("cornell-box") or a path to a .json file.
+Scene loadScene(const std::string& nameOrPath);
+Scene parseScene(std::string_view json, const std::string& source);
+std::vector<std::string> builtInSceneNames();
+
+}  // namespace penumbra::scene

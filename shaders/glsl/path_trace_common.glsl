@@ -1,0 +1,27 @@
+// Resources and trace wrappers shared by the path tracer's GLSL stages.
+#extension GL_EXT_ray_tracing : require
+#include "hlsl_prelude.glsl"
+#include "path_tracer_shared.h"
+#include "math.hlsli"
+#include "surface_hit.hlsli"
+
+#define PT_PAYLOAD_RADIANCE 0
+#define PT_PAYLOAD_SHADOW 1
+#define PT_MISS_RADIANCE 0
+#define PT_MISS_SHADOW 1
+
+layout(push_constant, std430) uniform FramePush { FrameConstants gFrame; };
+layout(set = 0, binding = PT_SLOT_SCENE) uniform accelerationStructureEXT gScene;
+layout(set = 0, binding = PT_SLOT_VERTICES, std430) readonly buffer Vertices { float4 gVertices[]; };
+layout(set = 0, binding = PT_SLOT_INDICES, std430) readonly buffer Indices { uint gIndices[]; };
+layout(set = 0, binding = PT_SLOT_INSTANCES, std430) readonly buffer Instances { InstanceData gInstances[]; };
+layout(set = 0, binding = PT_SLOT_MATERIALS, std430) readonly buffer Materials { MaterialData gMaterials[]; };
+layout(set = 0, binding = PT_SLOT_EMISSIVE_TRIANGLES, std430) readonly buffer Emissive {
+  EmissiveTriangle gEmissiveTriangles[];
+};
+layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
+layout(set = 0, binding = PT_SLOT_RAY_COUNTER, std430) buffer RayCounter { uint gRayCount; };
+
+InstanceData loadInstanceData(uint index) { return gInstances[index]; }
+MaterialData loadMaterial(uint index) { return gMaterials[index]; }
+EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }

@@ -1,0 +1,83 @@
+// The shading core compiled by glslang's HLSL front-end (DESIGN.md §3), as a
+// compute shader that runs the path tracer in an analytic furnace: the camera
+// sits inside a sphere of albedo rho emitting Le everywhere, so every sample
+// must converge to Le / (1 - rho). Run by tests/shaders/test_hlsl_core.cpp,
+// it proves the HLSL spelling of the core compiles and computes the same
+// physics; the DXR entry points use the same files.
+//
+// The sphere is analytic, not triangles, so next-event estimation is off here
+// (lights.x = 0); the Vulkan furnace test covers NEE and MIS.
+#include "path_tracer_shared.h"
+#include "math.hlsli"
+#include "surface_hit.hlsli"
+
+struct FurnacePush {
+  FrameConstants frame;
+  float4 sphere;  // x albedo, y emitted radiance, z radius
+};
+[[vk::push_constant]] ConstantBuffer<FurnacePush> gPush;
+RWStructuredBuffer<float4> gOutput : register(u0);
+
+// Rays start inside the sphere (centred at the origin), so the hit is the far root.
+SurfaceHit traceClosest(float3 origin, float3 direction) {
+  float radius = gPush.sphere.z;
+  float b = dot(origin, direction);
+  float c = dot(origin, origin) - radius * radius;
+  float disc = b * b - c;
+  if (disc < 0.0) return surfaceMiss();
+  SurfaceHit h;
+  h.hitT = -b + sqrt(disc);
+  h.position = origin + h.hitT * direction;
+  h.geometricNormal = -normalize(h.position);  // the emitting side faces inwards
+  h.instanceIndex = 0u;
+  h.primitiveIndex = 0u;
+  return h;
+}
+
+// Any two points inside a sphere see each other.
+bool traceVisibility(float3 origin, float3 direction, float tMax) { return true; }
+
+InstanceData loadInstanceData(uint index) {
+  InstanceData m;
+  m.firstIndex = 0u;
+  m.firstVertex = 0u;
+  m.materialIndex = 0u;
+  m.firstEmissiveTriangle = 0u;
+  return m;
+}
+
+MaterialData loadMaterial(uint index) {
+  MaterialData m;
+  m.albedo = float4(gPush.sphere.x, gPush.sphere.x, gPush.sphere.x, 0.0);
+  m.emission = float4(gPush.sphere.y, gPush.sphere.y, gPush.sphere.y, 0.0);
+  return m;
+}
+
+// No triangle lights in this harness (lights.x = 0 keeps NEE from calling it).
+EmissiveTriangle loadEmissiveTriangle(uint index) {
+  EmissiveTriangle t;
+  t.p0 = float4(0.0, 0.0, 0.0, 0.0);
+  t.p1 = float4(0.0, 0.0, 0.0, 1.0);
+  t.p2 = float4(0.0, 0.0, 0.0, 0.0);
+  t.radiance = float4(0.0, 0.0, 0.0, 1.0);
+  return t;
+}
+
+#include "camera.hlsli"
+#include "path_tracer.hlsli"
+
+[numthreads(64, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
+  FrameConstants c = gPush.frame;
+  uint pixelIndex = id.x;
+  uint2 pixel = uint2(pixelIndex % c.image.x, pixelIndex / c.image.x);
+  if (pixel.y >= c.image.y) return;
+  float3 sum = zero3();
+  for (uint s = 0u; s < c.image.z; s += 1u) {
+    Rng rng = rngCreate(pixel, s, c.sampling.x);
+    float2 jitter = jitteredPixelSample(s, c.image.z, rngNext(rng), rngNext(rng));
+    float3 direction = cameraRayDirection(c, float2(pixel) + jitter);
+    sum += tracePath(c, c.cameraPosition.xyz, direction, rng);
+  }
+  gOutput[pixelIndex] = float4(sum / float(c.image.z), 1.0);
+}

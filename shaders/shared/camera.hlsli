@@ -1,0 +1,28 @@
+// Pinhole camera of FrameConstants.
+#ifndef PENUMBRA_CAMERA_HLSLI
+#define PENUMBRA_CAMERA_HLSLI
+
+// `filmPosition` is in pixels, (0,0) the top-left corner of the image.
+float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
+  float tanHalfFov = c.cameraPosition.w;
+  float aspect = c.cameraRight.w;
+  float sx = (2.0 * filmPosition.x / float(c.image.x) - 1.0) * tanHalfFov * aspect;
+  float sy = (1.0 - 2.0 * filmPosition.y / float(c.image.y)) * tanHalfFov;
+  return normalize(c.cameraForward.xyz + sx * c.cameraRight.xyz + sy * c.cameraUp.xyz);
+}
+
+// Stratified jittered position of sample `index` of `count` in one frame: the
+// first m*m samples (m = floor(sqrt(count))) each cover one cell of an m x m
+// grid, the rest are uniform.
+float2 jitteredPixelSample(uint index, uint count, float u0, float u1) {
+  uint m = uint(sqrt(float(count)));
+  while ((m + 1u) * (m + 1u) <= count) m += 1u;
+  while (m * m > count) m -= 1u;
+  if (index < m * m) {
+    float cell = 1.0 / float(m);
+    return float2((float(index % m) + u0) * cell, (float(index / m) + u1) * cell);
+  }
+  return float2(u0, u1);
+}
+
+#endif
