@@ -27,9 +27,12 @@ function(penumbra_add_shaders)
     set(lang_flags --target-env vulkan1.2)
     if(name MATCHES "\\.hlsl$")
       # HLSL compute harness: glslang's HLSL front-end, entry point "main".
-      # Same register shift table as engine/rhi/register_shifts.h.
-      list(APPEND lang_flags -D -S comp -e main --shift-cbuffer-binding 0
-           --shift-texture-binding 32 --shift-UAV-binding 64 --shift-sampler-binding 96)
+      # SPIR-V 1.3: glslang 12's HLSL front-end still emits BufferBlock, which
+      # SPIR-V 1.4+ forbids. glslang's shift flags do not class registers the
+      # way DXC's -fvk-*-shift do (structured buffers shift as SSBOs whatever
+      # their register), so HLSL sources spell [[vk::binding(PENUMBRA_U(n))]]
+      # next to register(un).
+      set(lang_flags --target-env vulkan1.1 -D -S comp -e main)
     endif()
     add_custom_command(
       OUTPUT ${header}

@@ -43,6 +43,17 @@ StageAccess stageAccess(rhi::ResourceState state) {
   return {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT};
 }
 
+// Shader access uses GENERAL (storage images need it); copies use the
+// transfer-optimal layouts.
+VkImageLayout imageLayout(rhi::ResourceState state) {
+  switch (state) {
+    case rhi::ResourceState::Undefined: return VK_IMAGE_LAYOUT_UNDEFINED;
+    case rhi::ResourceState::CopySource: return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    case rhi::ResourceState::CopyDest: return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    default: return VK_IMAGE_LAYOUT_GENERAL;
+  }
+}
+
 bool isWriteState(rhi::ResourceState s) {
   return s == rhi::ResourceState::UnorderedAccess || s == rhi::ResourceState::CopyDest ||
          s == rhi::ResourceState::AccelStructWrite;
@@ -148,10 +159,8 @@ void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceSta
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = from.access;
   barrier.dstAccessMask = to.access;
-  // Textures live in GENERAL (valid for storage, copies and sampling) once used.
-  barrier.oldLayout = texture->state == rhi::ResourceState::Undefined ? VK_IMAGE_LAYOUT_UNDEFINED
-                                                                      : VK_IMAGE_LAYOUT_GENERAL;
-  barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+  barrier.oldLayout = imageLayout(texture->state);
+  barrier.newLayout = imageLayout(state);
   barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = t->image();
   barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
@@ -202,7 +211,8 @@ void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* ds
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {d.width, d.height, 1};
   vkCmdCopyImageToBuffer(commandBuffer_, static_cast<VulkanTexture*>(src)->image(),
-                         VK_IMAGE_LAYOUT_GENERAL, static_cast<VulkanBuffer*>(dst)->handle(), 1, &region);
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, static_cast<VulkanBuffer*>(dst)->handle(),
+                         1, &region);
   if (dst->desc().memory == rhi::MemoryLocation::Readback)
     setBufferState(dst, rhi::ResourceState::HostRead);
 }
@@ -217,7 +227,7 @@ void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float
   color.float32[3] = a;
   VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   vkCmdClearColorImage(commandBuffer_, static_cast<VulkanTexture*>(texture)->image(),
-                       VK_IMAGE_LAYOUT_GENERAL, &color, 1, &range);
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &color, 1, &range);
 }
 
 void VulkanCommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {

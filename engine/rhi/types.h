@@ -51,8 +51,8 @@ constexpr bool hasFlag(TextureUsage set, TextureUsage flag) { return (uint32_t(s
 // How a resource is about to be used. Command lists move resources between
 // states explicitly (ICommandList::setBufferState and friends).
 // D3D12: D3D12_RESOURCE_STATES transitions, UAV barriers for UAV->UAV.
-// Vulkan: pipeline barriers with the stage/access masks of each state; images
-// stay in VK_IMAGE_LAYOUT_GENERAL after their first use.
+// Vulkan: pipeline barriers with the stage/access masks of each state; image
+// layouts GENERAL for shader access, TRANSFER_SRC/DST_OPTIMAL for copies.
 enum class ResourceState : uint8_t {
   Undefined,
   ShaderResource,        // read in shaders

@@ -16,7 +16,8 @@ struct FurnacePush {
   float4 sphere;  // x albedo, y emitted radiance, z radius
 };
 [[vk::push_constant]] ConstantBuffer<FurnacePush> gPush;
-RWStructuredBuffer<float4> gOutput : register(u0);
+// register(u0) for DXIL; the same binding spelled for the SPIR-V build.
+[[vk::binding(PENUMBRA_U(0), 0)]] RWStructuredBuffer<float4> gOutput : register(u0);
 
 // Rays start inside the sphere (centred at the origin), so the hit is the far root.
 SurfaceHit traceClosest(float3 origin, float3 direction) {

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Bad input to `penumbra`: one line on stderr saying what and where, a
+# non-zero exit, no crash, no output file left behind.
+set -u
+penumbra="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+expect_error() {  # expect_error "description" "stderr pattern" args...
+  local what="$1" pattern="$2"
+  shift 2
+  "$penumbra" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  local lines
+  lines=$(grep -c . "$work/stderr")
+  if [ "$rc" -eq 0 ] || [ "$rc" -ge 128 ]; then
+    echo "FAIL $what: exit code $rc (want 1..127)"; failures=$((failures + 1))
+  elif [ "$lines" -ne 1 ]; then
+    echo "FAIL $what: $lines lines on stderr (want 1):"; cat "$work/stderr"; failures=$((failures + 1))
+  elif ! grep -q -- "$pattern" "$work/stderr"; then
+    echo "FAIL $what: stderr lacks '$pattern':"; cat "$work/stderr"; failures=$((failures + 1))
+  else
+    echo "ok   $what: $(cat "$work/stderr")"
+  fi
+  if ls "$work"/out* >/dev/null 2>&1; then
+    echo "FAIL $what: left an output file behind: $(ls "$work"/out*)"; failures=$((failures + 1))
+    rm -f "$work"/out*
+  fi
+}
+
+expect_error "unknown flag" "--bogus" render --bogus --out "$work/out.png"
+expect_error "unknown scene" "no-such-scene" render --scene no-such-scene --out "$work/out.png"
+echo '{ "format": "penumbra-scene", ' >"$work/broken.json"
+expect_error "malformed scene file" "broken.json" render --scene "$work/broken.json" --out "$work/out.png"
+expect_error "unwritable output directory" "does not exist" render --size 8x8 --spp 1 --out "$work/missing/out.png"
+expect_error "unknown output type" "unknown image type" render --size 8x8 --spp 1 --out "$work/out.bmp"
+expect_error "bad size" "--size" render --size 12 --out "$work/out.png"
+expect_error "d3d12 on Linux" "Windows builds only" render --backend d3d12 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "device index out of range" "does not exist" render --device 99 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "unknown subcommand" "subcommand" bogus
+# A machine without a Vulkan driver: point the loader at an empty driver list.
+VK_DRIVER_FILES="$work/none.json" VK_ICD_FILENAMES="$work/none.json" \
+  expect_error "no device with ray tracing" "no Vulkan driver" render --size 8x8 --spp 1 --out "$work/out.png"
+
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "all bad-input cases handled"

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The main job end to end: render the default scene to PNG and EXR through the
+# CLI with validation on, and check what it prints and writes.
+set -eu
+penumbra="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$penumbra" render --size 48x32 --spp 4 --seed 3 --validation --out "$work/cornell.png" | tee "$work/log"
+grep -q "^device: " "$work/log"
+grep -q "48x32, 4 spp" "$work/log"
+grep -qE "^rays: [1-9][0-9]* \([0-9.]+ Mrays/s\)" "$work/log"
+grep -qE "^GPU time: [0-9.]+ ms" "$work/log"
+# A PNG of the right size (IHDR width/height at bytes 16..23).
+[ "$(head -c 8 "$work/cornell.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]
+[ "$(od -An -tu1 -j16 -N8 "$work/cornell.png" | tr -s ' ')" = " 0 0 0 48 0 0 0 32" ]
+"$penumbra" render --size 48x32 --spp 4 --seed 3 --validation --out "$work/cornell.exr" >/dev/null
+[ "$(head -c 4 "$work/cornell.exr" | od -An -tx1 | tr -d ' \n')" = "762f3101" ]
+"$penumbra" devices | grep -q "ray tracing pipeline: yes"
+"$penumbra" render --help | grep -q -- "--spp"
+echo "render CLI ok"

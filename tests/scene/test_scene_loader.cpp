@@ -1,0 +1,80 @@
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+
+#include "scene/mesh_builders.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+
+using namespace penumbra;
+using Catch::Approx;
+using Catch::Matchers::ContainsSubstring;
+
+TEST_CASE("the Cornell box matches the canonical data", "[scene]") {
+  const auto s = scene::loadScene("cornell-box");
+  REQUIRE(s.name == "cornell-box");
+  // 5 room quads + light + 2 blocks of 5 quads = 16 quads.
+  REQUIRE(s.triangleCount() == 32u);
+  REQUIRE(s.camera.position.x == Approx(0.278f));
+  REQUIRE(s.camera.position.y == Approx(0.273f));
+  REQUIRE(s.camera.position.z == Approx(-0.800f));
+  REQUIRE(s.camera.verticalFovDegrees == Approx(39.3077f));
+
+  const scene::Mesh* light = nullptr;
+  for (const auto& m : s.meshes)
+    if (m.name == "light") light = &m;
+  REQUIRE(light != nullptr);
+  const auto& lm = s.materials[light->material];
+  REQUIRE(lm.emission == glm::vec3(17, 12, 4));
+  REQUIRE(lm.albedo == glm::vec3(0.0f));
+  // Light: x in [213, 343] mm, z in [227, 332] mm, 0.1 mm below the ceiling,
+  // and its counter-clockwise face points down.
+  for (const auto& p : light->positions) {
+    REQUIRE(p.y == Approx(0.5487f));
+    REQUIRE(p.x >= 0.213f - 1e-6f);
+    REQUIRE(p.x <= 0.343f + 1e-6f);
+  }
+  for (size_t t = 0; t < light->indices.size(); t += 3) {
+    auto a = light->positions[light->indices[t]];
+    auto b = light->positions[light->indices[t + 1]];
+    auto c = light->positions[light->indices[t + 2]];
+    REQUIRE(glm::cross(b - a, c - a).y < 0.0f);
+  }
+  for (const auto& m : s.materials) {
+    if (m.name == "red") REQUIRE(m.albedo == glm::vec3(0.63f, 0.065f, 0.05f));
+    if (m.name == "green") REQUIRE(m.albedo == glm::vec3(0.14f, 0.45f, 0.091f));
+    if (m.name == "white") REQUIRE(m.albedo == glm::vec3(0.725f, 0.71f, 0.68f));
+  }
+}
+
+TEST_CASE("bad scene input gives one clear error", "[scene]") {
+  REQUIRE_THROWS_WITH(scene::loadScene("no-such-scene"),
+                      ContainsSubstring("no built-in scene") && ContainsSubstring("cornell-box"));
+  REQUIRE_THROWS_WITH(scene::parseScene("{ not json", "t.json"), ContainsSubstring("invalid JSON"));
+  REQUIRE_THROWS_WITH(scene::parseScene(R"({"format":"other"})", "t.json"),
+                      ContainsSubstring("not a penumbra scene"));
+  const char* unknownMaterial = R"({"format":"penumbra-scene","version":1,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
+    "materials":{"white":{"albedo":[0.5,0.5,0.5]}},
+    "meshes":[{"name":"q","material":"blue","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+  REQUIRE_THROWS_WITH(scene::parseScene(unknownMaterial, "t.json"),
+                      ContainsSubstring("mesh 'q'") && ContainsSubstring("unknown material 'blue'"));
+  const char* badAlbedo = R"({"format":"penumbra-scene","version":1,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
+    "materials":{"white":{"albedo":[1.5,0.5,0.5]}},
+    "meshes":[{"name":"q","material":"white","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+  REQUIRE_THROWS_WITH(scene::parseScene(badAlbedo, "t.json"), ContainsSubstring("albedo"));
+}
+
+TEST_CASE("the furnace sphere is closed and faces inwards", "[scene]") {
+  auto mesh = scene::makeIcosphere(2, 2.0f, true, 0);
+  REQUIRE(mesh.triangleCount() == 20u * 16u);
+  for (const auto& p : mesh.positions) REQUIRE(glm::length(p) == Approx(2.0f));
+  for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+    auto a = mesh.positions[mesh.indices[t]];
+    auto b = mesh.positions[mesh.indices[t + 1]];
+    auto c = mesh.positions[mesh.indices[t + 2]];
+    // The counter-clockwise normal points towards the centre.
+    REQUIRE(glm::dot(glm::cross(b - a, c - a), a + b + c) < 0.0f);
+  }
+}
