@@ -8,4 +8,5 @@ namespace penumbra::app {
 using Command = std::function<int()>;
 Command addRenderCommand(CLI::App& app);
 Command addDevicesCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
 }  // namespace penumbra::app

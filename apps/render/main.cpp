@@ -1,4 +1,4 @@
-// `penumbra`: the headless renderer (render, devices).
+// `penumbra`: the headless renderer (render, devices, compare).
 #include <cstdio>
 #include <map>
 
@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   };
   add(&app::addRenderCommand);
   add(&app::addDevicesCommand);
+  add(&app::addCompareCommand);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -58,6 +58,7 @@ int runRender(const RenderOptions& o) {
              adapter.apiVersion, device->backendName());
   fmt::print("scene: {} ({} triangles), {}x{}, {} spp, seed {}\n", scene.name, scene.triangleCount(),
              width, height, o.spp, o.seed);
+  std::fflush(stdout);  // before the progress lines on stderr
 
   render::PathTracer tracer(*device, scene, width, height);
   render::PathTracerSettings settings;
@@ -85,8 +86,8 @@ int runRender(const RenderOptions& o) {
     render::Tonemapper tonemapper(*device);
     image::savePng(o.out, tonemapper.run(tracer.accumulation(), o.exposure));
   }
-  fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel\n", gpuSeconds * 1e3,
-             gpuSeconds * 1e3 / o.spp);
+  fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
+             gpuSeconds * 1e3, gpuSeconds * 1e3 / o.spp);
   fmt::print("rays: {} ({:.2f} Mrays/s)\n", rays, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0);
   fmt::print("wrote {}\n", o.out);
   if (o.validation && device->validationMessageCount() > 0) {
