@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <regex>
 
 #include "backend_factory.h"
@@ -25,8 +26,10 @@ struct RenderOptions {
   int device = -1;
   uint32_t seed = 0;
   uint32_t maxDepth = 8;
-  bool noNee = false;
-  bool noMis = false;
+  render::Integrator integrator = render::Integrator::Path;
+  render::SamplingStrategy strategy = render::SamplingStrategy::Mis;
+  render::MisHeuristic heuristic = render::MisHeuristic::Power;
+  float clamp = 0.0f;
   bool noRoulette = false;
   bool validation = false;
   float exposure = 1.0f;
@@ -64,8 +67,10 @@ int runRender(const RenderOptions& o) {
   render::PathTracerSettings settings;
   settings.seed = o.seed;
   settings.maxDepth = o.maxDepth;
-  settings.nextEventEstimation = !o.noNee;
-  settings.multipleImportanceSampling = !o.noMis;
+  settings.integrator = o.integrator;
+  settings.strategy = o.strategy;
+  settings.misHeuristic = o.heuristic;
+  settings.radianceClamp = o.clamp;
   settings.russianRoulette = !o.noRoulette;
 
   Progress progress(o.spp);
@@ -113,8 +118,23 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--device", o->device, "Device index from 'penumbra devices' (default: best with ray tracing)");
   cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
   cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")->check(CLI::Range(0u, 1024u))->capture_default_str();
-  cmd->add_flag("--no-nee", o->noNee, "Disable next-event estimation (BSDF sampling only)");
-  cmd->add_flag("--no-mis", o->noMis, "Disable multiple importance sampling (NEE only for lights)");
+  const std::map<std::string, render::Integrator> integrators{{"path", render::Integrator::Path},
+                                                              {"whitted", render::Integrator::Whitted}};
+  cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
+      ->transform(CLI::CheckedTransformer(integrators))->default_str("path");
+  const std::map<std::string, render::SamplingStrategy> strategies{
+      {"uniform", render::SamplingStrategy::Uniform}, {"cosine", render::SamplingStrategy::Cosine},
+      {"bsdf", render::SamplingStrategy::Bsdf}, {"nee", render::SamplingStrategy::Nee},
+      {"mis", render::SamplingStrategy::Mis}};
+  cmd->add_option("--strategy", o->strategy,
+                  "Path sampling: uniform | cosine | bsdf (no light sampling) | nee | mis")
+      ->transform(CLI::CheckedTransformer(strategies))->default_str("mis");
+  const std::map<std::string, render::MisHeuristic> heuristics{
+      {"power", render::MisHeuristic::Power}, {"balance", render::MisHeuristic::Balance}};
+  cmd->add_option("--mis-heuristic", o->heuristic, "MIS weights: power | balance")
+      ->transform(CLI::CheckedTransformer(heuristics))->default_str("power");
+  cmd->add_option("--clamp", o->clamp, "Clamp each sample's radiance to this value (0 = off)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")->capture_default_str();
   cmd->add_flag("--validation", o->validation, "Enable the API validation layer; fail on any message");

@@ -43,10 +43,35 @@ rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& 
   return device.createBuffer(desc);
 }
 
+gpu::MaterialData packMaterial(const scene::Material& m) {
+  gpu::MaterialData d;
+  d.baseColor = toFloat4(m.baseColor);
+  d.emission = toFloat4(m.emission);
+  d.disney0 = {m.metallic, m.roughness, m.anisotropic, m.specular};
+  d.disney1 = {m.specularTint, m.sheen, m.sheenTint, m.clearcoat};
+  d.disney2 = {m.clearcoatGloss, m.specTrans, m.ior, m.subsurface};
+  d.phong = {m.ks, m.exponent, m.reflectivity, m.transparency};
+  uint32_t flags = 0;
+  if (m.thin) flags |= MATERIAL_FLAG_THIN;
+  if (m.model == scene::MaterialModel::Lambert) flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;
+  d.flags = {m.model == scene::MaterialModel::Phong ? MATERIAL_MODEL_PHONG : MATERIAL_MODEL_DISNEY,
+             flags, 0, 0};
+  return d;
+}
+
+gpu::PointLight packPointLight(const scene::PointLight& l) {
+  gpu::PointLight p;
+  const bool spot = l.outerConeDegrees < 180.0f;
+  p.position = toFloat4(l.position, std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
+  p.intensity = toFloat4(l.intensity);
+  p.spot = toFloat4(glm::normalize(l.direction), spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
+  return p;
+}
+
 }  // namespace
 
 struct PathTracer::SceneBuffers {
-  rhi::BufferHandle vertices, indices, instances, materials, emissive;
+  rhi::BufferHandle vertices, indices, instances, materials, emissive, pointLights;
   std::vector<rhi::rt::AccelStructHandle> bottomLevels;
   rhi::rt::AccelStructHandle topLevel;
 };
@@ -96,8 +121,11 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   }
 
   std::vector<gpu::MaterialData> materials;
-  for (const auto& m : scene.materials)
-    materials.push_back({toFloat4(m.albedo), toFloat4(m.emission)});
+  for (const auto& m : scene.materials) materials.push_back(packMaterial(m));
+  std::vector<gpu::PointLight> pointLights;
+  for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l));
+  pointLightCount_ = uint32_t(pointLights.size());
+  ambient_ = scene.ambient;
 
   // Emitters: world-space triangles of every instance of an emissive mesh,
   // chosen for NEE in proportion to power (area x luminance).
@@ -155,6 +183,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   s.instances = makeStorageBuffer(device_, instances, BufferUsage::None, "instances");
   s.materials = makeStorageBuffer(device_, materials, BufferUsage::None, "materials");
   s.emissive = makeStorageBuffer(device_, emissive, BufferUsage::None, "emissive triangles");
+  s.pointLights = makeStorageBuffer(device_, pointLights, BufferUsage::None, "point lights");
 
   auto* cmd = commandList_.get();
   cmd->open();
@@ -164,6 +193,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   cmd->writeBuffer(s.materials.get(), materials.data(), materials.size() * sizeof(gpu::MaterialData));
   if (!emissive.empty())
     cmd->writeBuffer(s.emissive.get(), emissive.data(), emissive.size() * sizeof(gpu::EmissiveTriangle));
+  if (!pointLights.empty())
+    cmd->writeBuffer(s.pointLights.get(), pointLights.data(), pointLights.size() * sizeof(gpu::PointLight));
 
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     rhi::rt::AccelStructDesc blas;
@@ -210,6 +241,7 @@ void PathTracer::createPipeline() {
   rhi::RayTracingPipelineDesc desc;
   desc.debugName = "path tracer";
   desc.shaders = {shader(ShaderStage::RayGeneration, "path_trace.rgen"),
+                  shader(ShaderStage::RayGeneration, "whitted.rgen"),
                   shader(ShaderStage::Miss, "path_trace.rmiss"),
                   shader(ShaderStage::Miss, "shadow.rmiss"),
                   shader(ShaderStage::ClosestHit, "triangle.rchit")};
@@ -218,11 +250,17 @@ void PathTracer::createPipeline() {
   desc.maxRecursionDepth = 1; // only the ray generation shader traces
   pipeline_ = device_.createRayTracingPipeline(desc);
 
-  shaderTable_ = pipeline_->createShaderTable("path tracer shader table");
-  shaderTable_->setRayGenerationShader("path_trace.rgen");
-  shaderTable_->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
-  shaderTable_->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
-  shaderTable_->addHitGroup("triangles");
+  // One table per integrator; they differ in the ray generation record only.
+  auto makeTable = [&](const char* rayGen) {
+    auto table = pipeline_->createShaderTable(std::string(rayGen) + " shader table");
+    table->setRayGenerationShader(rayGen);
+    table->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
+    table->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
+    table->addHitGroup("triangles");
+    return table;
+  };
+  pathTable_ = makeTable("path_trace.rgen");
+  whittedTable_ = makeTable("whitted.rgen");
 
   using Item = rhi::BindingSetItem;
   rhi::BindingSetDesc set;
@@ -233,12 +271,30 @@ void PathTracer::createPipeline() {
                Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
                Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
                Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
+               Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
                Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
                Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
   bindings_ = device_.createBindingSet(set, *pipeline_);
 }
 
+uint32_t frameFlags(const PathTracerSettings& s) {
+  uint32_t flags = 0;
+  uint32_t directions = PT_DIRECTIONS_BSDF;
+  switch (s.strategy) {
+    case SamplingStrategy::Uniform: directions = PT_DIRECTIONS_UNIFORM; break;
+    case SamplingStrategy::Cosine: directions = PT_DIRECTIONS_COSINE; break;
+    case SamplingStrategy::Bsdf: break;
+    case SamplingStrategy::Nee: flags |= PT_FLAG_NEE; break;
+    case SamplingStrategy::Mis: flags |= PT_FLAG_NEE | PT_FLAG_MIS; break;
+  }
+  if (s.misHeuristic == MisHeuristic::Balance) flags |= PT_FLAG_BALANCE_HEURISTIC;
+  if (s.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
+  return flags | (directions << PT_DIRECTIONS_SHIFT);
+}
+
 FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t samples) {
+  if (!(settings.radianceClamp >= 0.0f))
+    throw Error("path tracer: the radiance clamp must be >= 0 (0 = off)");
   if (samples < 1 || samples > kMaxSamplesPerFrame)
     throw Error(fmt::format("path tracer: {} samples per frame is outside 1..{}", samples,
                             kMaxSamplesPerFrame));
@@ -251,17 +307,15 @@ FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t 
   c.cameraUp = toFloat4(up);
   c.cameraForward = toFloat4(forward);
   c.image = {width_, height_, samples, accumulatedSamples_};
-  uint32_t flags = 0;
-  if (settings.nextEventEstimation) flags |= PT_FLAG_NEE;
-  if (settings.multipleImportanceSampling) flags |= PT_FLAG_MIS;
-  if (settings.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
-  c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth, flags};
-  c.lights = {emissiveTriangleCount_, 0, 0, 0};
+  c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth, frameFlags(settings)};
+  c.lights = {emissiveTriangleCount_, pointLightCount_, 0, 0};
+  c.shading = toFloat4(ambient_, settings.radianceClamp);
 
   auto* cmd = commandList_.get();
   cmd->open();
   cmd->clearBufferUint(rayCounter_.get(), 0);
-  cmd->setRayTracingState({pipeline_.get(), shaderTable_.get(), {bindings_.get()}});
+  auto* table = settings.integrator == Integrator::Whitted ? whittedTable_.get() : pathTable_.get();
+  cmd->setRayTracingState({pipeline_.get(), table, {bindings_.get()}});
   cmd->setPushConstants(&c, sizeof(c));
   cmd->beginTimerQuery(timer_.get());
   cmd->dispatchRays(width_, height_);

@@ -3,6 +3,7 @@
 // TLAS instance per scene instance), builds the ray-tracing pipeline of the
 // shading core, and accumulates frames of 1-16 samples per pixel into a
 // linear HDR running mean.
+#include <glm/glm.hpp>
 #include <memory>
 
 #include "image/image.h"
@@ -11,12 +12,27 @@
 
 namespace penumbra::render {
 
+enum class Integrator { Path, Whitted };
+
+// How the path tracer finds light (for study and comparison; `Mis` is the
+// production choice).
+enum class SamplingStrategy {
+  Uniform,  // directions uniform over the sphere, lights found by chance
+  Cosine,   // cosine-weighted directions, lights found by chance
+  Bsdf,     // BSDF importance sampling, lights found by chance
+  Nee,      // BSDF sampling for indirect light, next-event estimation for direct light
+  Mis,      // NEE and BSDF sampling combined by multiple importance sampling
+};
+enum class MisHeuristic { Power, Balance };
+
 struct PathTracerSettings {
-  uint32_t maxDepth = 8;             // bounces after the camera ray
-  uint32_t rouletteStartDepth = 3;   // Russian roulette from this bounce on
-  bool nextEventEstimation = true;   // sample emissive triangles at every vertex
-  bool multipleImportanceSampling = true;  // power heuristic between NEE and BSDF sampling
+  Integrator integrator = Integrator::Path;
+  SamplingStrategy strategy = SamplingStrategy::Mis;
+  MisHeuristic misHeuristic = MisHeuristic::Power;
+  uint32_t maxDepth = 8;            // bounces after the camera ray (Whitted: recursion depth)
+  uint32_t rouletteStartDepth = 3;  // Russian roulette from this bounce on
   bool russianRoulette = true;
+  float radianceClamp = 0.0f;       // largest channel of one sample's contribution; 0 = off
   uint32_t seed = 0;
 };
 
@@ -25,6 +41,9 @@ struct FrameStats {
   uint64_t rays = 0;      // every traced ray (camera, bounce, shadow), counted on the GPU
   uint32_t samples = 0;   // samples per pixel in this frame
 };
+
+// FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
+uint32_t frameFlags(const PathTracerSettings& settings);
 
 class PathTracer {
  public:
@@ -58,11 +77,13 @@ class PathTracer {
   scene::Camera camera_;
   uint32_t accumulatedSamples_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
+  uint32_t pointLightCount_ = 0;
+  glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;
   rhi::BufferHandle rayCounter_, rayCounterReadback_;
   rhi::RayTracingPipelineHandle pipeline_;
-  rhi::ShaderTableHandle shaderTable_;
+  rhi::ShaderTableHandle pathTable_, whittedTable_;
   rhi::BindingSetHandle bindings_;
   rhi::CommandListHandle commandList_;
   rhi::TimerQueryHandle timer_;

@@ -48,11 +48,7 @@ Mesh makeIcosphere(uint32_t subdivisions, float radius, bool inwardFacing, uint3
 Scene makeFurnaceScene(float albedo, float emission, uint32_t subdivisions) {
   Scene scene;
   scene.name = "furnace";
-  Material m;
-  m.name = "furnace";
-  m.albedo = glm::vec3(albedo);
-  m.emission = glm::vec3(emission);
-  scene.materials.push_back(m);
+  scene.materials.push_back(Material::lambert("furnace", glm::vec3(albedo), glm::vec3(emission)));
   scene.meshes.push_back(makeIcosphere(subdivisions, 1.0f, true, 0));
   scene.instances.push_back({0, glm::mat4(1.0f)});
   scene.camera.position = glm::vec3(0.0f);

@@ -8,6 +8,17 @@
 
 namespace penumbra::scene {
 
+Material Material::lambert(std::string name, glm::vec3 albedo, glm::vec3 emission) {
+  Material m;
+  m.name = std::move(name);
+  m.model = MaterialModel::Lambert;
+  m.baseColor = albedo;
+  m.emission = emission;
+  m.specular = 0.0f;
+  m.roughness = 1.0f;
+  return m;
+}
+
 uint64_t Scene::triangleCount() const {
   uint64_t n = 0;
   for (const auto& inst : instances) n += meshes.at(inst.mesh).triangleCount();
@@ -33,6 +44,20 @@ void validate(const Scene& scene) {
     for (const auto& p : mesh.positions)
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         fail(fmt::format("mesh '{}' has a non-finite vertex position", mesh.name));
+  }
+  for (const auto& m : scene.materials) {
+    auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
+    for (int i = 0; i < 3; ++i)
+      if (!unit(m.baseColor[i]) || !(m.emission[i] >= 0.0f))
+        fail(fmt::format("material '{}': baseColor must lie in [0, 1] and emission be non-negative",
+                         m.name));
+    for (float v : {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen,
+                    m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface,
+                    m.reflectivity, m.transparency})
+      if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
+    if (!(m.ior >= 1.0f && m.ior <= 4.0f))
+      fail(fmt::format("material '{}': ior {} is outside [1, 4]", m.name, m.ior));
+    if (!(m.exponent >= 0.0f)) fail(fmt::format("material '{}': negative Phong exponent", m.name));
   }
   for (const auto& inst : scene.instances)
     if (inst.mesh >= scene.meshes.size())

@@ -7,11 +7,51 @@
 
 namespace penumbra::scene {
 
+// Which shading model a material uses (docs/materials.md).
+enum class MaterialModel {
+  Disney,   // the principled BSDF with Burley diffuse
+  Lambert,  // Disney parameters, but Lambertian diffuse (glTF, the Cornell box)
+  Phong,    // Whitted's Phong model; the path tracer maps it onto Disney
+};
+
 struct Material {
   std::string name;
-  glm::vec3 albedo{0.8f};    // Lambertian reflectance
+  MaterialModel model = MaterialModel::Disney;
+  glm::vec3 baseColor{0.8f};
   glm::vec3 emission{0.0f};  // radiance from the counter-clockwise face
+  // Disney (Burley 2012/2015).
+  float metallic = 0.0f;
+  float roughness = 0.5f;
+  float anisotropic = 0.0f;
+  float specular = 0.5f;
+  float specularTint = 0.0f;
+  float sheen = 0.0f;
+  float sheenTint = 0.5f;
+  float clearcoat = 0.0f;
+  float clearcoatGloss = 1.0f;
+  float specTrans = 0.0f;
+  float ior = 1.5f;
+  float subsurface = 0.0f;
+  bool thin = false;
+  // Phong (Whitted): kd = baseColor.
+  float ks = 0.0f;
+  float exponent = 32.0f;
+  float reflectivity = 0.0f;
+  float transparency = 0.0f;
+
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
+  // A Lambertian surface of the given reflectance (no specular layer).
+  static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));
+};
+
+// A delta light for NEE and Whitted: a point light, or a spot light when
+// outerConeDegrees < 180.
+struct PointLight {
+  glm::vec3 position{0.0f};
+  glm::vec3 intensity{1.0f};  // radiant intensity, W/sr per channel
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};
+  float innerConeDegrees = 180.0f;
+  float outerConeDegrees = 180.0f;
 };
 
 struct Mesh {
@@ -39,6 +79,8 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
+  std::vector<PointLight> pointLights;
+  glm::vec3 ambient{0.0f};  // Whitted's ambient term
   Camera camera;
   uint64_t triangleCount() const;
 };

@@ -33,6 +33,47 @@ const json& require(const json& object, const char* key, const std::string& wher
   return object.at(key);
 }
 
+float readFloat(const json& m, const char* key, float fallback, const std::string& where) {
+  if (!m.contains(key)) return fallback;
+  if (!m.at(key).is_number()) throw Error(fmt::format("{}: \"{}\" is not a number", where, key));
+  return m.at(key).get<float>();
+}
+
+Material parseMaterial(const json& m, const std::string& name, const std::string& where) {
+  if (!m.is_object()) throw Error(where + ": must be an object");
+  const std::string model = m.value("model", "disney");
+  Material material;
+  if (model == "lambert") {
+    material = Material::lambert(name, glm::vec3(0.8f));
+  } else if (model == "phong") {
+    material.model = MaterialModel::Phong;
+  } else if (model != "disney") {
+    throw Error(fmt::format("{}: unknown model '{}' (disney, lambert, phong)", where, model));
+  }
+  material.name = name;
+  if (m.contains("baseColor")) material.baseColor = readVec3(m.at("baseColor"), where + " baseColor");
+  if (m.contains("albedo")) material.baseColor = readVec3(m.at("albedo"), where + " albedo");
+  if (m.contains("emission")) material.emission = readVec3(m.at("emission"), where + " emission");
+  material.metallic = readFloat(m, "metallic", material.metallic, where);
+  material.roughness = readFloat(m, "roughness", material.roughness, where);
+  material.anisotropic = readFloat(m, "anisotropic", material.anisotropic, where);
+  material.specular = readFloat(m, "specular", material.specular, where);
+  material.specularTint = readFloat(m, "specularTint", material.specularTint, where);
+  material.sheen = readFloat(m, "sheen", material.sheen, where);
+  material.sheenTint = readFloat(m, "sheenTint", material.sheenTint, where);
+  material.clearcoat = readFloat(m, "clearcoat", material.clearcoat, where);
+  material.clearcoatGloss = readFloat(m, "clearcoatGloss", material.clearcoatGloss, where);
+  material.specTrans = readFloat(m, "specTrans", material.specTrans, where);
+  material.ior = readFloat(m, "ior", material.ior, where);
+  material.subsurface = readFloat(m, "subsurface", material.subsurface, where);
+  material.thin = m.value("thin", false);
+  material.ks = readFloat(m, "ks", material.ks, where);
+  material.exponent = readFloat(m, "exponent", material.exponent, where);
+  material.reflectivity = readFloat(m, "reflectivity", material.reflectivity, where);
+  material.transparency = readFloat(m, "transparency", material.transparency, where);
+  return material;
+}
+
 }  // namespace
 
 Scene parseScene(std::string_view text, const std::string& source) {
@@ -63,17 +104,30 @@ Scene parseScene(std::string_view text, const std::string& source) {
   const json& materials = require(doc, "materials", at);
   if (!materials.is_object()) throw Error(at + ": \"materials\" must be an object");
   for (const auto& [name, m] : materials.items()) {
-    Material material;
-    material.name = name;
-    const std::string where = at + " material '" + name + "'";
-    if (m.contains("albedo")) material.albedo = readVec3(m.at("albedo"), where + " albedo");
-    if (m.contains("emission")) material.emission = readVec3(m.at("emission"), where + " emission");
-    for (int i = 0; i < 3; ++i)
-      if (material.albedo[i] < 0.0f || material.albedo[i] > 1.0f || material.emission[i] < 0.0f)
-        throw Error(where + ": albedo must lie in [0, 1] and emission be non-negative");
-    materialIndex[name] = uint32_t(scene.materials.size());
-    scene.materials.push_back(material);
+    scene.materials.push_back(parseMaterial(m, name, at + " material '" + name + "'"));
+    materialIndex[name] = uint32_t(scene.materials.size() - 1);
   }
+
+  if (doc.contains("lights")) {
+    const json& lights = doc.at("lights");
+    if (!lights.is_array()) throw Error(at + ": \"lights\" must be an array");
+    for (const auto& l : lights) {
+      const std::string where = at + " light";
+      const std::string type = require(l, "type", where).get<std::string>();
+      if (type != "point" && type != "spot")
+        throw Error(fmt::format("{}: unknown light type '{}' (point, spot)", where, type));
+      PointLight light;
+      light.position = readVec3(require(l, "position", where), where + " position") * scale;
+      light.intensity = readVec3(require(l, "intensity", where), where + " intensity");
+      if (type == "spot") {
+        light.direction = glm::normalize(readVec3(require(l, "direction", where), where + " direction"));
+        light.outerConeDegrees = require(l, "outerConeDegrees", where).get<float>();
+        light.innerConeDegrees = l.value("innerConeDegrees", light.outerConeDegrees);
+      }
+      scene.pointLights.push_back(light);
+    }
+  }
+  if (doc.contains("ambient")) scene.ambient = readVec3(doc.at("ambient"), at + " ambient");
 
   const json& meshes = require(doc, "meshes", at);
   if (!meshes.is_array()) throw Error(at + ": \"meshes\" must be an array");

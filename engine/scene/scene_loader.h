@@ -7,7 +7,16 @@
 //     "unitScale": 0.001,                        // file units -> metres
 //     "camera": { "position": [x,y,z], "forward": [x,y,z], "up": [x,y,z],
 //                 "verticalFovDegrees": 39.3077 },
-//     "materials": { "white": { "albedo": [r,g,b], "emission": [r,g,b] }, ... },
+//     "materials": { "white": { "model": "lambert", "albedo": [r,g,b],
+//                               "emission": [r,g,b] }, ... },
+//       model "disney" (default): baseColor, metallic, roughness, anisotropic,
+//         specular, specularTint, sheen, sheenTint, clearcoat, clearcoatGloss,
+//         specTrans, ior, subsurface, thin; "lambert": albedo (= baseColor);
+//       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior
+//     "lights": [ { "type": "point", "position": [..], "intensity": [..] },
+//                 { "type": "spot", ..., "direction": [..], "outerConeDegrees": 30,
+//                   "innerConeDegrees": 25 } ],          // optional
+//     "ambient": [r,g,b],                               // optional, Whitted
 //     "meshes": [ { "name": "floor", "material": "white",
 //                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ] }
 // Each quad is split into two counter-clockwise triangles (v0 v1 v2, v0 v2 v3);

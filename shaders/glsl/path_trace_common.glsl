@@ -19,9 +19,13 @@ layout(set = 0, binding = PT_SLOT_MATERIALS, std430) readonly buffer Materials {
 layout(set = 0, binding = PT_SLOT_EMISSIVE_TRIANGLES, std430) readonly buffer Emissive {
   EmissiveTriangle gEmissiveTriangles[];
 };
+layout(set = 0, binding = PT_SLOT_POINT_LIGHTS, std430) readonly buffer PointLights {
+  PointLight gPointLights[];
+};
 layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
 layout(set = 0, binding = PT_SLOT_RAY_COUNTER, std430) buffer RayCounter { uint gRayCount; };
 
 InstanceData loadInstanceData(uint index) { return gInstances[index]; }
 MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
+PointLight loadPointLight(uint index) { return gPointLights[index]; }

@@ -11,17 +11,19 @@
 #include "math.hlsli"
 #include "surface_hit.hlsli"
 
-struct FurnacePush {
+// Wrapped: glslang cannot copy a ConstantBuffer<FrameConstants> into a FrameConstants.
+struct FramePush {
   FrameConstants frame;
-  float4 sphere;  // x albedo, y emitted radiance, z radius
 };
-[[vk::push_constant]] ConstantBuffer<FurnacePush> gPush;
-// register(u0) for DXIL; the same binding spelled for the SPIR-V build.
+[[vk::push_constant]] ConstantBuffer<FramePush> gPush;
+// register(t0)/(u0) for DXIL; the same bindings spelled for the SPIR-V build.
+// gSphere[0]: x albedo, y emitted radiance, z radius.
+[[vk::binding(PENUMBRA_T(0), 0)]] StructuredBuffer<float4> gSphere : register(t0);
 [[vk::binding(PENUMBRA_U(0), 0)]] RWStructuredBuffer<float4> gOutput : register(u0);
 
 // Rays start inside the sphere (centred at the origin), so the hit is the far root.
 SurfaceHit traceClosest(float3 origin, float3 direction) {
-  float radius = gPush.sphere.z;
+  float radius = gSphere[0].z;
   float b = dot(origin, direction);
   float c = dot(origin, origin) - radius * radius;
   float disc = b * b - c;
@@ -47,11 +49,28 @@ InstanceData loadInstanceData(uint index) {
   return m;
 }
 
+// A Lambertian surface: Disney with Lambert diffuse and no specular layer.
 MaterialData loadMaterial(uint index) {
+  float albedo = gSphere[0].x;
+  float emission = gSphere[0].y;
   MaterialData m;
-  m.albedo = float4(gPush.sphere.x, gPush.sphere.x, gPush.sphere.x, 0.0);
-  m.emission = float4(gPush.sphere.y, gPush.sphere.y, gPush.sphere.y, 0.0);
+  m.baseColor = float4(albedo, albedo, albedo, 0.0);
+  m.emission = float4(emission, emission, emission, 0.0);
+  m.disney0 = float4(0.0, 1.0, 0.0, 0.0);  // metallic, roughness, anisotropic, specular
+  m.disney1 = float4(0.0, 0.0, 0.0, 0.0);
+  m.disney2 = float4(0.0, 0.0, 1.5, 0.0);  // clearcoatGloss, specTrans, ior, subsurface
+  m.phong = float4(0.0, 0.0, 0.0, 0.0);
+  m.flags = uint4(MATERIAL_MODEL_DISNEY, MATERIAL_FLAG_LAMBERT_DIFFUSE, 0u, 0u);
   return m;
+}
+
+// No point lights in this harness (lights.y = 0).
+PointLight loadPointLight(uint index) {
+  PointLight p;
+  p.position = float4(0.0, 0.0, 0.0, 1.0);
+  p.intensity = float4(0.0, 0.0, 0.0, 0.0);
+  p.spot = float4(0.0, 0.0, 1.0, -2.0);
+  return p;
 }
 
 // No triangle lights in this harness (lights.x = 0 keeps NEE from calling it).

@@ -39,6 +39,25 @@ float emissiveTrianglePdfArea(uint index) {
   return tri.p0.w / tri.p1.w;
 }
 
+// Radiance-scaled irradiance factor of a point or spot light at `position`:
+// intensity / distance^2 times the spot's smoothstep falloff between its inner
+// and outer cone. `toLight` returns the unit direction, `distance` the range.
+float3 pointLightIncident(PointLight light, float3 position, out float3 toLight, out float distance) {
+  float3 d = light.position.xyz - position;
+  distance = length(d);
+  toLight = distance > 0.0 ? d / distance : float3(0.0, 0.0, 1.0);
+  if (distance <= 0.0) return zero3();
+  float falloff = 1.0;
+  float cosOuter = light.spot.w;
+  if (cosOuter > -1.5) {
+    float cosInner = light.position.w;
+    float cosAngle = dot(-toLight, light.spot.xyz);
+    falloff = cosInner > cosOuter ? smoothstep(cosOuter, cosInner, cosAngle)
+                                  : (cosAngle >= cosOuter ? 1.0 : 0.0);
+  }
+  return light.intensity.xyz * (falloff / (distance * distance));
+}
+
 // Converts an area density at a point seen at `distance` under `cosLight` to
 // a solid-angle density at the receiver.
 float areaToSolidAnglePdf(float pdfArea, float distance, float cosLight) {

@@ -1,7 +1,9 @@
-// Unidirectional path tracing (Kajiya 1986) for Lambertian surfaces with
-// emissive triangles: cosine-weighted BSDF sampling, next-event estimation,
-// multiple importance sampling with the power heuristic (Veach 1997), and
-// Russian roulette.
+// Unidirectional path tracing (Kajiya 1986) with the Disney BSDF: BSDF
+// importance sampling (or uniform / cosine direction sampling, for study),
+// next-event estimation on emissive triangles and on point/spot lights,
+// multiple importance sampling (power or balance heuristic, Veach 1997)
+// between NEE and BSDF sampling for area lights, delta lobes without MIS,
+// Russian roulette, and optional per-sample radiance clamping.
 //
 // The entry points define, before including this file:
 //   SurfaceHit traceClosest(float3 origin, float3 direction);
@@ -9,93 +11,177 @@
 //   InstanceData loadInstanceData(uint index);
 //   MaterialData loadMaterial(uint index);
 //   EmissiveTriangle loadEmissiveTriangle(uint index);
+//   PointLight loadPointLight(uint index);
 #ifndef PENUMBRA_PATH_TRACER_HLSLI
 #define PENUMBRA_PATH_TRACER_HLSLI
 #include "lights.hlsli"
+#include "material.hlsli"
 #include "ray_offset.hlsli"
 #include "rng.hlsli"
 #include "sampling.hlsli"
 #include "surface_hit.hlsli"
 
+float misWeight(uint flags, float pdfA, float pdfB) {
+  if ((flags & PT_FLAG_BALANCE_HEURISTIC) != 0u) return pdfA + pdfB > 0.0 ? pdfA / (pdfA + pdfB) : 0.0;
+  return powerHeuristic(pdfA, pdfB);
+}
+
+// Clamps one sample's contribution to `limit` (its largest channel), keeping
+// its hue; limit 0 disables clamping.
+float3 clampContribution(float3 contribution, float limit) {
+  float peak = maxComponent(contribution);
+  return limit > 0.0 && peak > limit ? contribution * (limit / peak) : contribution;
+}
+
+float3 sampleUniformSphere(float u0, float u1) {
+  float z = 1.0 - 2.0 * u0;
+  float r = sqrt(max(0.0, 1.0 - z * z));
+  float phi = 2.0 * kPi * u1;
+  return float3(r * cos(phi), r * sin(phi), z);
+}
+
+bool isFiniteColor(float3 c) { return !any(isnan(c)) && !any(isinf(c)); }
+
+float3 frameToLocal(Frame f, float3 v) {
+  return float3(dot(v, f.tangent), dot(v, f.bitangent), dot(v, f.normal));
+}
+
 // Radiance arriving along (origin, direction).
 float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rng) {
   // Locals are not `const`: GLSL allows const only for constant expressions.
   uint flags = c.sampling.w;
-  bool useNee = (flags & PT_FLAG_NEE) != 0u && c.lights.x > 0u;
+  uint directions = (flags >> PT_DIRECTIONS_SHIFT) & 3u;
+  bool useNee = (flags & PT_FLAG_NEE) != 0u;
   bool useMis = useNee && (flags & PT_FLAG_MIS) != 0u;
   bool useRoulette = (flags & PT_FLAG_RUSSIAN_ROULETTE) != 0u;
   uint maxDepth = c.sampling.y;
+  float clampLimit = c.shading.w;
 
   float3 radiance = zero3();
   float3 throughput = splat3(1.0);
-  float previousBsdfPdf = 0.0;
+  float previousPdf = 0.0;
+  bool previousDelta = true;  // the camera ray counts as a delta "bounce"
 
   for (uint depth = 0u;; depth += 1u) {
     SurfaceHit hit = traceClosest(origin, direction);
     if (hit.hitT < 0.0) break;  // no environment light yet
     InstanceData instance = loadInstanceData(hit.instanceIndex);
-    MaterialData material = loadMaterial(instance.materialIndex);
+    MaterialData data = loadMaterial(instance.materialIndex);
 
     // Emission: one-sided, from the counter-clockwise face.
     float cosLight = -dot(direction, hit.geometricNormal);
     if (instance.firstEmissiveTriangle != PT_NO_EMISSION && cosLight > 0.0) {
-      float3 emitted = material.emission.xyz;
-      if (depth == 0u || !useNee) {
-        radiance += throughput * emitted;
+      float3 emitted = throughput * data.emission.xyz;
+      if (depth == 0u || previousDelta || !useNee || c.lights.x == 0u) {
+        radiance += clampContribution(emitted, clampLimit);
       } else if (useMis) {
         float lightPdf = areaToSolidAnglePdf(
             emissiveTrianglePdfArea(instance.firstEmissiveTriangle + hit.primitiveIndex), hit.hitT,
             cosLight);
-        radiance += throughput * emitted * powerHeuristic(previousBsdfPdf, lightPdf);
+        radiance += clampContribution(emitted * misWeight(flags, previousPdf, lightPdf), clampLimit);
       }
-      // NEE without MIS: this light was already counted by the shadow ray.
+      // NEE without MIS: this light was already counted by a shadow ray.
     }
     if (depth >= maxDepth) break;
 
-    // Surfaces are two-sided: shade on the side the ray came from.
-    float3 n = cosLight > 0.0 ? hit.geometricNormal : -hit.geometricNormal;
-    float3 albedo = material.albedo.xyz;
-    if (maxComponent(albedo) <= 0.0) break;
-    float3 spawn = offsetRayOrigin(hit.position, n);
+    DisneyMaterial material = unpackDisney(data);
+    float3 ng = hit.geometricNormal;
+    Frame frame = frameFromNormal(ng);
+    float3 wo = frameToLocal(frame, -direction);
+    if (wo.z == 0.0) break;  // exactly grazing: no side to scatter into
 
-    if (useNee) {
+    if (useNee && c.lights.x > 0u) {
       float u0 = rngNext(rng);
       float u1 = rngNext(rng);
       float u2 = rngNext(rng);
       LightSample light = sampleEmissiveTriangles(c.lights.x, u0, u1, u2);
       float3 toLight = light.position - hit.position;
       float distance = length(toLight);
-      float3 wi = toLight / distance;
-      float cosSurface = dot(n, wi);
+      float3 wi = toLight / max(distance, 1e-30);
       float cosAtLight = -dot(light.normal, wi);
-      if (cosSurface > 0.0 && cosAtLight > 0.0 && distance > 0.0) {
-        // End the shadow ray just off the light's surface, on the lit side.
-        float3 target = offsetRayOrigin(light.position, light.normal);
-        float3 shadowDir = target - spawn;
-        float shadowLength = length(shadowDir);
-        if (traceVisibility(spawn, shadowDir / shadowLength, shadowLength)) {
-          float lightPdf = areaToSolidAnglePdf(light.pdfArea, distance, cosAtLight);
-          float weight = useMis ? powerHeuristic(lightPdf, cosineHemispherePdf(cosSurface)) : 1.0;
-          // Lambert: f = albedo / pi.
-          radiance += throughput * albedo * kInvPi * light.radiance * (cosSurface * weight / lightPdf);
+      float3 wiLocal = frameToLocal(frame, wi);
+      if (cosAtLight > 0.0 && distance > 0.0 && wiLocal.z != 0.0) {
+        BsdfEval e = disneyEval(material, wo, wiLocal);
+        if (maxComponent(e.f) > 0.0) {
+          float3 spawn = offsetRayOrigin(hit.position, wiLocal.z > 0.0 ? ng : -ng);
+          // End the shadow ray just off the light's surface, on the lit side.
+          float3 target = offsetRayOrigin(light.position, light.normal);
+          float3 shadowDir = target - spawn;
+          float shadowLength = length(shadowDir);
+          if (shadowLength > 0.0 && traceVisibility(spawn, shadowDir / shadowLength, shadowLength)) {
+            float lightPdf = areaToSolidAnglePdf(light.pdfArea, distance, cosAtLight);
+            float weight = useMis ? misWeight(flags, lightPdf, e.pdf) : 1.0;
+            float3 contribution =
+                throughput * e.f * light.radiance * (abs(wiLocal.z) * weight / lightPdf);
+            radiance += clampContribution(contribution, clampLimit);
+          }
         }
       }
     }
+    if (useNee) {
+      for (uint l = 0u; l < c.lights.y; l += 1u) {
+        PointLight pl = loadPointLight(l);
+        float3 wi;
+        float distance;
+        float3 incident = pointLightIncident(pl, hit.position, wi, distance);
+        float3 wiLocal = frameToLocal(frame, wi);
+        if (maxComponent(incident) <= 0.0 || wiLocal.z == 0.0) continue;
+        BsdfEval e = disneyEval(material, wo, wiLocal);
+        if (maxComponent(e.f) <= 0.0) continue;
+        float3 spawn = offsetRayOrigin(hit.position, wiLocal.z > 0.0 ? ng : -ng);
+        float3 toLight = pl.position.xyz - spawn;
+        float shadowLength = length(toLight);
+        if (traceVisibility(spawn, toLight / shadowLength, shadowLength))
+          radiance += clampContribution(throughput * e.f * incident * abs(wiLocal.z), clampLimit);
+      }
+    }
 
-    // BSDF sampling: cosine-weighted, so f * cos / pdf = albedo.
-    float3 local = sampleCosineHemisphere(rngNext(rng), rngNext(rng));
-    float3 wi = normalize(frameToWorld(frameFromNormal(n), local));
-    previousBsdfPdf = cosineHemispherePdf(local.z);
-    if (previousBsdfPdf <= 0.0) break;
-    throughput *= albedo;
+    // Next direction.
+    float u0 = rngNext(rng);
+    float u1 = rngNext(rng);
+    float u2 = rngNext(rng);
+    BsdfSample s;
+    if (directions == PT_DIRECTIONS_BSDF || disneyHasDeltaLobe(material)) {
+      s = disneySample(material, wo, u0, u1, u2);
+    } else {
+      s = disneyNoSample();
+      float3 wiLocal;
+      float pdf;
+      if (directions == PT_DIRECTIONS_UNIFORM) {
+        // The hemisphere of wo, or the whole sphere if the material transmits.
+        wiLocal = sampleUniformSphere(u1, u2);
+        pdf = 0.25 * kInvPi;
+        if (material.specTrans <= 0.0 || material.metallic >= 1.0) {
+          wiLocal.z = wo.z > 0.0 ? abs(wiLocal.z) : -abs(wiLocal.z);
+          pdf = 0.5 * kInvPi;
+        }
+      } else {
+        wiLocal = sampleCosineHemisphere(u1, u2);
+        wiLocal.z = wo.z > 0.0 ? wiLocal.z : -wiLocal.z;
+        pdf = cosineHemispherePdf(abs(wiLocal.z));
+      }
+      if (pdf > 0.0 && wiLocal.z != 0.0) {
+        BsdfEval e = disneyEval(material, wo, wiLocal);
+        s.wi = wiLocal;
+        s.pdf = pdf;
+        s.weight = e.f * (abs(wiLocal.z) / pdf);
+        s.lobe = BSDF_LOBE_DIFFUSE;
+      }
+    }
+    if (s.lobe == BSDF_LOBE_NONE || !(maxComponent(s.weight) > 0.0)) break;
+    throughput *= s.weight;
+    if (!isFiniteColor(throughput)) break;
+    previousPdf = s.pdf;
+    previousDelta = s.isDelta;
+    float3 wiWorld = normalize(frameToWorld(frame, s.wi));
 
     if (useRoulette && depth + 1u >= c.sampling.z) {
       float survive = min(maxComponent(throughput), 0.95);
       if (rngNext(rng) >= survive) break;
       throughput /= survive;
     }
-    origin = spawn;
-    direction = wi;
+    origin = offsetRayOrigin(hit.position, s.wi.z > 0.0 ? ng : -ng);
+    direction = wiWorld;
   }
   return radiance;
 }

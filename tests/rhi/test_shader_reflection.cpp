@@ -12,7 +12,8 @@ using namespace penumbra::rhi;
 namespace {
 PipelineBindingLayout reflectPathTracer() {
   PipelineBindingLayout layout;
-  for (const char* name : {"path_trace.rgen", "path_trace.rmiss", "shadow.rmiss", "triangle.rchit"})
+  for (const char* name :
+       {"path_trace.rgen", "whitted.rgen", "path_trace.rmiss", "shadow.rmiss", "triangle.rchit"})
     reflectSpirv(shaders::find(name), name, layout);
   return layout;
 }
@@ -28,7 +29,7 @@ const BindingLayoutItem& slot(const PipelineBindingLayout& layout, uint32_t s) {
 TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][reflection]") {
   auto layout = reflectPathTracer();
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 8);
+  REQUIRE(layout.spaces[0].items.size() == 9);
   REQUIRE(layout.pushConstantBytes == sizeof(gpu::FrameConstants));
 
   REQUIRE(slot(layout, PT_SLOT_SCENE).type == ResourceType::AccelStruct);
@@ -65,8 +66,10 @@ TEST_CASE("the HLSL-front-end build of the core uses the shared register shifts"
   PipelineBindingLayout layout;
   reflectSpirv(shaders::find("core_check.hlsl"), "core_check.hlsl", layout);
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 1);
-  // register(u0) -> binding PENUMBRA_U(0) = 64, as the DXC flags would map it.
-  REQUIRE(layout.spaces[0].items[0].slot == PENUMBRA_U(0));
-  REQUIRE(layout.spaces[0].items[0].writable);
+  REQUIRE(layout.spaces[0].items.size() == 2);
+  // register(t0) -> PENUMBRA_T(0) = 32, register(u0) -> PENUMBRA_U(0) = 64.
+  REQUIRE(layout.spaces[0].items[0].slot == PENUMBRA_T(0));
+  REQUIRE_FALSE(layout.spaces[0].items[0].writable);
+  REQUIRE(layout.spaces[0].items[1].slot == PENUMBRA_U(0));
+  REQUIRE(layout.spaces[0].items[1].writable);
 }

@@ -26,7 +26,8 @@ TEST_CASE("the Cornell box matches the canonical data", "[scene]") {
   REQUIRE(light != nullptr);
   const auto& lm = s.materials[light->material];
   REQUIRE(lm.emission == glm::vec3(17, 12, 4));
-  REQUIRE(lm.albedo == glm::vec3(0.0f));
+  REQUIRE(lm.baseColor == glm::vec3(0.0f));
+  REQUIRE(lm.model == scene::MaterialModel::Lambert);
   // Light: x in [213, 343] mm, z in [227, 332] mm, 0.1 mm below the ceiling,
   // and its counter-clockwise face points down.
   for (const auto& p : light->positions) {
@@ -41,9 +42,9 @@ TEST_CASE("the Cornell box matches the canonical data", "[scene]") {
     REQUIRE(glm::cross(b - a, c - a).y < 0.0f);
   }
   for (const auto& m : s.materials) {
-    if (m.name == "red") REQUIRE(m.albedo == glm::vec3(0.63f, 0.065f, 0.05f));
-    if (m.name == "green") REQUIRE(m.albedo == glm::vec3(0.14f, 0.45f, 0.091f));
-    if (m.name == "white") REQUIRE(m.albedo == glm::vec3(0.725f, 0.71f, 0.68f));
+    if (m.name == "red") REQUIRE(m.baseColor == glm::vec3(0.63f, 0.065f, 0.05f));
+    if (m.name == "green") REQUIRE(m.baseColor == glm::vec3(0.14f, 0.45f, 0.091f));
+    if (m.name == "white") REQUIRE(m.baseColor == glm::vec3(0.725f, 0.71f, 0.68f));
   }
 }
 
@@ -63,7 +64,7 @@ TEST_CASE("bad scene input gives one clear error", "[scene]") {
     "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
     "materials":{"white":{"albedo":[1.5,0.5,0.5]}},
     "meshes":[{"name":"q","material":"white","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
-  REQUIRE_THROWS_WITH(scene::parseScene(badAlbedo, "t.json"), ContainsSubstring("albedo"));
+  REQUIRE_THROWS_WITH(scene::parseScene(badAlbedo, "t.json"), ContainsSubstring("baseColor"));
 }
 
 TEST_CASE("the furnace sphere is closed and faces inwards", "[scene]") {

@@ -12,11 +12,6 @@
 using namespace penumbra;
 
 namespace {
-struct FurnacePush {
-  gpu::FrameConstants frame;
-  gpu::float4 sphere;  // albedo, emission, radius
-};
-static_assert(sizeof(FurnacePush) == 128);
 
 std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t maxDepth, uint32_t spp) {
   constexpr uint32_t kSide = 16, kPixels = kSide * kSide;
@@ -36,22 +31,30 @@ std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t max
   out.memory = rhi::MemoryLocation::Readback;
   out.debugName = "furnace readback";
   auto readback = device.createBuffer(out);
+  rhi::BufferDesc sphereDesc;
+  sphereDesc.byteSize = 16;
+  sphereDesc.usage = rhi::BufferUsage::StorageBuffer;
+  sphereDesc.debugName = "furnace sphere";
+  auto sphere = device.createBuffer(sphereDesc);
+  const gpu::float4 sphereParams{0.5f, 1.0f, 1.0f, 0.0f};  // albedo, emission, radius
+
   rhi::BindingSetDesc set;
-  set.items = {rhi::BindingSetItem::storageBuffer(PENUMBRA_U(0), output)};
+  set.items = {rhi::BindingSetItem::storageBuffer(PENUMBRA_T(0), sphere),
+               rhi::BindingSetItem::storageBuffer(PENUMBRA_U(0), output)};
   auto bindings = device.createBindingSet(set, *pipeline);
 
-  FurnacePush push;
-  push.frame.cameraPosition = {0, 0, 0, 1.0f};  // tan(45 deg)
-  push.frame.cameraRight = {-1, 0, 0, 1.0f};
-  push.frame.cameraUp = {0, 1, 0, 0};
-  push.frame.cameraForward = {0, 0, 1, 0};
-  push.frame.image = {kSide, kSide, spp, 0};
-  push.frame.sampling = {3, maxDepth, 1, flags};
-  push.frame.lights = {0, 0, 0, 0};
-  push.sphere = {0.5f, 1.0f, 1.0f, 0.0f};
+  gpu::FrameConstants push;
+  push.cameraPosition = {0, 0, 0, 1.0f};  // tan(45 deg)
+  push.cameraRight = {-1, 0, 0, 1.0f};
+  push.cameraUp = {0, 1, 0, 0};
+  push.cameraForward = {0, 0, 1, 0};
+  push.image = {kSide, kSide, spp, 0};
+  push.sampling = {3, maxDepth, 1, flags};
+  push.lights = {0, 0, 0, 0};
 
   auto cmd = device.createCommandList();
   cmd->open();
+  cmd->writeBuffer(sphere.get(), &sphereParams, sizeof(sphereParams));
   cmd->setComputeState({pipeline.get(), {bindings.get()}});
   cmd->setPushConstants(&push, sizeof(push));
   cmd->dispatch(kPixels / 64);

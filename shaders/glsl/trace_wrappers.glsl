@@ -1,0 +1,27 @@
+// traceClosest / traceVisibility for ray-generation shaders that declare the
+// gHit and gVisible payloads and the gRaysThisLaunch counter, plus the
+// running-mean accumulation into gAccumulation.
+SurfaceHit traceClosest(float3 origin, float3 direction) {
+  gRaysThisLaunch += 1u;
+  traceRayEXT(gScene, gl_RayFlagsOpaqueEXT, 0xff, 0, 1, PT_MISS_RADIANCE, origin, 0.0, direction,
+              1e30, PT_PAYLOAD_RADIANCE);
+  return gHit;
+}
+
+bool traceVisibility(float3 origin, float3 direction, float tMax) {
+  gRaysThisLaunch += 1u;
+  gVisible = 0u;
+  traceRayEXT(gScene,
+              gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT |
+                  gl_RayFlagsSkipClosestHitShaderEXT,
+              0xff, 0, 1, PT_MISS_SHADOW, origin, 0.0, direction, tMax, PT_PAYLOAD_SHADOW);
+  return gVisible != 0u;
+}
+
+// Running mean over all frames: mean_n = (mean_{n-1} * before + sum) / n.
+void accumulate(uint2 pixel, float3 sum, uint samples, uint before) {
+  float3 previous = before > 0u ? imageLoad(gAccumulation, int2(pixel)).xyz : zero3();
+  float3 mean = (previous * float(before) + sum) / float(before + samples);
+  imageStore(gAccumulation, int2(pixel), float4(mean, 1.0));
+  atomicAdd(gRayCount, gRaysThisLaunch);
+}

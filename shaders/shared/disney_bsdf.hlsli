@@ -1,0 +1,359 @@
+// The Disney principled BSDF (Burley 2012, "Physically Based Shading at
+// Disney"; with the transmission extension of Burley 2015, "Extending the
+// Disney BRDF to a BSDF with Integrated Subsurface Scattering").
+//
+// Everything here works in the local shading frame: +z is the geometric
+// normal's front (outside) side, wo and wi point away from the surface. The
+// reflection lobes are two-sided (mirrored to wo's side); the glass lobe uses
+// the side of wo to tell entering (eta = ior) from leaving (eta = 1 / ior).
+//
+// Lobes, weighted by metallic m, specTrans t, clearcoat c:
+//   diffuse   (1-m)(1-t)   Burley diffuse with retro-reflection, blended towards a
+//                          Hanrahan-Krueger-like flat term by `subsurface`; or
+//                          Lambert for materials marked so (glTF, the Cornell box);
+//   sheen     (1-m)(1-t)   sheen * lerp(1, tint, sheenTint) * SchlickWeight(cos theta_d);
+//   specular  m + (1-m)(1-t)  anisotropic GGX reflection; Fresnel Schlick from baseColor
+//                          (metal) or 0.08 * specular * lerp(1, tint, specularTint),
+//                          grazing reflectance faded below F0 = 0.02 (fresnelSchlickFaded);
+//   glass     (1-m) t      rough dielectric reflection + refraction (Walter et al. 2007)
+//                          with the exact dielectric Fresnel of `ior`; the thin option
+//                          transmits without bending;
+//   clearcoat 0.25 c       GTR1 (alpha lerp(0.1, 0.001, clearcoatGloss)), F0 = 0.04,
+//                          separable Smith GGX masking with alpha 0.25.
+// GGX masking is Smith's height-correlated form; sampling uses visible normals.
+// Lobes with max(alphaX, alphaY) <= kSpecularAlphaThreshold are perfectly
+// specular (delta) and are sampled but never evaluated.
+#ifndef PENUMBRA_DISNEY_BSDF_HLSLI
+#define PENUMBRA_DISNEY_BSDF_HLSLI
+#include "fresnel.hlsli"
+#include "microfacet.hlsli"
+#include "sampling.hlsli"
+
+static const float kSpecularAlphaThreshold = 1e-3;
+static const float kMinAlpha = 1e-4;
+
+#define BSDF_LOBE_DIFFUSE 0u
+#define BSDF_LOBE_SPECULAR 1u
+#define BSDF_LOBE_GLASS 2u
+#define BSDF_LOBE_CLEARCOAT 3u
+#define BSDF_LOBE_NONE 4u
+
+struct DisneyMaterial {
+  float3 baseColor;
+  float metallic;
+  float roughness;
+  float anisotropic;
+  float specular;
+  float specularTint;
+  float sheen;
+  float sheenTint;
+  float clearcoat;
+  float clearcoatGloss;
+  float specTrans;
+  float ior;
+  float subsurface;
+  bool thin;
+  bool lambertDiffuse;
+};
+
+struct BsdfEval {
+  float3 f;   // BSDF value (no cosine)
+  float pdf;  // solid-angle density with which disneySample picks wi (non-delta part)
+};
+
+struct BsdfSample {
+  float3 wi;
+  float3 weight;  // f * |cos| / pdf, or the delta lobe's throughput
+  float pdf;      // 0 for delta samples
+  bool isDelta;
+  uint lobe;      // BSDF_LOBE_*; BSDF_LOBE_NONE when no direction was produced
+};
+
+struct LobeWeights {
+  float diffuse;
+  float specularLayer;  // weight of the specular reflection lobe (m + (1-m)(1-t))
+  float glass;
+  float clearcoat;
+  // Probabilities of choosing each lobe in disneySample.
+  float pDiffuse;
+  float pSpecular;
+  float pGlass;
+  float pClearcoat;
+};
+
+float3 tintColor(float3 baseColor) {
+  float lum = luminance(baseColor);
+  return lum > 0.0 ? baseColor / lum : splat3(1.0);
+}
+
+Ggx disneyGgx(DisneyMaterial m) {
+  float alpha = m.roughness * m.roughness;
+  float aspect = sqrt(1.0 - 0.9 * m.anisotropic);
+  Ggx g;
+  g.alphaX = max(kMinAlpha, alpha / aspect);
+  g.alphaY = max(kMinAlpha, alpha * aspect);
+  return g;
+}
+
+bool isSpecularGgx(Ggx g) { return max(g.alphaX, g.alphaY) <= kSpecularAlphaThreshold; }
+
+// Thin glass scatters with a roughness scaled by the ior (Burley 2015, eq. 11).
+Ggx thinGlassGgx(DisneyMaterial m) {
+  float scaled = saturate((0.65 * m.ior - 0.35) * m.roughness);
+  DisneyMaterial s = m;
+  s.roughness = scaled;
+  return disneyGgx(s);
+}
+
+float3 dielectricSpecularF0(DisneyMaterial m) {
+  return 0.08 * m.specular * lerp(splat3(1.0), tintColor(m.baseColor), m.specularTint);
+}
+
+// Schlick's Fresnel with the grazing reflectance faded out below F0 = 0.02
+// (F90 = saturate(50 F0), as in Filament): `specular` = 0 then means no
+// specular reflection at all, instead of a mirror at grazing angles, and
+// F0 >= 0.02 (every real dielectric) keeps Schlick's F90 = 1.
+float3 fresnelSchlickFaded(float3 f0, float cosTheta) {
+  float f90 = saturate(50.0 * maxComponent(f0));
+  return f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
+}
+
+// Fresnel of the specular reflection lobe: metal and dielectric layers mixed,
+// already multiplied by their lobe weights.
+float3 specularFresnel(DisneyMaterial m, float cosThetaD) {
+  float3 metal = fresnelSchlickFaded(m.baseColor, cosThetaD);
+  float3 dielectric = fresnelSchlickFaded(dielectricSpecularF0(m), cosThetaD);
+  return m.metallic * metal + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectric;
+}
+
+LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
+  LobeWeights w;
+  w.diffuse = (1.0 - m.metallic) * (1.0 - m.specTrans);
+  w.specularLayer = m.metallic + w.diffuse;
+  w.glass = (1.0 - m.metallic) * m.specTrans;
+  w.clearcoat = 0.25 * m.clearcoat;
+  // Sampling estimates: each lobe's rough share of the reflected energy.
+  float eDiffuse = w.diffuse * (luminance(m.baseColor) + m.sheen * 0.25);
+  float eSpecular = luminance(specularFresnel(m, cosThetaO));
+  float eGlass = w.glass;
+  float eClearcoat = w.clearcoat * (0.04 + 0.96 * schlickWeight(cosThetaO));
+  float total = eDiffuse + eSpecular + eGlass + eClearcoat;
+  float inv = total > 0.0 ? 1.0 / total : 0.0;
+  w.pDiffuse = eDiffuse * inv;
+  w.pSpecular = eSpecular * inv;
+  w.pGlass = eGlass * inv;
+  w.pClearcoat = eClearcoat * inv;
+  return w;
+}
+
+float3 diffuseTerm(DisneyMaterial m, float3 wo, float3 wi, float cosThetaD) {
+  if (m.lambertDiffuse) return m.baseColor * kInvPi;
+  float fo = schlickWeight(wo.z);
+  float fi = schlickWeight(wi.z);
+  float rr = 2.0 * m.roughness * cosThetaD * cosThetaD;
+  float burley = (1.0 - 0.5 * fo) * (1.0 - 0.5 * fi) + rr * (fo + fi + fo * fi * (rr - 1.0));
+  float fss90 = cosThetaD * cosThetaD * m.roughness;
+  float fss = lerp(1.0, fss90, fo) * lerp(1.0, fss90, fi);
+  float flatTerm = 1.25 * (fss * (1.0 / (wo.z + wi.z) - 0.5) + 0.5);
+  return m.baseColor * kInvPi * lerp(burley, flatTerm, m.subsurface);
+}
+
+float3 sheenTerm(DisneyMaterial m, float cosThetaD) {
+  float3 tint = lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint);
+  return m.sheen * tint * schlickWeight(cosThetaD);
+}
+
+float clearcoatAlpha(DisneyMaterial m) { return lerp(0.1, 0.001, m.clearcoatGloss); }
+
+float separableSmithGgx(float cosTheta, float alpha) {
+  float a2 = alpha * alpha;
+  float c2 = cosTheta * cosTheta;
+  return 2.0 * cosTheta / (cosTheta + sqrt(a2 + c2 - a2 * c2));
+}
+
+// Refraction of wo about the normal wm (both on the same side), eta =
+// transmitted / incident index; false on total internal reflection.
+bool refractDirection(float3 wo, float3 wm, float eta, out float3 wt) {
+  float cosI = dot(wo, wm);
+  float sin2T = max(0.0, 1.0 - cosI * cosI) / (eta * eta);
+  wt = float3(0.0, 0.0, 0.0);
+  if (sin2T >= 1.0) return false;
+  float cosT = sqrt(1.0 - sin2T);
+  wt = -wo / eta + (cosI / eta - cosT) * wm;
+  return true;
+}
+
+float3 reflectDirection(float3 wo, float3 wm) { return 2.0 * dot(wo, wm) * wm - wo; }
+
+// The part of the BSDF that can be evaluated (all non-delta lobes), and the
+// density disneySample gives wi.
+BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
+  BsdfEval r;
+  r.f = zero3();
+  r.pdf = 0.0;
+  float side = woIn.z < 0.0 ? -1.0 : 1.0;
+  float3 wo = float3(woIn.x, woIn.y, woIn.z * side);
+  float3 wi = float3(wiIn.x, wiIn.y, wiIn.z * side);
+  if (wo.z <= 0.0 || wi.z == 0.0) return r;
+  float eta = side > 0.0 ? m.ior : 1.0 / m.ior;
+  LobeWeights w = disneyLobeWeights(m, wo.z);
+  Ggx g = disneyGgx(m);
+
+  if (wi.z > 0.0) {
+    float3 wh = normalize(wo + wi);
+    float cosThetaD = dot(wi, wh);
+    if (w.diffuse > 0.0) {
+      r.f += w.diffuse * (diffuseTerm(m, wo, wi, cosThetaD) + sheenTerm(m, cosThetaD));
+      r.pdf += w.pDiffuse * cosineHemispherePdf(wi.z);
+    }
+    float vndf = ggxVisibleNormalPdf(g, wo, wh);
+    float jacobian = 1.0 / (4.0 * dot(wo, wh));
+    if (w.specularLayer > 0.0 && !isSpecularGgx(g)) {
+      float dg = ggxD(g, wh) * ggxG2(g, wo, wi) / (4.0 * wo.z * wi.z);
+      r.f += specularFresnel(m, cosThetaD) * dg;
+      r.pdf += w.pSpecular * vndf * jacobian;
+    }
+    if (w.glass > 0.0) {
+      Ggx gg = m.thin ? thinGlassGgx(m) : g;
+      if (!isSpecularGgx(gg) && eta != 1.0) {
+        float fr = fresnelDielectric(dot(wo, wh), eta);
+        float dg = ggxD(gg, wh) * ggxG2(gg, wo, wi) / (4.0 * wo.z * wi.z);
+        r.f += splat3(w.glass * fr * dg);
+        r.pdf += w.pGlass * fr * ggxVisibleNormalPdf(gg, wo, wh) * jacobian;
+      }
+    }
+    if (w.clearcoat > 0.0) {
+      float alpha = clearcoatAlpha(m);
+      float d = gtr1D(alpha, wh.z);
+      float fc = 0.04 + 0.96 * schlickWeight(cosThetaD);
+      float gc = separableSmithGgx(wo.z, 0.25) * separableSmithGgx(wi.z, 0.25);
+      r.f += splat3(w.clearcoat * d * fc * gc / (4.0 * wo.z * wi.z));
+      r.pdf += w.pClearcoat * d * wh.z * jacobian;
+    }
+  } else if (w.glass > 0.0 && eta != 1.0) {
+    float3 wiAbs = float3(wi.x, wi.y, -wi.z);
+    if (m.thin) {
+      // Thin: the transmitted lobe is the reflected one mirrored through the sheet.
+      Ggx gg = thinGlassGgx(m);
+      if (!isSpecularGgx(gg)) {
+        float3 wh = normalize(wo + wiAbs);
+        float fr = fresnelDielectric(dot(wo, wh), eta);
+        float dg = ggxD(gg, wh) * ggxG2(gg, wo, wiAbs) / (4.0 * wo.z * wiAbs.z);
+        r.f += m.baseColor * (w.glass * (1.0 - fr) * dg);
+        r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(gg, wo, wh) / (4.0 * dot(wo, wh));
+      }
+    } else if (!isSpecularGgx(g)) {
+      // Generalised half vector of refraction (Walter et al. 2007), on wo's side.
+      float3 wh = normalize(wo + wi * eta);
+      if (wh.z < 0.0) wh = -wh;
+      float cosO = dot(wo, wh);
+      float cosI = dot(wi, wh);
+      if (cosO > 0.0 && cosI < 0.0) {
+        float fr = fresnelDielectric(cosO, eta);
+        float denom = cosI + cosO / eta;
+        float denom2 = denom * denom;
+        float dg = ggxD(g, wh) * ggxG2(g, wo, wi);
+        // Radiance crossing into a denser medium is compressed by 1 / eta^2.
+        float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
+        r.f += m.baseColor * (w.glass * ft);
+        r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
+      }
+    }
+  }
+  return r;
+}
+
+BsdfSample disneyNoSample() {
+  BsdfSample s;
+  s.wi = float3(0.0, 0.0, 1.0);
+  s.weight = zero3();
+  s.pdf = 0.0;
+  s.isDelta = false;
+  s.lobe = BSDF_LOBE_NONE;
+  return s;
+}
+
+// Samples wi for wo with three uniform numbers.
+BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float u2) {
+  BsdfSample s = disneyNoSample();
+  float side = woIn.z < 0.0 ? -1.0 : 1.0;
+  float3 wo = float3(woIn.x, woIn.y, woIn.z * side);
+  if (wo.z <= 0.0) return s;
+  float eta = side > 0.0 ? m.ior : 1.0 / m.ior;
+  LobeWeights w = disneyLobeWeights(m, wo.z);
+  Ggx g = disneyGgx(m);
+  float3 wi = float3(0.0, 0.0, 1.0);
+
+  if (u0 < w.pDiffuse) {
+    s.lobe = BSDF_LOBE_DIFFUSE;
+    wi = sampleCosineHemisphere(u1, u2);
+  } else if (u0 < w.pDiffuse + w.pSpecular) {
+    s.lobe = BSDF_LOBE_SPECULAR;
+    if (isSpecularGgx(g)) {
+      s.wi = float3(-wo.x, -wo.y, wo.z * side);
+      s.weight = specularFresnel(m, wo.z) / w.pSpecular;
+      s.isDelta = true;
+      return s;
+    }
+    wi = reflectDirection(wo, ggxSampleVisibleNormal(g, wo, u1, u2));
+  } else if (u0 < w.pDiffuse + w.pSpecular + w.pGlass) {
+    s.lobe = BSDF_LOBE_GLASS;
+    // Reuse u0 to choose reflection or transmission.
+    float uChoice = (u0 - w.pDiffuse - w.pSpecular) / w.pGlass;
+    Ggx gg = m.thin ? thinGlassGgx(m) : g;
+    if (eta == 1.0) {
+      // An index-matched boundary neither reflects nor bends light.
+      s.wi = -woIn;
+      s.weight = m.baseColor * (w.glass / w.pGlass);
+      s.isDelta = true;
+      return s;
+    }
+    bool specular = isSpecularGgx(gg);
+    float3 wm = specular ? float3(0.0, 0.0, 1.0) : ggxSampleVisibleNormal(gg, wo, u1, u2);
+    float fr = fresnelDielectric(dot(wo, wm), eta);
+    if (uChoice < fr) {
+      wi = reflectDirection(wo, wm);
+    } else if (m.thin) {
+      float3 r = reflectDirection(wo, wm);
+      wi = float3(r.x, r.y, -r.z);
+    } else {
+      if (!refractDirection(wo, wm, eta, wi)) return disneyNoSample();
+    }
+    if (specular) {
+      bool reflected = uChoice < fr;
+      s.wi = float3(wi.x, wi.y, wi.z * side);
+      // Chosen with probability pGlass * (fr or 1 - fr), which cancels the Fresnel factor.
+      float scale = m.thin ? 1.0 : 1.0 / (eta * eta);
+      s.weight = reflected ? splat3(w.glass / w.pGlass) : m.baseColor * (w.glass * scale / w.pGlass);
+      s.isDelta = true;
+      return s;
+    }
+  } else if (w.pClearcoat > 0.0) {
+    s.lobe = BSDF_LOBE_CLEARCOAT;
+    float cosThetaM = gtr1SampleCosTheta(clearcoatAlpha(m), u1);
+    float sinThetaM = sqrt(max(0.0, 1.0 - cosThetaM * cosThetaM));
+    float phi = 2.0 * kPi * u2;
+    wi = reflectDirection(wo, float3(sinThetaM * cos(phi), sinThetaM * sin(phi), cosThetaM));
+  } else {
+    return s;
+  }
+
+  if (wi.z == 0.0) return disneyNoSample();
+  float3 wiOut = float3(wi.x, wi.y, wi.z * side);
+  BsdfEval e = disneyEval(m, woIn, wiOut);
+  if (e.pdf <= 0.0 || !(e.pdf < 1e30)) return disneyNoSample();
+  s.wi = wiOut;
+  s.pdf = e.pdf;
+  s.weight = e.f * (abs(wi.z) / e.pdf);
+  return s;
+}
+
+// Whether the material has a perfectly specular lobe that sampling can pick.
+bool disneyHasDeltaLobe(DisneyMaterial m) {
+  LobeWeights w = disneyLobeWeights(m, 1.0);
+  Ggx g = disneyGgx(m);
+  Ggx gg = m.thin ? thinGlassGgx(m) : g;
+  return (w.pSpecular > 0.0 && isSpecularGgx(g)) || (w.pGlass > 0.0 && (isSpecularGgx(gg) || m.ior == 1.0));
+}
+
+#endif

@@ -1,0 +1,117 @@
+// Whitted ray tracing (Whitted 1980) with the Phong model: point and spot
+// lights with hard shadows, an ambient term, perfect mirror reflection, and
+// refraction weighted by the dielectric Fresnel term, with total internal
+// reflection. Recursion is an explicit stack of pending rays (reflection and
+// refraction branch), bounded by the max depth and a minimum weight.
+//
+// Needs the same entry-point accessors as path_tracer.hlsli.
+#ifndef PENUMBRA_WHITTED_HLSLI
+#define PENUMBRA_WHITTED_HLSLI
+#include "disney_bsdf.hlsli"
+#include "fresnel.hlsli"
+#include "lights.hlsli"
+#include "material.hlsli"
+#include "ray_offset.hlsli"
+#include "rng.hlsli"
+#include "surface_hit.hlsli"
+
+#define WHITTED_STACK_SIZE 16
+static const float kWhittedMinWeight = 1e-3;
+
+struct WhittedRay {
+  float3 origin;
+  float3 direction;
+  float3 weight;
+  uint depth;
+};
+
+WhittedRay whittedRay(float3 origin, float3 direction, float3 weight, uint depth) {
+  WhittedRay r;
+  r.origin = origin;
+  r.direction = direction;
+  r.weight = weight;
+  r.depth = depth;
+  return r;
+}
+
+// Phong shading of one light: kd (n.l) + ks (r.v)^n, times the incident light.
+float3 phongTerm(PhongMaterial p, float3 n, float3 toLight, float3 toViewer, float3 incident) {
+  float nDotL = dot(n, toLight);
+  if (nDotL <= 0.0) return zero3();
+  float3 r = 2.0 * nDotL * n - toLight;
+  float spec = p.ks * pow(max(dot(r, toViewer), 0.0), p.exponent);
+  return (p.kd * nDotL + splat3(spec)) * incident;
+}
+
+float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
+  WhittedRay stack[WHITTED_STACK_SIZE];
+  int top = 0;
+  stack[0] = whittedRay(origin, direction, splat3(1.0), 0u);
+  top = 1;
+  float3 radiance = zero3();
+  while (top > 0) {
+    top -= 1;
+    WhittedRay ray = stack[top];
+    SurfaceHit hit = traceClosest(ray.origin, ray.direction);
+    if (hit.hitT < 0.0) continue;
+    InstanceData instance = loadInstanceData(hit.instanceIndex);
+    MaterialData data = loadMaterial(instance.materialIndex);
+    PhongMaterial p = unpackPhong(data);
+
+    float cosIn = -dot(ray.direction, hit.geometricNormal);
+    bool frontFace = cosIn > 0.0;
+    if (instance.firstEmissiveTriangle != PT_NO_EMISSION && frontFace)
+      radiance += ray.weight * data.emission.xyz;
+    // Shade on the side the ray arrived from.
+    float3 n = frontFace ? hit.geometricNormal : -hit.geometricNormal;
+    float3 toViewer = -ray.direction;
+    float3 spawnOut = offsetRayOrigin(hit.position, n);
+
+    float opaque = max(0.0, 1.0 - p.reflectivity - p.transparency);
+    float3 local = c.shading.xyz * p.kd;
+    for (uint l = 0u; l < c.lights.y; l += 1u) {
+      PointLight light = loadPointLight(l);
+      float3 toLight;
+      float distance;
+      float3 incident = pointLightIncident(light, hit.position, toLight, distance);
+      if (maxComponent(incident) <= 0.0 || dot(n, toLight) <= 0.0) continue;
+      float3 toLightFromSpawn = light.position.xyz - spawnOut;
+      float shadowLength = length(toLightFromSpawn);
+      if (traceVisibility(spawnOut, toLightFromSpawn / shadowLength, shadowLength))
+        local += phongTerm(p, n, toLight, toViewer, incident);
+    }
+    radiance += ray.weight * opaque * local;
+
+    if (ray.depth >= c.sampling.y) continue;
+    float3 mirror = normalize(ray.direction + 2.0 * abs(cosIn) * n);
+    if (p.transparency > 0.0) {
+      // Entering through the front face goes from air into the material.
+      float eta = frontFace ? p.ior : 1.0 / p.ior;
+      float fr = fresnelDielectric(abs(cosIn), eta);
+      float3 refracted;
+      bool transmits = refractDirection(toViewer, n, eta, refracted);
+      if (!transmits) fr = 1.0;  // total internal reflection
+      float3 reflectWeight = ray.weight * (p.transparency * fr);
+      float3 refractWeight = ray.weight * (p.transparency * (1.0 - fr)) * p.kd;
+      if (transmits && maxComponent(refractWeight) > kWhittedMinWeight && top < WHITTED_STACK_SIZE) {
+        stack[top] = whittedRay(offsetRayOrigin(hit.position, -n), normalize(refracted), refractWeight,
+                                ray.depth + 1u);
+        top += 1;
+      }
+      if (maxComponent(reflectWeight) > kWhittedMinWeight && top < WHITTED_STACK_SIZE) {
+        stack[top] = whittedRay(spawnOut, mirror, reflectWeight, ray.depth + 1u);
+        top += 1;
+      }
+    }
+    if (p.reflectivity > 0.0 && top < WHITTED_STACK_SIZE) {
+      float3 w = ray.weight * p.reflectivity;
+      if (maxComponent(w) > kWhittedMinWeight) {
+        stack[top] = whittedRay(spawnOut, mirror, w, ray.depth + 1u);
+        top += 1;
+      }
+    }
+  }
+  return radiance;
+}
+
+#endif
