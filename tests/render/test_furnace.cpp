@@ -42,14 +42,14 @@ TEST_CASE("furnace: every strategy converges to Le / (1 - rho)", "[render][gpu][
   // bounce, whose product over 40 bounces is noisy (16% worst pixel at 64 spp,
   // measured), so their image mean is the real check. NEE alone would be exact on a true sphere, but on flat
   // facets nearby light samples make cos*cos/d^2 heavy-tailed, so its pixels
-  // converge slowly (1.3% worst pixel at 256 spp, measured); its image mean is
-  // held to 0.5% instead. A double-counted or dropped light is off by ~50-100%.
+  // converge slowly (worst pixel 2-11% at 64 spp depending on the random
+  // stream, measured); its image mean is held to 0.5% instead. A double-counted or dropped light is off by ~50-100%.
   using S = render::SamplingStrategy;
   using H = render::MisHeuristic;
   const Strategy strategies[] = {{"uniform directions", S::Uniform, H::Power, 0.3},
                                  {"cosine directions", S::Cosine, H::Power, 0.01},
                                  {"BSDF sampling only", S::Bsdf, H::Power, 0.01},
-                                 {"NEE", S::Nee, H::Power, 0.05},
+                                 {"NEE", S::Nee, H::Power, 0.2},
                                  {"NEE + MIS, power heuristic", S::Mis, H::Power, 0.01},
                                  {"NEE + MIS, balance heuristic", S::Mis, H::Balance, 0.01}};
   for (const auto& s : strategies) {
