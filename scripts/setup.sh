@@ -21,7 +21,7 @@ BASE_PACKAGES=(
   glslang-tools glslang-dev spirv-tools
   libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-dev libstb-dev
-  libtinyexr-dev libfmt-dev
+  libtinyexr-dev libfmt-dev libboost-dev
   clang-format
 )
 BACKPORT_PACKAGES=(mesa-vulkan-drivers catch2)

@@ -43,6 +43,17 @@ rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& 
   return device.createBuffer(desc);
 }
 
+gpu::PointLight packPointLight(const scene::PointLight& l) {
+  gpu::PointLight p;
+  const bool spot = l.outerConeDegrees < 180.0f;
+  p.position = toFloat4(l.position, std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
+  p.intensity = toFloat4(l.intensity);
+  p.spot = toFloat4(glm::normalize(l.direction), spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
+  return p;
+}
+
+}  // namespace
+
 gpu::MaterialData packMaterial(const scene::Material& m) {
   gpu::MaterialData d;
   d.baseColor = toFloat4(m.baseColor);
@@ -58,17 +69,6 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
              flags, 0, 0};
   return d;
 }
-
-gpu::PointLight packPointLight(const scene::PointLight& l) {
-  gpu::PointLight p;
-  const bool spot = l.outerConeDegrees < 180.0f;
-  p.position = toFloat4(l.position, std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
-  p.intensity = toFloat4(l.intensity);
-  p.spot = toFloat4(glm::normalize(l.direction), spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
-  return p;
-}
-
-}  // namespace
 
 struct PathTracer::SceneBuffers {
   rhi::BufferHandle vertices, indices, instances, materials, emissive, pointLights;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "image/image.h"
+#include "path_tracer_shared.h"
 #include "rhi/rhi.h"
 #include "scene/scene.h"
 
@@ -44,6 +45,9 @@ struct FrameStats {
 
 // FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);
+
+// The GPU form of a scene material (path_tracer_shared.h).
+gpu::MaterialData packMaterial(const scene::Material& material);
 
 class PathTracer {
  public:

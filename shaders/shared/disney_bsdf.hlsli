@@ -296,6 +296,7 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
       return s;
     }
     wi = reflectDirection(wo, ggxSampleVisibleNormal(g, wo, u1, u2));
+    if (wi.z <= 0.0) return disneyNoSample();
   } else if (u0 < w.pDiffuse + w.pSpecular + w.pGlass) {
     s.lobe = BSDF_LOBE_GLASS;
     // Reuse u0 to choose reflection or transmission.
@@ -311,13 +312,17 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
     bool specular = isSpecularGgx(gg);
     float3 wm = specular ? float3(0.0, 0.0, 1.0) : ggxSampleVisibleNormal(gg, wo, u1, u2);
     float fr = fresnelDielectric(dot(wo, wm), eta);
+    // A direction on the wrong side of the surface for the chosen event has no
+    // density in disneyEval, so it is rejected rather than re-interpreted.
     if (uChoice < fr) {
       wi = reflectDirection(wo, wm);
+      if (wi.z <= 0.0) return disneyNoSample();
     } else if (m.thin) {
       float3 r = reflectDirection(wo, wm);
+      if (r.z <= 0.0) return disneyNoSample();
       wi = float3(r.x, r.y, -r.z);
     } else {
-      if (!refractDirection(wo, wm, eta, wi)) return disneyNoSample();
+      if (!refractDirection(wo, wm, eta, wi) || wi.z >= 0.0) return disneyNoSample();
     }
     if (specular) {
       bool reflected = uChoice < fr;
@@ -334,6 +339,7 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
     float sinThetaM = sqrt(max(0.0, 1.0 - cosThetaM * cosThetaM));
     float phi = 2.0 * kPi * u2;
     wi = reflectDirection(wo, float3(sinThetaM * cos(phi), sinThetaM * sin(phi), cosThetaM));
+    if (wi.z <= 0.0) return disneyNoSample();
   } else {
     return s;
   }
