@@ -20,6 +20,11 @@
 //                          transmits without bending;
 //   clearcoat 0.25 c       GTR1 (alpha lerp(0.1, 0.001, clearcoatGloss)), F0 = 0.04,
 //                          separable Smith GGX masking with alpha 0.25.
+// Energy: Burley's layers are additive and a white material can reflect more
+// than it receives; here the diffuse base is renormalised (Lagarde & de
+// Rousiers 2014) and attenuated by the specular layer's Fresnel on the way in
+// and out, and everything below the clearcoat by the clearcoat's, so the
+// directional albedo stays <= 1 (tested).
 // GGX masking is Smith's height-correlated form; sampling uses visible normals.
 // Lobes with max(alphaX, alphaY) <= kSpecularAlphaThreshold are perfectly
 // specular (delta) and are sampled but never evaluated.
@@ -81,6 +86,14 @@ struct LobeWeights {
   float pClearcoat;
 };
 
+float clearcoatFresnelWeight(float cosTheta) { return 0.04 + 0.96 * pow(saturate(1.0 - cosTheta), 5.0); }
+
+// Everything below the clearcoat passes it twice.
+float coatAttenuation(DisneyMaterial m, float cosO, float cosI) {
+  float c = 0.25 * m.clearcoat;
+  return (1.0 - c * clearcoatFresnelWeight(cosO)) * (1.0 - c * clearcoatFresnelWeight(cosI));
+}
+
 float3 tintColor(float3 baseColor) {
   float lum = luminance(baseColor);
   return lum > 0.0 ? baseColor / lum : splat3(1.0);
@@ -95,7 +108,8 @@ Ggx disneyGgx(DisneyMaterial m) {
   return g;
 }
 
-bool isSpecularGgx(Ggx g) { return max(g.alphaX, g.alphaY) <= kSpecularAlphaThreshold; }
+// (With a float tolerance: roughness = sqrt(1e-3) squares to 1.0000001e-3.)
+bool isSpecularGgx(Ggx g) { return max(g.alphaX, g.alphaY) <= kSpecularAlphaThreshold * 1.0001; }
 
 // Thin glass scatters with a roughness scaled by the ior (Burley 2015, eq. 11).
 Ggx thinGlassGgx(DisneyMaterial m) {
@@ -146,16 +160,36 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   return w;
 }
 
+// Burley's diffuse with the energy renormalisation of Lagarde & de Rousiers
+// 2014 ("Moving Frostbite to PBR", listing 1), so a white surface never
+// reflects more than it receives; blended with the Hanrahan-Krueger-like flat
+// term by `subsurface`, which is scaled the same way.
 float3 diffuseTerm(DisneyMaterial m, float3 wo, float3 wi, float cosThetaD) {
   if (m.lambertDiffuse) return m.baseColor * kInvPi;
   float fo = schlickWeight(wo.z);
   float fi = schlickWeight(wi.z);
-  float rr = 2.0 * m.roughness * cosThetaD * cosThetaD;
-  float burley = (1.0 - 0.5 * fo) * (1.0 - 0.5 * fi) + rr * (fo + fi + fo * fi * (rr - 1.0));
+  float energyBias = 0.5 * m.roughness;
+  float energyFactor = lerp(1.0, 1.0 / 1.51, m.roughness);
+  float fd90 = energyBias + 2.0 * m.roughness * cosThetaD * cosThetaD;
+  float burley = (1.0 + (fd90 - 1.0) * fo) * (1.0 + (fd90 - 1.0) * fi);
   float fss90 = cosThetaD * cosThetaD * m.roughness;
   float fss = lerp(1.0, fss90, fo) * lerp(1.0, fss90, fi);
   float flatTerm = 1.25 * (fss * (1.0 / (wo.z + wi.z) - 0.5) + 0.5);
-  return m.baseColor * kInvPi * lerp(burley, flatTerm, m.subsurface);
+  return m.baseColor * (kInvPi * energyFactor) * lerp(burley, flatTerm, m.subsurface);
+}
+
+// The share of light that passes a Fresnel-weighted layer on the way in and
+// on the way out; scales the layers below it so energy is not created where
+// Burley's model simply adds them. Reciprocal: symmetric in wo and wi.
+float layerTransmission(float fresnelO, float fresnelI) { return (1.0 - fresnelO) * (1.0 - fresnelI); }
+
+// Attenuation of the diffuse base by the dielectric specular layer and of
+// everything below the clearcoat by the clearcoat.
+float baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
+  float3 f0 = dielectricSpecularF0(m);
+  float specO = luminance(fresnelSchlickFaded(f0, cosO));
+  float specI = luminance(fresnelSchlickFaded(f0, cosI));
+  return layerTransmission(specO, specI) * coatAttenuation(m, cosO, cosI);
 }
 
 float3 sheenTerm(DisneyMaterial m, float cosThetaD) {
@@ -202,15 +236,20 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
   if (wi.z > 0.0) {
     float3 wh = normalize(wo + wi);
     float cosThetaD = dot(wi, wh);
+    float coat = coatAttenuation(m, wo.z, wi.z);
     if (w.diffuse > 0.0) {
-      r.f += w.diffuse * (diffuseTerm(m, wo, wi, cosThetaD) + sheenTerm(m, cosThetaD));
+      r.f += (w.diffuse * baseAttenuation(m, wo.z, wi.z)) *
+             (diffuseTerm(m, wo, wi, cosThetaD) + sheenTerm(m, cosThetaD));
       r.pdf += w.pDiffuse * cosineHemispherePdf(wi.z);
     }
     float vndf = ggxVisibleNormalPdf(g, wo, wh);
-    float jacobian = 1.0 / (4.0 * dot(wo, wh));
+    // wo.wh >= 0 in exact arithmetic; rounding can make it 0 or negative when
+    // wo and wi are nearly opposite at the horizon, where no lobe has density.
+    float cosOH = dot(wo, wh);
+    float jacobian = cosOH > 0.0 ? 1.0 / (4.0 * cosOH) : 0.0;
     if (w.specularLayer > 0.0 && !isSpecularGgx(g)) {
       float dg = ggxD(g, wh) * ggxG2(g, wo, wi) / (4.0 * wo.z * wi.z);
-      r.f += specularFresnel(m, cosThetaD) * dg;
+      r.f += specularFresnel(m, cosThetaD) * (dg * coat);
       r.pdf += w.pSpecular * vndf * jacobian;
     }
     if (w.glass > 0.0) {
@@ -218,7 +257,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
       if (!isSpecularGgx(gg) && eta != 1.0) {
         float fr = fresnelDielectric(dot(wo, wh), eta);
         float dg = ggxD(gg, wh) * ggxG2(gg, wo, wi) / (4.0 * wo.z * wi.z);
-        r.f += splat3(w.glass * fr * dg);
+        r.f += splat3(w.glass * fr * dg * coat);
         r.pdf += w.pGlass * fr * ggxVisibleNormalPdf(gg, wo, wh) * jacobian;
       }
     }
@@ -239,7 +278,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         float3 wh = normalize(wo + wiAbs);
         float fr = fresnelDielectric(dot(wo, wh), eta);
         float dg = ggxD(gg, wh) * ggxG2(gg, wo, wiAbs) / (4.0 * wo.z * wiAbs.z);
-        r.f += m.baseColor * (w.glass * (1.0 - fr) * dg);
+        r.f += m.baseColor * (w.glass * (1.0 - fr) * dg * coatAttenuation(m, wo.z, wiAbs.z));
         r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(gg, wo, wh) / (4.0 * dot(wo, wh));
       }
     } else if (!isSpecularGgx(g)) {
@@ -255,7 +294,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         float dg = ggxD(g, wh) * ggxG2(g, wo, wi);
         // Radiance crossing into a denser medium is compressed by 1 / eta^2.
         float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
-        r.f += m.baseColor * (w.glass * ft);
+        r.f += m.baseColor * (w.glass * ft * coatAttenuation(m, wo.z, abs(wi.z)));
         r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
       }
     }
@@ -291,7 +330,7 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
     s.lobe = BSDF_LOBE_SPECULAR;
     if (isSpecularGgx(g)) {
       s.wi = float3(-wo.x, -wo.y, wo.z * side);
-      s.weight = specularFresnel(m, wo.z) / w.pSpecular;
+      s.weight = specularFresnel(m, wo.z) * (coatAttenuation(m, wo.z, wo.z) / w.pSpecular);
       s.isDelta = true;
       return s;
     }
@@ -329,7 +368,9 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
       s.wi = float3(wi.x, wi.y, wi.z * side);
       // Chosen with probability pGlass * (fr or 1 - fr), which cancels the Fresnel factor.
       float scale = m.thin ? 1.0 : 1.0 / (eta * eta);
-      s.weight = reflected ? splat3(w.glass / w.pGlass) : m.baseColor * (w.glass * scale / w.pGlass);
+      float coat = coatAttenuation(m, wo.z, abs(wi.z));
+      s.weight = reflected ? splat3(w.glass * coat / w.pGlass)
+                           : m.baseColor * (w.glass * scale * coat / w.pGlass);
       s.isDelta = true;
       return s;
     }
