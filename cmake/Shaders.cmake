@@ -25,6 +25,9 @@
 set(DXC_EXECUTABLE "" CACHE FILEPATH "DirectX Shader Compiler used to build the D3D12 backend's DXIL")
 if(NOT DXC_EXECUTABLE)
   set(_dxc_hints)
+  if(VCPKG_INSTALLED_DIR AND VCPKG_TARGET_TRIPLET)  # vcpkg's directx-dxc port
+    list(APPEND _dxc_hints "${VCPKG_INSTALLED_DIR}/${VCPKG_TARGET_TRIPLET}/tools/directx-dxc")
+  endif()
   if(DEFINED ENV{VULKAN_SDK})
     list(APPEND _dxc_hints "$ENV{VULKAN_SDK}/Bin" "$ENV{VULKAN_SDK}/bin")
   endif()

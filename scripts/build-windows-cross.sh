@@ -21,4 +21,17 @@ cmake -S . -B build-mingw -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPENUMBRA_HOST_TOOLS_DIR="$host_tools" -DPENUMBRA_BUILD_TESTS=OFF \
   -DPENUMBRA_WARNINGS_AS_ERRORS=$werror
 cmake --build build-mingw --parallel "$(nproc)"
-echo "build-windows-cross.sh: built build-mingw/apps/render/penumbra.exe"
+
+# The result must be a 64-bit Windows executable that needs nothing but
+# system DLLs (d3d12.dll, dxgi.dll and vulkan-1.dll are opened at run time).
+exe=build-mingw/apps/render/penumbra.exe
+x86_64-w64-mingw32-objdump -f "$exe" | grep -q "file format pei-x86-64" ||
+  { echo "build-windows-cross.sh: $exe is not a PE32+ x86-64 executable" >&2; exit 1; }
+imports=$(x86_64-w64-mingw32-objdump -p "$exe" | awk '/DLL Name:/ {print $3}' | sort -u | tr '\n' ' ')
+for dll in $imports; do
+  case "${dll,,}" in
+    kernel32.dll|msvcrt.dll|user32.dll|advapi32.dll|shell32.dll|ole32.dll|ws2_32.dll) ;;
+    *) echo "build-windows-cross.sh: $exe imports $dll, which Windows does not ship" >&2; exit 1 ;;
+  esac
+done
+echo "build-windows-cross.sh: built $exe (imports: $imports)"
