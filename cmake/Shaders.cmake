@@ -1,19 +1,107 @@
-# penumbra_add_shaders(TARGET name NAMESPACE ns SOURCES files... INCLUDE_DIRS dirs...)
+# penumbra_add_shaders(TARGET name NAMESPACE ns SOURCES files... INCLUDE_DIRS dirs...
+#                      [HLSL_DIR dir HLSL_INCLUDE_DIRS dirs...])
 #
-# Compiles each GLSL ray-tracing/compute entry point (and .hlsl compute
-# harnesses through glslang's HLSL front-end) to SPIR-V at build time and
-# embeds the words in a static library. glslang writes a depfile, so editing an
-# included .hlsli recompiles exactly the shaders that include it.
+# Builds every entry point for both APIs and embeds the results in a static
+# library:
+# - SPIR-V: each GLSL ray-tracing/compute entry point (and .hlsl compute
+#   harnesses through glslang's HLSL front-end) is compiled by glslang. glslang
+#   writes a depfile, so editing an included .hlsli recompiles exactly the
+#   shaders that include it.
+# - DXIL: with HLSL_DIR, every GLSL source X has a DXR twin HLSL_DIR/X.hlsl
+#   (configure fails if one is missing). Where DXC was found (see below) it is
+#   compiled with -T lib_6_3 (ray-tracing stages) or -T cs_6_3 (compute);
+#   without DXC the DXIL is empty and the D3D12 backend says so at pipeline
+#   creation.
+# - Binding layout: penumbra_shader_layout (tools/shader_layout) reflects the
+#   SPIR-V at build time and writes it, the SPIR-V and the DXIL into one
+#   generated header per shader.
 #
-# The library exposes <ns>::find(name) in the generated header <TARGET>.h;
-# `name` is the source file name, e.g. "path_trace.rgen".
+# The generated header <TARGET>.h declares, in namespace <ns>:
+#   std::span<const uint32_t> find(name);   // SPIR-V words, empty if unknown
+#   rhi::ShaderDesc shaderDesc(name);        // everything a backend needs
+# where `name` is the source file name, e.g. "path_trace.rgen".
+
+# --- DXC: Windows SDK, Vulkan SDK, PATH, or -DDXC_EXECUTABLE=... -------------
+set(DXC_EXECUTABLE "" CACHE FILEPATH "DirectX Shader Compiler used to build the D3D12 backend's DXIL")
+if(NOT DXC_EXECUTABLE)
+  set(_dxc_hints)
+  if(VCPKG_INSTALLED_DIR AND VCPKG_TARGET_TRIPLET)  # vcpkg's directx-dxc port
+    list(APPEND _dxc_hints "${VCPKG_INSTALLED_DIR}/${VCPKG_TARGET_TRIPLET}/tools/directx-dxc")
+  endif()
+  if(DEFINED ENV{VULKAN_SDK})
+    list(APPEND _dxc_hints "$ENV{VULKAN_SDK}/Bin" "$ENV{VULKAN_SDK}/bin")
+  endif()
+  # Windows SDKs install dxc.exe under Windows Kits/10/bin/<version>/x64; newest first.
+  file(GLOB _sdk_bins LIST_DIRECTORIES true "C:/Program Files (x86)/Windows Kits/10/bin/10.*")
+  list(SORT _sdk_bins COMPARE NATURAL ORDER DESCENDING)
+  foreach(dir ${_sdk_bins})
+    list(APPEND _dxc_hints "${dir}/x64")
+  endforeach()
+  find_program(_dxc_found NAMES dxc HINTS ${_dxc_hints} NO_CACHE)
+  if(_dxc_found)
+    set(DXC_EXECUTABLE "${_dxc_found}" CACHE FILEPATH "" FORCE)
+  endif()
+endif()
+if(DXC_EXECUTABLE)
+  message(STATUS "Penumbra: DXIL for the D3D12 backend is compiled with ${DXC_EXECUTABLE}")
+else()
+  message(STATUS "Penumbra: DXC NOT FOUND - this build embeds no DXIL, so the D3D12 backend "
+                 "cannot create pipelines. Install the Windows SDK or the Vulkan SDK, or pass "
+                 "-DDXC_EXECUTABLE=/path/to/dxc.")
+endif()
+
+# --- The reflection tool: built here, or taken from a native build ---------
+# A cross build cannot run what it builds, so it names a native build's tool
+# directory (scripts/build-windows-cross.sh passes build/tools/shader_layout).
+set(PENUMBRA_HOST_TOOLS_DIR "" CACHE PATH
+    "Directory holding a native penumbra_shader_layout (required when cross-compiling)")
+if(CMAKE_CROSSCOMPILING)
+  if(NOT PENUMBRA_HOST_TOOLS_DIR)
+    message(FATAL_ERROR "Cross-compiling needs -DPENUMBRA_HOST_TOOLS_DIR=<native build>/tools/shader_layout "
+                        "(the build-time shader reflection tool must run on this machine)")
+  endif()
+  find_program(PENUMBRA_SHADER_LAYOUT penumbra_shader_layout PATHS ${PENUMBRA_HOST_TOOLS_DIR}
+               NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH REQUIRED)
+  set(_penumbra_layout_command ${PENUMBRA_SHADER_LAYOUT})
+  set(_penumbra_layout_depends ${PENUMBRA_SHADER_LAYOUT})
+else()
+  set(_penumbra_layout_command $<TARGET_FILE:penumbra_shader_layout>)
+  set(_penumbra_layout_depends penumbra_shader_layout)
+endif()
+
+function(_penumbra_shader_stage name out)
+  if(name MATCHES "\\.rgen$")
+    set(stage RayGeneration)
+  elseif(name MATCHES "\\.rmiss$")
+    set(stage Miss)
+  elseif(name MATCHES "\\.rchit$")
+    set(stage ClosestHit)
+  elseif(name MATCHES "\\.rahit$")
+    set(stage AnyHit)
+  elseif(name MATCHES "\\.rint$")
+    set(stage Intersection)
+  elseif(name MATCHES "\\.(comp|hlsl)$")
+    set(stage Compute)
+  else()
+    message(FATAL_ERROR "penumbra_add_shaders: cannot tell the stage of '${name}'")
+  endif()
+  set(${out} ${stage} PARENT_SCOPE)
+endfunction()
+
 function(penumbra_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;NAMESPACE" "SOURCES;INCLUDE_DIRS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;NAMESPACE;HLSL_DIR" "SOURCES;INCLUDE_DIRS;HLSL_INCLUDE_DIRS" ${ARGN})
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
   file(MAKE_DIRECTORY ${out_dir})
   set(include_flags)
   foreach(dir ${ARG_INCLUDE_DIRS})
     list(APPEND include_flags -I${dir})
+  endforeach()
+  set(hlsl_include_flags)
+  set(hlsl_depends)
+  foreach(dir ${ARG_HLSL_INCLUDE_DIRS})
+    list(APPEND hlsl_include_flags -I ${dir})
+    file(GLOB headers ${dir}/*.hlsli ${dir}/*.h)
+    list(APPEND hlsl_depends ${headers})
   endforeach()
 
   set(headers)
@@ -22,7 +110,9 @@ function(penumbra_add_shaders)
   foreach(src ${ARG_SOURCES})
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME)
-    string(MAKE_C_IDENTIFIER "spirv_${name}" var)
+    string(MAKE_C_IDENTIFIER "shader_${name}" var)
+    _penumbra_shader_stage(${name} stage)
+    set(spv ${out_dir}/${name}.spv)
     set(header ${out_dir}/${name}.h)
     set(lang_flags --target-env vulkan1.2)
     if(name MATCHES "\\.hlsl$")
@@ -35,16 +125,51 @@ function(penumbra_add_shaders)
       set(lang_flags --target-env vulkan1.1 -D -S comp -e main)
     endif()
     add_custom_command(
-      OUTPUT ${header}
+      OUTPUT ${spv}
       COMMAND ${GLSLANG_VALIDATOR} ${lang_flags} ${include_flags} --quiet
-              --depfile ${header}.d --vn ${var} -o ${header} ${abs}
+              --depfile ${spv}.d -o ${spv} ${abs}
       DEPENDS ${abs}
-      DEPFILE ${header}.d
+      DEPFILE ${spv}.d
       COMMENT "glslang ${name}"
+      VERBATIM)
+
+    set(dxil_args)
+    set(dxil_depends)
+    if(ARG_HLSL_DIR AND NOT name MATCHES "\\.hlsl$")
+      set(hlsl ${ARG_HLSL_DIR}/${name}.hlsl)
+      if(NOT EXISTS ${hlsl})
+        message(FATAL_ERROR "penumbra_add_shaders: ${src} has no DXR twin ${hlsl}")
+      endif()
+      if(DXC_EXECUTABLE)
+        set(dxil ${out_dir}/${name}.dxil)
+        if(stage STREQUAL "Compute")
+          set(profile -T cs_6_3 -E main)
+        else()
+          set(profile -T lib_6_3)
+        endif()
+        add_custom_command(
+          OUTPUT ${dxil}
+          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 ${hlsl_include_flags} -Fo ${dxil} ${hlsl}
+          DEPENDS ${hlsl} ${hlsl_depends}
+          COMMENT "dxc ${name}.hlsl"
+          VERBATIM)
+        set(dxil_args --dxil ${dxil})
+        set(dxil_depends ${dxil})
+      endif()
+    endif()
+
+    add_custom_command(
+      OUTPUT ${header}
+      COMMAND ${_penumbra_layout_command} --name ${name} --var ${var} --spirv ${spv} ${dxil_args}
+              --out ${header}
+      DEPENDS ${spv} ${dxil_depends} ${_penumbra_layout_depends}
+      COMMENT "reflect + embed ${name}"
       VERBATIM)
     list(APPEND headers ${header})
     string(APPEND includes "#include \"${name}.h\"\n")
-    string(APPEND table_entries "    {\"${name}\", {${var}, sizeof(${var}) / sizeof(uint32_t)}},\n")
+    string(APPEND table_entries
+      "    {\"${name}\", rhi::ShaderStage::${stage}, ${var}_spirv, "
+      "{${var}_dxil, ${var}_dxil_bytes}, ${var}_record_bytes, &${var}_layout},\n")
   endforeach()
 
   set(table_cpp ${out_dir}/${ARG_TARGET}.cpp)
@@ -55,30 +180,66 @@ function(penumbra_add_shaders)
 #include <cstdint>
 #include <span>
 #include <string_view>
+
+#include "rhi/pipeline.h"
+
 namespace @namespace@ {
 // SPIR-V words of an embedded shader by source file name; empty if unknown.
 std::span<const uint32_t> find(std::string_view name);
+// The shader in both APIs' forms with its build-time reflected layout;
+// exportName = name. Throws penumbra::Error if no such shader is embedded.
+rhi::ShaderDesc shaderDesc(std::string_view name);
 }
 ]=] @ONLY)
   file(CONFIGURE OUTPUT ${table_cpp} CONTENT [=[
-// Generated by cmake/Shaders.cmake: the SPIR-V of every shader, by file name.
+// Generated by cmake/Shaders.cmake: every shader's SPIR-V, DXIL and
+// reflected binding layout, by file name.
 #include "@ARG_TARGET@.h"
-#include <array>
-#include <cstdint>
-#include <utility>
+
+#include <string>
+
+#include "util/error.h"
 @includes@
 namespace @namespace@ {
 namespace {
-const std::pair<std::string_view, std::span<const uint32_t>> kShaders[] = {
+namespace rhi = penumbra::rhi;
+struct Entry {
+  std::string_view name;
+  rhi::ShaderStage stage;
+  std::span<const uint32_t> spirv;
+  std::span<const uint8_t> dxil;
+  uint32_t shaderRecordBytes;
+  rhi::PipelineBindingLayout (*layout)();
+};
+const Entry kShaders[] = {
 @table_entries@};
+const Entry* lookup(std::string_view name) {
+  for (const auto& entry : kShaders)
+    if (entry.name == name) return &entry;
+  return nullptr;
 }
+}  // namespace
+
 std::span<const uint32_t> find(std::string_view name) {
-  for (const auto& [shaderName, words] : kShaders)
-    if (shaderName == name) return words;
-  return {};
+  const Entry* entry = lookup(name);
+  return entry ? entry->spirv : std::span<const uint32_t>{};
+}
+
+rhi::ShaderDesc shaderDesc(std::string_view name) {
+  const Entry* entry = lookup(name);
+  if (!entry) throw penumbra::Error("shader '" + std::string(name) + "' is not embedded in this build");
+  rhi::ShaderDesc desc;
+  desc.stage = entry->stage;
+  desc.spirv = entry->spirv;
+  desc.dxil = entry->dxil;
+  desc.bindingLayout = entry->layout();
+  desc.shaderRecordBytes = entry->shaderRecordBytes;
+  desc.exportName = std::string(name);
+  return desc;
 }
 }  // namespace @namespace@
 ]=] @ONLY)
   add_library(${ARG_TARGET} STATIC ${table_cpp} ${headers})
   target_include_directories(${ARG_TARGET} PRIVATE ${out_dir} PUBLIC ${out_dir}/include)
+  target_link_libraries(${ARG_TARGET} PUBLIC penumbra_rhi)
 endfunction()

@@ -2,8 +2,9 @@
 # Installs every Debian package Penumbra needs to build, test and run on
 # Debian 12 (bookworm). Idempotent: packages already present are left alone.
 #
-# bookworm's own Mesa (22.3) has no ray tracing in lavapipe and its Catch2 is
-# 2.x, so those two come from bookworm-backports. The backports entry is
+# bookworm's own Mesa (22.3) has no ray tracing in lavapipe, its Catch2 is
+# 2.x and its DirectX-Headers older than the D3D12 backend uses, so those
+# three come from bookworm-backports. The backports entry is
 # derived from the machine's existing Debian source entry (same archive, same
 # keyring) so no archive address is written into this repository.
 set -euo pipefail
@@ -23,8 +24,11 @@ BASE_PACKAGES=(
   libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-dev libstb-dev
   libtinyexr-dev libfmt-dev libboost-dev
   clang-format
+  # The Windows cross build (scripts/build-windows-cross.sh): compiler, and
+  # zlib for tinyexr; DirectX-Headers come from backports below.
+  g++-mingw-w64-x86-64-posix libz-mingw-w64-dev
 )
-BACKPORT_PACKAGES=(mesa-vulkan-drivers catch2)
+BACKPORT_PACKAGES=(mesa-vulkan-drivers catch2 directx-headers-dev)
 
 missing=()
 for p in "${BASE_PACKAGES[@]}" "${BACKPORT_PACKAGES[@]}"; do
@@ -35,6 +39,9 @@ mesa_version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || 
 case "$mesa_version" in 2[5-9].*|[3-9][0-9].*) ;; *) missing+=(mesa-vulkan-drivers) ;; esac
 catch_version=$(dpkg-query -W -f='${Version}' catch2 2>/dev/null || true)
 case "$catch_version" in 3.*) ;; *) missing+=(catch2) ;; esac
+# DirectX-Headers 1.614 (backports) for DXR 1.1 declarations; bookworm has 1.606.
+dxh_version=$(dpkg-query -W -f='${Version}' directx-headers-dev 2>/dev/null || true)
+case "$dxh_version" in 1.61[4-9]*|1.6[2-9]*|1.[7-9]*|[2-9].*) ;; *) missing+=(directx-headers-dev) ;; esac
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup.sh: all packages present"

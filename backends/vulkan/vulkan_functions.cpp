@@ -1,7 +1,18 @@
 #include "vulkan_functions.h"
 
-#include <dlfcn.h>
 #include <fmt/format.h>
+
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>
+#else
+#include <dlfcn.h>
+#endif
 
 #include <mutex>
 
@@ -22,6 +33,15 @@ std::mutex gMutex;
 void loadLoader() {
   std::lock_guard lock(gMutex);
   if (gGetInstanceProcAddr) return;
+#ifdef _WIN32
+  // The loader ships with every GPU driver (and the Vulkan runtime) as vulkan-1.dll.
+  HMODULE library = LoadLibraryA("vulkan-1.dll");
+  if (!library) throw Error("vulkan: no Vulkan loader found (vulkan-1.dll); install a GPU driver with Vulkan");
+  // FARPROC -> the documented signature, through void* (-Wcast-function-type).
+  gGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(
+      reinterpret_cast<void*>(GetProcAddress(library, "vkGetInstanceProcAddr")));
+  if (!gGetInstanceProcAddr) throw Error("vulkan: vulkan-1.dll has no vkGetInstanceProcAddr");
+#else
   void* library = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
   if (!library) library = dlopen("libvulkan.so", RTLD_NOW | RTLD_LOCAL);
   if (!library)
@@ -29,6 +49,7 @@ void loadLoader() {
   gGetInstanceProcAddr =
       reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(library, "vkGetInstanceProcAddr"));
   if (!gGetInstanceProcAddr) throw Error("vulkan: libvulkan.so.1 has no vkGetInstanceProcAddr");
+#endif
 #define PENUMBRA_VK_LOAD_GLOBAL(name) \
   name = reinterpret_cast<PFN_##name>(gGetInstanceProcAddr(nullptr, #name));
   PENUMBRA_VK_LOADER_FUNCTIONS(PENUMBRA_VK_LOAD_GLOBAL)

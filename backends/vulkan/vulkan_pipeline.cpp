@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "rhi/shader_reflection.h"
+#include "rhi/binding_layout.h"
 #include "rhi/shader_table_layout.h"
 #include "util/error.h"
 #include "vulkan_backend.h"
@@ -35,9 +35,9 @@ VkShaderStageFlagBits toVkStage(rhi::ShaderStage stage) {
 }
 
 std::span<const uint32_t> spirvOf(const rhi::ShaderDesc& shader) {
-  if (!shader.bytecode || shader.byteSize == 0 || shader.byteSize % 4 != 0)
+  if (shader.spirv.empty())
     throw Error(fmt::format("vulkan: shader '{}' has no SPIR-V", shader.exportName));
-  return {static_cast<const uint32_t*>(shader.bytecode), shader.byteSize / 4};
+  return shader.spirv;
 }
 
 VkShaderModule createModule(VulkanDevice& device, const rhi::ShaderDesc& shader) {
@@ -92,7 +92,7 @@ VulkanPipelineLayout::~VulkanPipelineLayout() {
 VulkanComputePipeline::VulkanComputePipeline(VulkanDevice& device, const rhi::ComputePipelineDesc& desc)
     : device_(device) {
   rhi::PipelineBindingLayout reflected;
-  reflectSpirv(spirvOf(desc.shader), desc.shader.exportName, reflected);
+  rhi::mergeBindingLayout(reflected, desc.shader.bindingLayout, desc.shader.exportName);
   layout_ = std::make_unique<VulkanPipelineLayout>(device_, std::move(reflected),
                                                    VK_SHADER_STAGE_COMPUTE_BIT);
   VkShaderModule module = createModule(device_, desc.shader);
@@ -133,7 +133,7 @@ VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
     if (!stageIndex.emplace(shader.exportName, uint32_t(stages.size())).second)
       throw Error(fmt::format("vulkan: pipeline '{}': export name '{}' used twice",
                               desc.debugName, shader.exportName));
-    reflectSpirv(spirvOf(shader), shader.exportName, reflected);
+    rhi::mergeBindingLayout(reflected, shader.bindingLayout, shader.exportName);
     modules.push_back(createModule(device_, shader));
     VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     s.stage = toVkStage(shader.stage);

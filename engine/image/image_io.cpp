@@ -40,7 +40,11 @@ void writeAtomically(const std::string& path, Write write) {
     std::remove(tmp.c_str());
     throw Error(fmt::format("output '{}': {}", path, reason.empty() ? "write failed" : reason));
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  // std::filesystem::rename replaces an existing file on Windows too
+  // (MoveFileEx with MOVEFILE_REPLACE_EXISTING); std::rename does not there.
+  std::error_code error;
+  std::filesystem::rename(tmp, path, error);
+  if (error) {
     std::remove(tmp.c_str());
     throw Error(fmt::format("output '{}': cannot move the finished file into place", path));
   }

@@ -22,17 +22,6 @@ rhi::rt::AffineTransform toAffine(const glm::mat4& m) {
   return t;
 }
 
-rhi::ShaderDesc shader(rhi::ShaderStage stage, const char* file) {
-  auto words = shaders::find(file);
-  if (words.empty()) throw Error(fmt::format("path tracer: shader '{}' is not embedded", file));
-  rhi::ShaderDesc d;
-  d.stage = stage;
-  d.bytecode = words.data();
-  d.byteSize = words.size_bytes();
-  d.exportName = file;
-  return d;
-}
-
 template <class T>
 rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& data,
                                     rhi::BufferUsage extra, const char* name) {
@@ -237,14 +226,11 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 }
 
 void PathTracer::createPipeline() {
-  using rhi::ShaderStage;
   rhi::RayTracingPipelineDesc desc;
   desc.debugName = "path tracer";
-  desc.shaders = {shader(ShaderStage::RayGeneration, "path_trace.rgen"),
-                  shader(ShaderStage::RayGeneration, "whitted.rgen"),
-                  shader(ShaderStage::Miss, "path_trace.rmiss"),
-                  shader(ShaderStage::Miss, "shadow.rmiss"),
-                  shader(ShaderStage::ClosestHit, "triangle.rchit")};
+  desc.shaders = {shaders::shaderDesc("path_trace.rgen"), shaders::shaderDesc("whitted.rgen"),
+                  shaders::shaderDesc("path_trace.rmiss"), shaders::shaderDesc("shadow.rmiss"),
+                  shaders::shaderDesc("triangle.rchit")};
   desc.hitGroups = {{"triangles", "triangle.rchit", "", "", false}};
   desc.maxPayloadBytes = 36;  // SurfaceHit
   desc.maxRecursionDepth = 1; // only the ray generation shader traces

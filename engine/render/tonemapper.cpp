@@ -9,13 +9,8 @@
 namespace penumbra::render {
 
 Tonemapper::Tonemapper(rhi::IDevice& device) : device_(device) {
-  auto words = shaders::find("tonemap.comp");
-  if (words.empty()) throw Error("tonemapper: shader 'tonemap.comp' is not embedded");
   rhi::ComputePipelineDesc desc;
-  desc.shader.stage = rhi::ShaderStage::Compute;
-  desc.shader.bytecode = words.data();
-  desc.shader.byteSize = words.size_bytes();
-  desc.shader.exportName = "tonemap.comp";
+  desc.shader = shaders::shaderDesc("tonemap.comp");
   desc.debugName = "tonemap";
   pipeline_ = device_.createComputePipeline(desc);
   commandList_ = device_.createCommandList();

@@ -1,6 +1,7 @@
 #pragma once
 // Shaders, binding layouts, binding sets, pipelines and shader tables.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "rhi/resources.h"
@@ -9,7 +10,10 @@ namespace penumbra::rhi {
 
 // ---- Binding model -------------------------------------------------------
 // A pipeline's binding layout is derived from its shaders' SPIR-V by
-// reflection (engine/rhi/shader_reflection.h), never written by hand.
+// reflection, never written by hand: at build time, tools/shader_layout
+// reflects every compiled shader (engine/rhi/shader_reflection.h) and the
+// generated shader table hands the result to ShaderDesc::bindingLayout, so
+// neither backend needs SPIR-V tooling at run time.
 // space N = Vulkan descriptor set N = D3D12 register space N; the slot is the
 // Vulkan binding number, which encodes the D3D12 register through the shift
 // table in register_shifts.h.
@@ -27,6 +31,10 @@ struct BindingLayoutItem {
   ResourceType type = ResourceType::StorageBuffer;
   uint32_t arraySize = 1;
   bool writable = false;  // UAV rather than SRV on D3D12
+  // Storage buffers: bytes per element of the (RW)StructuredBuffer the shader
+  // sees (the runtime array's stride, else the block's size). D3D12 structured
+  // views need it; Vulkan ignores it.
+  uint32_t structureStride = 0;
   std::string name;       // the shader's variable/block name, for error messages
 };
 
@@ -79,12 +87,22 @@ using BindingSetHandle = std::shared_ptr<IBindingSet>;
 
 // ---- Shaders and pipelines ----------------------------------------------
 
-// One entry point. On Vulkan `bytecode` is SPIR-V, on D3D12 a DXIL library.
-// The bytes must outlive pipeline creation only.
+// One entry point in both APIs' forms; each backend takes the one it needs.
+// The generated shader tables (cmake/Shaders.cmake: <ns>::shaderDesc(name))
+// fill every field. The bytes must outlive pipeline creation only.
 struct ShaderDesc {
   ShaderStage stage = ShaderStage::Compute;
-  const void* bytecode = nullptr;
-  size_t byteSize = 0;
+  std::span<const uint32_t> spirv;  // Vulkan: SPIR-V words
+  // D3D12: DXIL, a library (-T lib_6_3) for ray-tracing stages or a compute
+  // object (-T cs_6_3); empty when the build had no DXC.
+  std::span<const uint8_t> dxil;
+  // What this shader declares (resources, push constants), reflected from its
+  // SPIR-V at build time. Backends merge the shaders' layouts into the
+  // pipeline's (binding_layout.h).
+  PipelineBindingLayout bindingLayout;
+  // Bytes of local data the shader reads from its shader-table record
+  // (Vulkan shaderRecordEXT; D3D12 local root constants).
+  uint32_t shaderRecordBytes = 0;
   std::string entryPoint = "main";  // name inside the module / DXIL library
   std::string exportName;           // name used by hit groups and shader tables
 };

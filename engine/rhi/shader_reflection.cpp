@@ -10,38 +10,32 @@
 namespace penumbra::rhi {
 namespace {
 
-void addItem(PipelineBindingLayout& layout, uint32_t space, BindingLayoutItem item,
-             const std::string& moduleName) {
-  if (layout.spaces.size() <= space) layout.spaces.resize(space + 1);
-  for (uint32_t i = 0; i < layout.spaces.size(); ++i) layout.spaces[i].space = i;
-  auto& items = layout.spaces[space].items;
-  auto existing = std::find_if(items.begin(), items.end(),
-                               [&](const BindingLayoutItem& it) { return it.slot == item.slot; });
-  if (existing != items.end()) {
-    if (existing->type != item.type || existing->arraySize != item.arraySize)
-      throw Error(fmt::format("shader '{}': binding (space {}, slot {}) '{}' is a {} but another "
-                              "shader declares '{}' there as a {}",
-                              moduleName, space, item.slot, item.name, resourceTypeName(item.type),
-                              existing->name, resourceTypeName(existing->type)));
-    existing->writable = existing->writable || item.writable;
-    return;
-  }
-  items.push_back(std::move(item));
-  std::sort(items.begin(), items.end(),
-            [](const BindingLayoutItem& a, const BindingLayoutItem& b) { return a.slot < b.slot; });
-}
-
 uint32_t arraySizeOf(const spirv_cross::Compiler& compiler, const spirv_cross::Resource& resource) {
   const auto& type = compiler.get_type(resource.type_id);
   return type.array.empty() ? 1u : type.array[0];
 }
 
+// The element size of the (RW)StructuredBuffer<T> a storage block stands for:
+// a trailing runtime array's stride (`buffer B { T data[]; }`), else the
+// whole block (`buffer B { uint count; }` is a one-element buffer).
+uint32_t structureStrideOf(const spirv_cross::Compiler& compiler, const spirv_cross::Resource& r) {
+  const auto& block = compiler.get_type(r.base_type_id);
+  if (!block.member_types.empty()) {
+    const uint32_t last = uint32_t(block.member_types.size() - 1);
+    const auto& member = compiler.get_type(block.member_types[last]);
+    if (!member.array.empty() && member.array.back() == 0)
+      return compiler.type_struct_member_array_stride(block, last);
+  }
+  return uint32_t(compiler.get_declared_struct_size(block));
+}
+
 }  // namespace
 
-void reflectSpirv(std::span<const uint32_t> spirv, const std::string& moduleName,
-                  PipelineBindingLayout& layout) {
+ShaderReflection reflectSpirvModule(std::span<const uint32_t> spirv, const std::string& moduleName) {
+  if (spirv.empty()) throw Error(fmt::format("shader '{}': no SPIR-V to reflect", moduleName));
   spirv_cross::Compiler compiler(spirv.data(), spirv.size());
   auto resources = compiler.get_shader_resources();
+  ShaderReflection result;
 
   auto add = [&](const spirv_cross::SmallVector<spirv_cross::Resource>& list, ResourceType type,
                  bool storage) {
@@ -57,8 +51,9 @@ void reflectSpirv(std::span<const uint32_t> spirv, const std::string& moduleName
                                   : compiler.get_buffer_block_flags(r.id).get(spv::DecorationNonWritable);
         item.writable = !readOnly;
       }
-      addItem(layout, compiler.get_decoration(r.id, spv::DecorationDescriptorSet), std::move(item),
-              moduleName);
+      if (type == ResourceType::StorageBuffer) item.structureStride = structureStrideOf(compiler, r);
+      addBindingLayoutItem(result.layout, compiler.get_decoration(r.id, spv::DecorationDescriptorSet),
+                           std::move(item), moduleName);
     }
   };
   add(resources.acceleration_structures, ResourceType::AccelStruct, false);
@@ -71,45 +66,20 @@ void reflectSpirv(std::span<const uint32_t> spirv, const std::string& moduleName
                             moduleName));
   for (const auto& pc : resources.push_constant_buffers) {
     const auto& type = compiler.get_type(pc.base_type_id);
-    layout.pushConstantBytes =
-        std::max(layout.pushConstantBytes, uint32_t(compiler.get_declared_struct_size(type)));
+    result.layout.pushConstantBytes =
+        std::max(result.layout.pushConstantBytes, uint32_t(compiler.get_declared_struct_size(type)));
   }
+  for (const auto& record : resources.shader_record_buffers) {
+    const auto& type = compiler.get_type(record.base_type_id);
+    result.shaderRecordBytes =
+        std::max(result.shaderRecordBytes, uint32_t(compiler.get_declared_struct_size(type)));
+  }
+  return result;
 }
 
-void validateBindingSet(const BindingSetDesc& set, const PipelineBindingLayout& layout) {
-  const std::string setName = set.debugName.empty() ? "binding set" : set.debugName;
-  if (set.space >= layout.spaces.size() || layout.spaces[set.space].items.empty()) {
-    if (set.items.empty()) return;
-    throw Error(fmt::format("{}: the pipeline's shaders declare nothing in space {}", setName,
-                            set.space));
-  }
-  const auto& expected = layout.spaces[set.space].items;
-  for (const auto& item : set.items) {
-    auto it = std::find_if(expected.begin(), expected.end(),
-                           [&](const BindingLayoutItem& e) { return e.slot == item.slot; });
-    if (it == expected.end())
-      throw Error(fmt::format("{}: slot {} is not declared by the pipeline's shaders", setName,
-                              item.slot));
-    if (it->type != item.type)
-      throw Error(fmt::format("{}: slot {} ('{}') is a {} in the shaders but a {} was bound",
-                              setName, item.slot, it->name, resourceTypeName(it->type),
-                              resourceTypeName(item.type)));
-    const bool empty = (item.type == ResourceType::AccelStruct && !item.accelStruct) ||
-                       (item.type == ResourceType::StorageTexture && !item.texture) ||
-                       ((item.type == ResourceType::StorageBuffer ||
-                         item.type == ResourceType::ConstantBuffer) &&
-                        !item.buffer);
-    if (empty)
-      throw Error(fmt::format("{}: slot {} ('{}') is bound to nothing", setName, item.slot,
-                              it->name));
-  }
-  for (const auto& e : expected) {
-    auto count = std::count_if(set.items.begin(), set.items.end(),
-                               [&](const BindingSetItem& i) { return i.slot == e.slot; });
-    if (count != 1)
-      throw Error(fmt::format("{}: slot {} ('{}') is bound {} times, expected once", setName,
-                              e.slot, e.name, count));
-  }
+void reflectSpirv(std::span<const uint32_t> spirv, const std::string& moduleName,
+                  PipelineBindingLayout& layout) {
+  mergeBindingLayout(layout, reflectSpirvModule(spirv, moduleName).layout, moduleName);
 }
 
 }  // namespace penumbra::rhi

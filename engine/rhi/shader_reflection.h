@@ -1,21 +1,29 @@
 #pragma once
-// Derives a pipeline's binding layout from its shaders' SPIR-V (SPIRV-Cross),
-// so the layout is never written a second time by hand.
+// Derives a shader's binding layout from its SPIR-V (SPIRV-Cross), so the
+// layout is never written a second time by hand. Runs on the build machine
+// (tools/shader_layout writes the result beside the embedded SPIR-V) and in
+// Linux tests; the engine and the backends take the build-time result from
+// ShaderDesc::bindingLayout and never link SPIRV-Cross.
 #include <cstdint>
 #include <span>
+#include <string>
 
-#include "rhi/pipeline.h"
+#include "rhi/binding_layout.h"
 
 namespace penumbra::rhi {
 
-// Adds the resources one SPIR-V module declares to `layout`. A slot declared by
-// several modules must agree in type and array size, else penumbra::Error.
+struct ShaderReflection {
+  PipelineBindingLayout layout;
+  uint32_t shaderRecordBytes = 0;  // size of the shaderRecordEXT block, 0 if none
+};
+
+// What one SPIR-V module declares. Throws penumbra::Error for resources the
+// RHI does not model (sampled textures, samplers).
+ShaderReflection reflectSpirvModule(std::span<const uint32_t> spirv, const std::string& moduleName);
+
+// Adds the resources one SPIR-V module declares to `layout`
+// (reflectSpirvModule + mergeBindingLayout).
 void reflectSpirv(std::span<const uint32_t> spirv, const std::string& moduleName,
                   PipelineBindingLayout& layout);
-
-// Checks a binding set against the layout of its space: every slot of the
-// layout filled once with a resource of the right type, no unknown slots.
-// Throws penumbra::Error naming the slot and shader variable otherwise.
-void validateBindingSet(const BindingSetDesc& set, const PipelineBindingLayout& layout);
 
 }  // namespace penumbra::rhi

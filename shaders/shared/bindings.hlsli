@@ -7,4 +7,18 @@
 #define PENUMBRA_T(n) (32 + (n))
 #define PENUMBRA_U(n) (64 + (n))
 #define PENUMBRA_S(n) (96 + (n))
+
+// D3D12 root constants (engine/rhi/root_signature_layout.h): the push-constant
+// block of a DXR/compute entry point and a shader's local record data. HLSL:
+//   [[vk::push_constant]] ConstantBuffer<T> gPush : PENUMBRA_PUSH_CONSTANTS;
+//   [[vk::shader_record_ext]] ConstantBuffer<R> gRecord : PENUMBRA_SHADER_RECORD;
+#define PENUMBRA_PUSH_CONSTANTS register(b0, space900)
+// register(tN) etc. from a macro that expands to the number N, so DXR entry
+// points take register numbers from the same *_shared.h defines as the host.
+#define PENUMBRA_CAT_(a, b) a##b
+#define PENUMBRA_CAT(a, b) PENUMBRA_CAT_(a, b)
+#define PENUMBRA_REGISTER_B(n) register(PENUMBRA_CAT(b, n))
+#define PENUMBRA_REGISTER_T(n) register(PENUMBRA_CAT(t, n))
+#define PENUMBRA_REGISTER_U(n) register(PENUMBRA_CAT(u, n))
+#define PENUMBRA_SHADER_RECORD register(b0, space901)
 #endif

@@ -11,16 +11,27 @@ namespace penumbra::gpu {
 
 #include "bindings.hlsli"
 
-// Resource slots of the path tracer (space 0).
-#define PT_SLOT_SCENE PENUMBRA_T(0)              // top-level acceleration structure
-#define PT_SLOT_VERTICES PENUMBRA_T(1)           // float4 positions (object space)
-#define PT_SLOT_INDICES PENUMBRA_T(2)            // uint triangle indices
-#define PT_SLOT_INSTANCES PENUMBRA_T(3)          // InstanceData per TLAS instance (= InstanceID())
-#define PT_SLOT_MATERIALS PENUMBRA_T(4)          // MaterialData
-#define PT_SLOT_EMISSIVE_TRIANGLES PENUMBRA_T(5) // EmissiveTriangle, world space
-#define PT_SLOT_POINT_LIGHTS PENUMBRA_T(6)       // PointLight (delta lights)
-#define PT_SLOT_ACCUMULATION PENUMBRA_U(0)       // RGBA32F running mean
-#define PT_SLOT_RAY_COUNTER PENUMBRA_U(1)        // uint: rays traced this dispatch
+// Resources of the path tracer (space 0): the HLSL register number of each
+// (register(tN) / register(uN) in the DXR entry points, through
+// PENUMBRA_REGISTER_T/U) and the Vulkan binding it shifts to (PT_SLOT_*).
+#define PT_T_SCENE 0               // top-level acceleration structure
+#define PT_T_VERTICES 1            // float4 positions (object space)
+#define PT_T_INDICES 2             // uint triangle indices
+#define PT_T_INSTANCES 3           // InstanceData per TLAS instance (= InstanceID())
+#define PT_T_MATERIALS 4           // MaterialData
+#define PT_T_EMISSIVE_TRIANGLES 5  // EmissiveTriangle, world space
+#define PT_T_POINT_LIGHTS 6        // PointLight (delta lights)
+#define PT_U_ACCUMULATION 0        // RGBA32F running mean
+#define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
+#define PT_SLOT_SCENE PENUMBRA_T(PT_T_SCENE)
+#define PT_SLOT_VERTICES PENUMBRA_T(PT_T_VERTICES)
+#define PT_SLOT_INDICES PENUMBRA_T(PT_T_INDICES)
+#define PT_SLOT_INSTANCES PENUMBRA_T(PT_T_INSTANCES)
+#define PT_SLOT_MATERIALS PENUMBRA_T(PT_T_MATERIALS)
+#define PT_SLOT_EMISSIVE_TRIANGLES PENUMBRA_T(PT_T_EMISSIVE_TRIANGLES)
+#define PT_SLOT_POINT_LIGHTS PENUMBRA_T(PT_T_POINT_LIGHTS)
+#define PT_SLOT_ACCUMULATION PENUMBRA_U(PT_U_ACCUMULATION)
+#define PT_SLOT_RAY_COUNTER PENUMBRA_U(PT_U_RAY_COUNTER)
 
 // FrameConstants.sampling.w bits.
 #define PT_FLAG_NEE 1u               // next-event estimation on emissive triangles and point lights

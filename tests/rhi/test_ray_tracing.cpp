@@ -28,13 +28,8 @@ struct ProbeResult {
 static_assert(sizeof(ProbeRay) == 32 && sizeof(ProbeResult) == 32);
 
 ShaderDesc testShader(ShaderStage stage, const char* file) {
-  auto words = test_shaders::find(file);
-  REQUIRE_FALSE(words.empty());
-  ShaderDesc d;
-  d.stage = stage;
-  d.bytecode = words.data();
-  d.byteSize = words.size_bytes();
-  d.exportName = file;
+  ShaderDesc d = test_shaders::shaderDesc(file);
+  REQUIRE(d.stage == stage);
   return d;
 }
 

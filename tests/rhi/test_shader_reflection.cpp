@@ -3,6 +3,7 @@
 
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
+#include "penumbra_test_shaders.h"
 #include "rhi/shader_reflection.h"
 #include "util/error.h"
 
@@ -72,4 +73,64 @@ TEST_CASE("the HLSL-front-end build of the core uses the shared register shifts"
   REQUIRE_FALSE(layout.spaces[0].items[0].writable);
   REQUIRE(layout.spaces[0].items[1].slot == PENUMBRA_U(0));
   REQUIRE(layout.spaces[0].items[1].writable);
+}
+
+namespace {
+bool sameLayout(const PipelineBindingLayout& a, const PipelineBindingLayout& b) {
+  if (a.pushConstantBytes != b.pushConstantBytes || a.spaces.size() != b.spaces.size()) return false;
+  for (size_t s = 0; s < a.spaces.size(); ++s) {
+    const auto &x = a.spaces[s].items, &y = b.spaces[s].items;
+    if (a.spaces[s].space != b.spaces[s].space || x.size() != y.size()) return false;
+    for (size_t i = 0; i < x.size(); ++i)
+      if (x[i].slot != y[i].slot || x[i].type != y[i].type || x[i].arraySize != y[i].arraySize ||
+          x[i].writable != y[i].writable || x[i].structureStride != y[i].structureStride ||
+          x[i].name != y[i].name)
+        return false;
+  }
+  return true;
+}
+}  // namespace
+
+TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR-V", "[rhi][reflection]") {
+  for (const char* name : {"path_trace.rgen", "path_trace.rmiss", "shadow.rmiss", "triangle.rchit",
+                           "tonemap.comp", "core_check.hlsl"}) {
+    INFO(name);
+    const ShaderDesc desc = shaders::shaderDesc(name);
+    const ShaderReflection runtime = reflectSpirvModule(desc.spirv, name);
+    CHECK(sameLayout(desc.bindingLayout, runtime.layout));
+    CHECK(desc.shaderRecordBytes == runtime.shaderRecordBytes);
+  }
+  for (const char* name : {"probe.rgen", "probe.rmiss", "probe_alternate.rmiss", "probe.rchit", "sphere.rint"}) {
+    INFO(name);
+    const ShaderDesc desc = test_shaders::shaderDesc(name);
+    const ShaderReflection runtime = reflectSpirvModule(desc.spirv, name);
+    CHECK(sameLayout(desc.bindingLayout, runtime.layout));
+    CHECK(desc.shaderRecordBytes == runtime.shaderRecordBytes);
+  }
+  CHECK(test_shaders::shaderDesc("probe.rchit").shaderRecordBytes == 4);  // { uint gTag; }
+  CHECK(shaders::shaderDesc("triangle.rchit").shaderRecordBytes == 0);
+}
+
+TEST_CASE("reflection records each storage buffer's structure stride for D3D12 views", "[rhi][reflection]") {
+  auto layout = reflectPathTracer();
+  CHECK(slot(layout, PT_SLOT_VERTICES).structureStride == 16);      // float4[]
+  CHECK(slot(layout, PT_SLOT_INDICES).structureStride == 4);        // uint[]
+  CHECK(slot(layout, PT_SLOT_INSTANCES).structureStride == sizeof(gpu::InstanceData));
+  CHECK(slot(layout, PT_SLOT_EMISSIVE_TRIANGLES).structureStride == sizeof(gpu::EmissiveTriangle));
+  CHECK(slot(layout, PT_SLOT_RAY_COUNTER).structureStride == 4);    // { uint gRayCount; }
+  CHECK(slot(layout, PT_SLOT_SCENE).structureStride == 0);
+}
+
+TEST_CASE("embedded shaders say whether this build has their DXIL", "[rhi][reflection]") {
+  // Linux builds have no DXC: the DXR twins exist as sources but not as DXIL.
+  for (const char* name : {"path_trace.rgen", "triangle.rchit", "tonemap.comp"}) {
+    const ShaderDesc desc = shaders::shaderDesc(name);
+    CHECK_FALSE(desc.spirv.empty());
+#ifndef PENUMBRA_HAVE_DXC
+    CHECK(desc.dxil.empty());
+#else
+    CHECK_FALSE(desc.dxil.empty());
+#endif
+  }
+  REQUIRE_THROWS_WITH(shaders::shaderDesc("nope.rgen"), Catch::Matchers::ContainsSubstring("not embedded"));
 }

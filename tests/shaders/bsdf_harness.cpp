@@ -12,10 +12,8 @@ namespace penumbra::test {
 gpu::MaterialData packForGpu(const scene::Material& m) { return render::packMaterial(m); }
 
 BsdfHarness::BsdfHarness(rhi::IDevice& device) : device_(device) {
-  auto words = test_shaders::find("bsdf_harness.comp");
-  if (words.empty()) throw Error("bsdf_harness.comp is not embedded");
   rhi::ComputePipelineDesc desc;
-  desc.shader = {rhi::ShaderStage::Compute, words.data(), words.size_bytes(), "main", "bsdf harness"};
+  desc.shader = test_shaders::shaderDesc("bsdf_harness.comp");
   desc.debugName = "BSDF harness";
   pipeline_ = device_.createComputePipeline(desc);
   commandList_ = device_.createCommandList();

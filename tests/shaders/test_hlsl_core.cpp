@@ -15,10 +15,8 @@ namespace {
 
 std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t maxDepth, uint32_t spp) {
   constexpr uint32_t kSide = 16, kPixels = kSide * kSide;
-  auto words = shaders::find("core_check.hlsl");
-  REQUIRE_FALSE(words.empty());
   rhi::ComputePipelineDesc desc;
-  desc.shader = {rhi::ShaderStage::Compute, words.data(), words.size_bytes(), "main", "core_check"};
+  desc.shader = shaders::shaderDesc("core_check.hlsl");
   desc.debugName = "HLSL core furnace";
   auto pipeline = device.createComputePipeline(desc);
 

@@ -1,0 +1,422 @@
+// Command recording: copies, clears, barriers, acceleration-structure
+// builds, pipeline state, DispatchRays/Dispatch and timestamps.
+#include <fmt/format.h>
+
+#include <cstring>
+
+#include "d3d12_backend.h"
+#include "rhi/shader_table_layout.h"
+#include "util/error.h"
+
+namespace penumbra::d3d12 {
+namespace {
+
+bool isWriteState(rhi::ResourceState s) {
+  return s == rhi::ResourceState::UnorderedAccess || s == rhi::ResourceState::AccelStructWrite;
+}
+
+D3D12_RESOURCE_BARRIER transition(ID3D12Resource* resource, D3D12_RESOURCE_STATES from, D3D12_RESOURCE_STATES to) {
+  D3D12_RESOURCE_BARRIER b{};
+  b.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
+  b.Transition.pResource = resource;
+  b.Transition.Subresource = D3D12_RESOURCE_BARRIER_ALL_SUBRESOURCES;
+  b.Transition.StateBefore = from;
+  b.Transition.StateAfter = to;
+  return b;
+}
+
+}  // namespace
+
+D3D12CommandList::D3D12CommandList(D3D12Device& device) : device_(device) {
+  check(device_.handle()->CreateCommandAllocator(D3D12_COMMAND_LIST_TYPE_DIRECT, IID_PPV_ARGS(&allocator_)),
+        "CreateCommandAllocator");
+  setName(allocator_.Get(), "command allocator");
+  // CreateCommandList1 makes the list closed, so open() can always Reset it.
+  check(device_.handle()->CreateCommandList1(0, D3D12_COMMAND_LIST_TYPE_DIRECT, D3D12_COMMAND_LIST_FLAG_NONE,
+                                             IID_PPV_ARGS(&list_)),
+        "CreateCommandList1 (ID3D12GraphicsCommandList4)");
+  setName(list_.Get(), "command list");
+}
+
+void D3D12CommandList::requireOpen(const char* what) const {
+  if (!recording_) throw Error(fmt::format("d3d12: {} on a command list that is not open", what));
+}
+
+// D3D12: allocator Reset + list Reset. The caller has waited for the list's
+// previous submission (waitForIdle), as resetting an allocator requires.
+void D3D12CommandList::open() {
+  if (recording_) throw Error("d3d12: open() on a command list that is already open");
+  check(allocator_->Reset(), "ID3D12CommandAllocator::Reset");
+  check(list_->Reset(allocator_.Get(), nullptr), "ID3D12GraphicsCommandList::Reset");
+  ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap()};
+  list_->SetDescriptorHeaps(1, heaps);
+  recording_ = true;
+  rayTracingBound_ = computeBound_ = false;
+  boundRootSignature_ = nullptr;
+}
+
+void D3D12CommandList::close() {
+  requireOpen("close");
+  check(list_->Close(), "ID3D12GraphicsCommandList::Close");
+  recording_ = false;
+}
+
+void D3D12CommandList::releaseTransientResources() {
+  transient_.clear();
+  transientDescriptors_.clear();
+}
+
+std::shared_ptr<D3D12Buffer> D3D12CommandList::makeTransientBuffer(uint64_t bytes, rhi::BufferUsage usage,
+                                                                   rhi::MemoryLocation memory, const char* name) {
+  rhi::BufferDesc desc;
+  desc.byteSize = std::max<uint64_t>(bytes, 4);
+  desc.usage = usage;
+  desc.memory = memory;
+  desc.debugName = name;
+  auto buffer = std::make_shared<D3D12Buffer>(device_, desc);
+  transient_.push_back(buffer);
+  return buffer;
+}
+
+void D3D12CommandList::uavBarrier(ID3D12Resource* resource) {
+  D3D12_RESOURCE_BARRIER b{};
+  b.Type = D3D12_RESOURCE_BARRIER_TYPE_UAV;
+  b.UAV.pResource = resource;  // nullptr: every UAV access
+  list_->ResourceBarrier(1, &b);
+}
+
+// D3D12: a transition barrier between the states' D3D12 equivalents, or a
+// UAV barrier when a resource stays in UNORDERED_ACCESS. Upload and readback
+// buffers never change state in D3D12; only the RHI state is recorded.
+void D3D12CommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) {
+  requireOpen("setBufferState");
+  auto* b = static_cast<D3D12Buffer*>(buffer);
+  const rhi::ResourceState old = buffer->state;
+  buffer->state = state;
+  if (b->hasFixedState()) return;
+  if (b->isAccelStructStorage())
+    throw Error(fmt::format("d3d12: buffer '{}' holds an acceleration structure; use setAccelStructState",
+                            b->desc().debugName));
+  const auto from = toResourceStates(old), to = toResourceStates(state);
+  if (from != to) {
+    auto barrier = transition(b->resource(), from, to);
+    list_->ResourceBarrier(1, &barrier);
+  } else if (isWriteState(old)) {
+    uavBarrier(b->resource());
+  }
+}
+
+void D3D12CommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceState state) {
+  requireOpen("setTextureState");
+  auto* t = static_cast<D3D12Texture*>(texture);
+  const rhi::ResourceState old = texture->state;
+  texture->state = state;
+  const auto from = toResourceStates(old), to = toResourceStates(state);
+  if (from != to) {
+    auto barrier = transition(t->resource(), from, to);
+    list_->ResourceBarrier(1, &barrier);
+  } else if (isWriteState(old)) {
+    uavBarrier(t->resource());
+  }
+}
+
+// Acceleration structures live in RAYTRACING_ACCELERATION_STRUCTURE for
+// good; ordering a build against later reads (or a read against a rebuild)
+// takes a UAV barrier on the structure.
+void D3D12CommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::ResourceState state) {
+  requireOpen("setAccelStructState");
+  const rhi::ResourceState old = as->state;
+  as->state = state;
+  if (old != rhi::ResourceState::Undefined && (isWriteState(old) || isWriteState(state)))
+    uavBarrier(static_cast<D3D12AccelStruct*>(as)->resource());
+}
+
+void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) {
+  requireOpen("writeBuffer");
+  if (offset + bytes > buffer->desc().byteSize)
+    throw Error(fmt::format("d3d12: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)", bytes, offset,
+                            buffer->desc().debugName, buffer->desc().byteSize));
+  if (bytes == 0) return;
+  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
+                                     "writeBuffer staging");
+  std::memcpy(staging->mappedData(), data, bytes);
+  setBufferState(buffer, rhi::ResourceState::CopyDest);
+  list_->CopyBufferRegion(static_cast<D3D12Buffer*>(buffer)->resource(), offset, staging->resource(), 0, bytes);
+}
+
+void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
+                                  uint64_t bytes) {
+  requireOpen("copyBuffer");
+  setBufferState(src, rhi::ResourceState::CopySource);
+  setBufferState(dst, rhi::ResourceState::CopyDest);
+  list_->CopyBufferRegion(static_cast<D3D12Buffer*>(dst)->resource(), dstOffset,
+                          static_cast<D3D12Buffer*>(src)->resource(), srcOffset, bytes);
+  if (dst->desc().memory == rhi::MemoryLocation::Readback) setBufferState(dst, rhi::ResourceState::HostRead);
+}
+
+// D3D12: CopyTextureRegion into a placed footprint. Footprint rows are
+// padded to 256 bytes and placed 512-byte aligned; when the tight layout
+// the RHI promises differs, the rows go to a scratch buffer first and are
+// repacked with one CopyBufferRegion per row.
+void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) {
+  requireOpen("copyTextureToBuffer");
+  auto* texture = static_cast<D3D12Texture*>(src);
+  auto* buffer = static_cast<D3D12Buffer*>(dst);
+  const auto& d = src->desc();
+  const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
+  const uint64_t bytes = rowBytes * d.height;
+  if (dstOffset + bytes > dst->desc().byteSize)
+    throw Error(fmt::format("d3d12: texture '{}' ({} bytes) does not fit in buffer '{}'", d.debugName, bytes,
+                            dst->desc().debugName));
+  setTextureState(src, rhi::ResourceState::CopySource);
+
+  const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
+  const bool direct = pitch == rowBytes && dstOffset % D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT == 0;
+  std::shared_ptr<D3D12Buffer> staging;
+  ID3D12Resource* target = buffer->resource();
+  uint64_t targetOffset = dstOffset;
+  if (!direct) {
+    staging = makeTransientBuffer(pitch * d.height, rhi::BufferUsage::CopyDest | rhi::BufferUsage::CopySource,
+                                  rhi::MemoryLocation::DeviceLocal, "texture readback rows");
+    setBufferState(staging.get(), rhi::ResourceState::CopyDest);
+    target = staging->resource();
+    targetOffset = 0;
+  } else {
+    setBufferState(dst, rhi::ResourceState::CopyDest);
+  }
+  D3D12_TEXTURE_COPY_LOCATION from{};
+  from.pResource = texture->resource();
+  from.Type = D3D12_TEXTURE_COPY_TYPE_SUBRESOURCE_INDEX;
+  from.SubresourceIndex = 0;
+  D3D12_TEXTURE_COPY_LOCATION to{};
+  to.pResource = target;
+  to.Type = D3D12_TEXTURE_COPY_TYPE_PLACED_FOOTPRINT;
+  to.PlacedFootprint.Offset = targetOffset;
+  to.PlacedFootprint.Footprint.Format = texture->format();
+  to.PlacedFootprint.Footprint.Width = d.width;
+  to.PlacedFootprint.Footprint.Height = d.height;
+  to.PlacedFootprint.Footprint.Depth = 1;
+  to.PlacedFootprint.Footprint.RowPitch = UINT(pitch);
+  list_->CopyTextureRegion(&to, 0, 0, 0, &from, nullptr);
+  if (!direct) {
+    setBufferState(staging.get(), rhi::ResourceState::CopySource);
+    setBufferState(dst, rhi::ResourceState::CopyDest);
+    for (uint32_t row = 0; row < d.height; ++row)
+      list_->CopyBufferRegion(buffer->resource(), dstOffset + row * rowBytes, staging->resource(), row * pitch,
+                              rowBytes);
+  }
+  if (dst->desc().memory == rhi::MemoryLocation::Readback) setBufferState(dst, rhi::ResourceState::HostRead);
+}
+
+// D3D12: ClearUnorderedAccessViewFloat, which wants the UAV twice: in the
+// shader-visible heap (GPU handle) and in a CPU-only heap (CPU handle). Both
+// descriptors live until the list has finished on the GPU.
+void D3D12CommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) {
+  requireOpen("clearTextureFloat");
+  auto* t = static_cast<D3D12Texture*>(texture);
+  if (!hasFlag(t->desc().usage, rhi::TextureUsage::Storage))
+    throw Error(fmt::format("d3d12: clearTextureFloat needs a storage texture; '{}' is not", t->desc().debugName));
+  setTextureState(texture, rhi::ResourceState::UnorderedAccess);
+  D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
+  uav.Format = t->format();
+  uav.ViewDimension = D3D12_UAV_DIMENSION_TEXTURE2D;
+  auto gpu = device_.shaderVisibleHeap().allocate(1);
+  auto cpu = device_.cpuHeap().allocate(1);
+  device_.handle()->CreateUnorderedAccessView(t->resource(), nullptr, &uav, gpu->cpu());
+  device_.handle()->CreateUnorderedAccessView(t->resource(), nullptr, &uav, cpu->cpu());
+  const FLOAT color[4] = {r, g, b, a};
+  list_->ClearUnorderedAccessViewFloat(gpu->gpu(), cpu->cpu(), t->resource(), color, 0, nullptr);
+  transientDescriptors_.push_back(std::move(gpu));
+  transientDescriptors_.push_back(std::move(cpu));
+}
+
+// D3D12: ClearUnorderedAccessViewUint on a raw (R32_TYPELESS) view of the
+// whole buffer, both handles as for textures.
+void D3D12CommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
+  requireOpen("clearBufferUint");
+  auto* b = static_cast<D3D12Buffer*>(buffer);
+  if (b->hasFixedState())
+    throw Error(fmt::format("d3d12: clearBufferUint needs a device-local buffer; '{}' is an upload/readback buffer",
+                            b->desc().debugName));
+  setBufferState(buffer, rhi::ResourceState::UnorderedAccess);
+  D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
+  uav.Format = DXGI_FORMAT_R32_TYPELESS;
+  uav.ViewDimension = D3D12_UAV_DIMENSION_BUFFER;
+  uav.Buffer.NumElements = UINT(b->resourceBytes() / 4);
+  uav.Buffer.Flags = D3D12_BUFFER_UAV_FLAG_RAW;
+  auto gpu = device_.shaderVisibleHeap().allocate(1);
+  auto cpu = device_.cpuHeap().allocate(1);
+  device_.handle()->CreateUnorderedAccessView(b->resource(), nullptr, &uav, gpu->cpu());
+  device_.handle()->CreateUnorderedAccessView(b->resource(), nullptr, &uav, cpu->cpu());
+  const UINT values[4] = {value, value, value, value};
+  list_->ClearUnorderedAccessViewUint(gpu->gpu(), cpu->cpu(), b->resource(), values, 0, nullptr);
+  transientDescriptors_.push_back(std::move(gpu));
+  transientDescriptors_.push_back(std::move(cpu));
+}
+
+void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
+  requireOpen("buildBottomLevelAccelStruct");
+  auto* das = static_cast<D3D12AccelStruct*>(as);
+  if (das->desc().isTopLevel)
+    throw Error(fmt::format("d3d12: '{}' is a top level; use buildTopLevelAccelStruct", as->desc().debugName));
+  for (const auto& g : das->desc().bottomLevelGeometries) {
+    if (g.type == rhi::rt::GeometryType::Triangles) {
+      setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
+      if (g.triangles.indexBuffer) setBufferState(g.triangles.indexBuffer, rhi::ResourceState::AccelStructBuildInput);
+    } else {
+      setBufferState(g.aabbs.buffer, rhi::ResourceState::AccelStructBuildInput);
+    }
+  }
+  setAccelStructState(as, rhi::ResourceState::AccelStructWrite);
+  auto scratch = makeTransientBuffer(das->scratchBytes(), rhi::BufferUsage::StorageBuffer,
+                                     rhi::MemoryLocation::DeviceLocal, "BLAS scratch");
+  setBufferState(scratch.get(), rhi::ResourceState::UnorderedAccess);
+  AccelStructBuildInputs inputs = das->buildInputs();
+  D3D12_BUILD_RAYTRACING_ACCELERATION_STRUCTURE_DESC build{};
+  build.DestAccelerationStructureData = das->deviceAddress();
+  build.Inputs = inputs.inputs;
+  build.ScratchAccelerationStructureData = scratch->deviceAddress();
+  list_->BuildRaytracingAccelerationStructure(&build, 0, nullptr);
+}
+
+void D3D12CommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as, const rhi::rt::InstanceDesc* instances,
+                                                uint32_t count) {
+  requireOpen("buildTopLevelAccelStruct");
+  auto* das = static_cast<D3D12AccelStruct*>(as);
+  if (!das->desc().isTopLevel)
+    throw Error(fmt::format("d3d12: '{}' is a bottom level; use buildBottomLevelAccelStruct", as->desc().debugName));
+  if (count > das->desc().topLevelMaxInstances)
+    throw Error(fmt::format("d3d12: {} instances exceed '{}' topLevelMaxInstances = {}", count,
+                            as->desc().debugName, das->desc().topLevelMaxInstances));
+  for (uint32_t i = 0; i < count; ++i)
+    if (instances[i].bottomLevelAddress == 0)
+      throw Error(fmt::format("d3d12: instance {} of '{}' has no bottom level", i, as->desc().debugName));
+  static_assert(sizeof(rhi::rt::InstanceDesc) == sizeof(D3D12_RAYTRACING_INSTANCE_DESC));
+  // Bottom levels built earlier in this list are read by this build; the
+  // instances only hold their addresses, so one global UAV barrier orders
+  // every earlier AS write before it.
+  uavBarrier(nullptr);
+  const uint64_t bytes = uint64_t(count) * sizeof(rhi::rt::InstanceDesc);
+  // Upload-heap committed resources are 64 KiB aligned, beyond the 16 bytes
+  // DXR asks of instance descriptions.
+  auto instanceBuffer = makeTransientBuffer(bytes, rhi::BufferUsage::AccelStructBuildInput,
+                                            rhi::MemoryLocation::Upload, "TLAS instances");
+  if (count > 0) std::memcpy(instanceBuffer->mappedData(), instances, bytes);
+  auto scratch = makeTransientBuffer(das->scratchBytes(), rhi::BufferUsage::StorageBuffer,
+                                     rhi::MemoryLocation::DeviceLocal, "TLAS scratch");
+  setBufferState(scratch.get(), rhi::ResourceState::UnorderedAccess);
+  setAccelStructState(as, rhi::ResourceState::AccelStructWrite);
+  AccelStructBuildInputs inputs = das->buildInputs(instanceBuffer->deviceAddress(), count);
+  D3D12_BUILD_RAYTRACING_ACCELERATION_STRUCTURE_DESC build{};
+  build.DestAccelerationStructureData = das->deviceAddress();
+  build.Inputs = inputs.inputs;
+  build.ScratchAccelerationStructureData = scratch->deviceAddress();
+  list_->BuildRaytracingAccelerationStructure(&build, 0, nullptr);
+}
+
+void D3D12CommandList::transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets) {
+  for (auto* s : sets) {
+    if (!s) continue;
+    auto* set = static_cast<D3D12BindingSet*>(s);
+    for (const auto& item : set->desc().items) {
+      const rhi::ResourceState state = set->requiredState(item);
+      switch (item.type) {
+        case rhi::ResourceType::AccelStruct: setAccelStructState(item.accelStruct.get(), state); break;
+        case rhi::ResourceType::StorageBuffer:
+        case rhi::ResourceType::ConstantBuffer: setBufferState(item.buffer.get(), state); break;
+        case rhi::ResourceType::StorageTexture: setTextureState(item.texture.get(), state); break;
+      }
+    }
+  }
+}
+
+void D3D12CommandList::bindDescriptorTables(const D3D12RootSignature& rootSignature,
+                                            const std::vector<rhi::IBindingSet*>& sets, const char* pipelineKind) {
+  const auto& root = rootSignature.rootLayout();
+  for (const auto& table : root.tables) {
+    const D3D12BindingSet* match = nullptr;
+    for (auto* s : sets)
+      if (s && s->desc().space == table.space) match = static_cast<const D3D12BindingSet*>(s);
+    if (!match)
+      throw Error(fmt::format("d3d12: the {} pipeline's shaders use space {} but no binding set for it was given",
+                              pipelineKind, table.space));
+    list_->SetComputeRootDescriptorTable(table.rootParameterIndex, match->tableStart());
+  }
+}
+
+// D3D12: SetPipelineState1(state object) + SetComputeRootSignature +
+// SetComputeRootDescriptorTable per space; the shader table is uploaded now.
+void D3D12CommandList::setRayTracingState(const rhi::RayTracingState& state) {
+  requireOpen("setRayTracingState");
+  auto* pipeline = static_cast<D3D12RayTracingPipeline*>(state.pipeline);
+  auto* table = static_cast<D3D12ShaderTable*>(state.shaderTable);
+  if (!pipeline || !table) throw Error("d3d12: setRayTracingState needs a pipeline and a shader table");
+  transitionBindingSets(state.bindingSets);
+  boundDispatch_ = table->prepare();
+  transient_.push_back(table->buffer());
+  list_->SetPipelineState1(pipeline->handle());
+  list_->SetComputeRootSignature(pipeline->rootSignature().handle());
+  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets, "ray-tracing");
+  boundRootSignature_ = &pipeline->rootSignature();
+  rayTracingBound_ = true;
+  computeBound_ = false;
+}
+
+// D3D12: SetPipelineState + SetComputeRootSignature + descriptor tables.
+void D3D12CommandList::setComputeState(const rhi::ComputeState& state) {
+  requireOpen("setComputeState");
+  auto* pipeline = static_cast<D3D12ComputePipeline*>(state.pipeline);
+  if (!pipeline) throw Error("d3d12: setComputeState needs a pipeline");
+  transitionBindingSets(state.bindingSets);
+  list_->SetPipelineState(pipeline->handle());
+  list_->SetComputeRootSignature(pipeline->rootSignature().handle());
+  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets, "compute");
+  boundRootSignature_ = &pipeline->rootSignature();
+  computeBound_ = true;
+  rayTracingBound_ = false;
+}
+
+// D3D12: SetComputeRoot32BitConstants into the root-constants parameter.
+void D3D12CommandList::setPushConstants(const void* data, size_t bytes) {
+  requireOpen("setPushConstants");
+  if (!boundRootSignature_) throw Error("d3d12: setPushConstants before a pipeline was bound");
+  const auto& constants = boundRootSignature_->rootLayout().pushConstants;
+  if (!constants) throw Error("d3d12: setPushConstants but the bound pipeline's shaders declare no push constants");
+  if (bytes % 4 != 0 || bytes / 4 > constants->num32BitValues)
+    throw Error(fmt::format("d3d12: setPushConstants of {} bytes; the shaders declare {}", bytes,
+                            constants->num32BitValues * 4));
+  list_->SetComputeRoot32BitConstants(constants->rootParameterIndex, UINT(bytes / 4), data, 0);
+}
+
+void D3D12CommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t depth) {
+  requireOpen("dispatchRays");
+  if (!rayTracingBound_) throw Error("d3d12: dispatchRays without setRayTracingState");
+  D3D12_DISPATCH_RAYS_DESC desc = boundDispatch_;
+  desc.Width = width;
+  desc.Height = height;
+  desc.Depth = depth;
+  list_->DispatchRays(&desc);
+}
+
+void D3D12CommandList::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) {
+  requireOpen("dispatch");
+  if (!computeBound_) throw Error("d3d12: dispatch without setComputeState");
+  list_->Dispatch(groupsX, groupsY, groupsZ);
+}
+
+// D3D12: EndQuery(TIMESTAMP) into slot 0; the end query resolves both.
+void D3D12CommandList::beginTimerQuery(rhi::ITimerQuery* query) {
+  requireOpen("beginTimerQuery");
+  list_->EndQuery(static_cast<D3D12TimerQuery*>(query)->heap(), D3D12_QUERY_TYPE_TIMESTAMP, 0);
+}
+
+// D3D12: EndQuery(TIMESTAMP) into slot 1 + ResolveQueryData into the
+// query's readback buffer.
+void D3D12CommandList::endTimerQuery(rhi::ITimerQuery* query) {
+  requireOpen("endTimerQuery");
+  auto* q = static_cast<D3D12TimerQuery*>(query);
+  list_->EndQuery(q->heap(), D3D12_QUERY_TYPE_TIMESTAMP, 1);
+  list_->ResolveQueryData(q->heap(), D3D12_QUERY_TYPE_TIMESTAMP, 0, 2, q->results().resource(), 0);
+}
+
+}  // namespace penumbra::d3d12

@@ -1,0 +1,381 @@
+// Root signatures (from the reflected layout), compute pipelines,
+// ray-tracing state objects and binding sets.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <list>
+
+#include "d3d12_backend.h"
+#include "rhi/binding_layout.h"
+#include "util/error.h"
+
+namespace penumbra::d3d12 {
+namespace {
+
+D3D12_DESCRIPTOR_RANGE_TYPE toRangeType(rhi::DescriptorRangeType type) {
+  switch (type) {
+    case rhi::DescriptorRangeType::SRV: return D3D12_DESCRIPTOR_RANGE_TYPE_SRV;
+    case rhi::DescriptorRangeType::UAV: return D3D12_DESCRIPTOR_RANGE_TYPE_UAV;
+    case rhi::DescriptorRangeType::CBV: return D3D12_DESCRIPTOR_RANGE_TYPE_CBV;
+  }
+  return D3D12_DESCRIPTOR_RANGE_TYPE_SRV;
+}
+
+D3D12_SHADER_BYTECODE dxilOf(const rhi::ShaderDesc& shader) {
+  if (shader.dxil.empty())
+    throw Error(fmt::format("d3d12: this build has no DXIL for shader '{}': configure with DXC (Windows SDK, "
+                            "Vulkan SDK, or -DDXC_EXECUTABLE=path/to/dxc) to use the D3D12 backend",
+                            shader.exportName));
+  return {shader.dxil.data(), shader.dxil.size()};
+}
+
+// DXR export names are identifiers; RHI names such as "path_trace.rgen" are
+// file names. Map every character outside [A-Za-z0-9_] to '_'.
+std::wstring exportIdentifier(const std::string& name) {
+  std::string id = name;
+  for (char& c : id)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+  if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "_" + id;
+  return toWide(id);
+}
+
+}  // namespace
+
+ComPtr<ID3D12RootSignature> createRootSignature(D3D12Device& device, const D3D12_VERSIONED_ROOT_SIGNATURE_DESC& desc,
+                                                const std::string& name) {
+  ComPtr<ID3DBlob> blob, errors;
+  HRESULT hr = library().serializeVersionedRootSignature(&desc, &blob, &errors);
+  if (FAILED(hr)) {
+    std::string message = errors ? std::string(static_cast<const char*>(errors->GetBufferPointer()),
+                                               errors->GetBufferSize())
+                                 : hresultName(hr);
+    while (!message.empty() && (message.back() == '\n' || message.back() == '\0')) message.pop_back();
+    throw Error(fmt::format("d3d12: root signature of '{}': {}", name, message));
+  }
+  ComPtr<ID3D12RootSignature> rootSignature;
+  check(device.handle()->CreateRootSignature(0, blob->GetBufferPointer(), blob->GetBufferSize(),
+                                             IID_PPV_ARGS(&rootSignature)),
+        "CreateRootSignature");
+  setName(rootSignature.Get(), name);
+  return rootSignature;
+}
+
+// D3D12: one global root signature (version 1.1) translated from
+// rhi::computeRootSignatureLayout: root constants for the push constants,
+// one descriptor table per space.
+D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBindingLayout layout,
+                                       const std::string& name)
+    : layout_(std::move(layout)), rootLayout_(rhi::computeRootSignatureLayout(layout_)) {
+  std::vector<D3D12_ROOT_PARAMETER1> parameters(rootLayout_.parameterCount());
+  std::vector<std::vector<D3D12_DESCRIPTOR_RANGE1>> ranges;
+  if (rootLayout_.pushConstants) {
+    auto& p = parameters[rootLayout_.pushConstants->rootParameterIndex];
+    p.ParameterType = D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS;
+    p.Constants.ShaderRegister = rootLayout_.pushConstants->shaderRegister;
+    p.Constants.RegisterSpace = rootLayout_.pushConstants->registerSpace;
+    p.Constants.Num32BitValues = rootLayout_.pushConstants->num32BitValues;
+    p.ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
+  }
+  for (const auto& table : rootLayout_.tables) {
+    auto& r = ranges.emplace_back();
+    for (const auto& range : table.ranges) {
+      D3D12_DESCRIPTOR_RANGE1 d{};
+      d.RangeType = toRangeType(range.type);
+      d.NumDescriptors = range.count;
+      d.BaseShaderRegister = range.baseRegister;
+      d.RegisterSpace = table.space;
+      // Volatile descriptors: array entries a binding set leaves unwritten
+      // are legal as long as the shaders do not read them. SRV/CBV data does
+      // not change during a dispatch; UAV data does.
+      d.Flags = D3D12_DESCRIPTOR_RANGE_FLAG_DESCRIPTORS_VOLATILE |
+                (range.type == rhi::DescriptorRangeType::UAV ? D3D12_DESCRIPTOR_RANGE_FLAG_DATA_VOLATILE
+                                                             : D3D12_DESCRIPTOR_RANGE_FLAG_DATA_STATIC_WHILE_SET_AT_EXECUTE);
+      d.OffsetInDescriptorsFromTableStart = range.offsetInTable;
+      r.push_back(d);
+    }
+    auto& p = parameters[table.rootParameterIndex];
+    p.ParameterType = D3D12_ROOT_PARAMETER_TYPE_DESCRIPTOR_TABLE;
+    p.DescriptorTable.NumDescriptorRanges = UINT(r.size());
+    p.DescriptorTable.pDescriptorRanges = r.data();
+    p.ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
+  }
+  D3D12_VERSIONED_ROOT_SIGNATURE_DESC desc{};
+  desc.Version = D3D_ROOT_SIGNATURE_VERSION_1_1;
+  desc.Desc_1_1.NumParameters = UINT(parameters.size());
+  desc.Desc_1_1.pParameters = parameters.data();
+  desc.Desc_1_1.Flags = D3D12_ROOT_SIGNATURE_FLAG_NONE;
+  rootSignature_ = createRootSignature(device, desc, name + " root signature");
+}
+
+// D3D12: CreateComputePipelineState with the global root signature.
+D3D12ComputePipeline::D3D12ComputePipeline(D3D12Device& device, const rhi::ComputePipelineDesc& desc) {
+  if (desc.shader.stage != rhi::ShaderStage::Compute)
+    throw Error(fmt::format("d3d12: compute pipeline '{}': '{}' is not a compute shader", desc.debugName,
+                            desc.shader.exportName));
+  const D3D12_SHADER_BYTECODE bytecode = dxilOf(desc.shader);
+  rhi::PipelineBindingLayout layout;
+  rhi::mergeBindingLayout(layout, desc.shader.bindingLayout, desc.shader.exportName);
+  rootSignature_ = std::make_unique<D3D12RootSignature>(device, std::move(layout), desc.debugName);
+  D3D12_COMPUTE_PIPELINE_STATE_DESC pso{};
+  pso.pRootSignature = rootSignature_->handle();
+  pso.CS = bytecode;
+  check(device.handle()->CreateComputePipelineState(&pso, IID_PPV_ARGS(&pipeline_)),
+        "CreateComputePipelineState");
+  setName(pipeline_.Get(), desc.debugName);
+}
+
+// D3D12: CreateStateObject(RAYTRACING_PIPELINE) with one DXIL library per
+// shader (its entry point exported under the RHI export name), hit groups,
+// the shader config (payload/attribute sizes), the pipeline config (max
+// recursion), the global root signature, and local root signatures with
+// their export associations for shaders that read shader-record data.
+D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi::RayTracingPipelineDesc& desc)
+    : device_(device), desc_(desc) {
+  const auto& adapter = device_.adapter();
+  if (desc.maxRecursionDepth > adapter.maxRecursionDepth)
+    throw Error(fmt::format("d3d12: pipeline '{}' asks for recursion depth {} but {} allows {}", desc.debugName,
+                            desc.maxRecursionDepth, adapter.name, adapter.maxRecursionDepth));
+  if (desc.maxAttributeBytes > D3D12_RAYTRACING_MAX_ATTRIBUTE_SIZE_IN_BYTES)
+    throw Error(fmt::format("d3d12: pipeline '{}': {} attribute bytes exceed DXR's {}", desc.debugName,
+                            desc.maxAttributeBytes, D3D12_RAYTRACING_MAX_ATTRIBUTE_SIZE_IN_BYTES));
+
+  // Every pointer in a subobject must stay valid until CreateStateObject:
+  // std::list keeps element addresses stable as it grows.
+  std::list<D3D12_EXPORT_DESC> exports;
+  std::list<D3D12_DXIL_LIBRARY_DESC> libraries;
+  std::list<D3D12_HIT_GROUP_DESC> hitGroups;
+  std::list<std::wstring> strings;
+  std::list<std::vector<LPCWSTR>> exportLists;
+  std::list<D3D12_SUBOBJECT_TO_EXPORTS_ASSOCIATION> associations;
+  std::vector<D3D12_STATE_SUBOBJECT> subobjects;
+  // Associations point at other subobjects: reserve so they never move.
+  subobjects.reserve(desc.shaders.size() + desc.hitGroups.size() * 2 + 16);
+  auto wide = [&](const std::wstring& s) { return strings.emplace_back(s).c_str(); };
+
+  rhi::PipelineBindingLayout layout;
+  std::map<std::string, uint32_t> shaderRecordBytes;
+  for (const auto& shader : desc.shaders) {
+    if (shader.stage == rhi::ShaderStage::Compute)
+      throw Error(fmt::format("d3d12: pipeline '{}': '{}' is a compute shader", desc.debugName, shader.exportName));
+    const D3D12_SHADER_BYTECODE bytecode = dxilOf(shader);
+    const std::wstring name = exportIdentifier(shader.exportName);
+    for (const auto& [other, otherName] : d3dNames_)
+      if (otherName == name)
+        throw Error(fmt::format("d3d12: pipeline '{}': export names '{}' and '{}' collide", desc.debugName, other,
+                                shader.exportName));
+    d3dNames_[shader.exportName] = name;
+    shaderRecordBytes[shader.exportName] = shader.shaderRecordBytes;
+    rhi::mergeBindingLayout(layout, shader.bindingLayout, shader.exportName);
+
+    auto& e = exports.emplace_back();
+    e.Name = wide(name);
+    e.ExportToRename = wide(toWide(shader.entryPoint));
+    e.Flags = D3D12_EXPORT_FLAG_NONE;
+    auto& lib = libraries.emplace_back();
+    lib.DXILLibrary = bytecode;
+    lib.NumExports = 1;
+    lib.pExports = &e;
+    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_DXIL_LIBRARY, &lib});
+    if (shader.stage == rhi::ShaderStage::RayGeneration || shader.stage == rhi::ShaderStage::Miss)
+      localRootBytes_[shader.exportName] = shader.shaderRecordBytes;
+  }
+
+  auto import = [&](const std::string& shader, const rhi::HitGroupDesc& group) -> LPCWSTR {
+    if (shader.empty()) return nullptr;
+    auto it = d3dNames_.find(shader);
+    if (it == d3dNames_.end())
+      throw Error(fmt::format("d3d12: pipeline '{}': hit group '{}' names unknown shader '{}'", desc.debugName,
+                              group.exportName, shader));
+    return it->second.c_str();
+  };
+  for (const auto& group : desc.hitGroups) {
+    if (group.isProcedural && group.intersection.empty())
+      throw Error(fmt::format("d3d12: pipeline '{}': procedural hit group '{}' has no intersection shader",
+                              desc.debugName, group.exportName));
+    const std::wstring name = exportIdentifier(group.exportName);
+    for (const auto& [other, otherName] : d3dNames_)
+      if (otherName == name)
+        throw Error(fmt::format("d3d12: pipeline '{}': export name '{}' used twice (as '{}')", desc.debugName,
+                                group.exportName, other));
+    d3dNames_[group.exportName] = name;
+    auto& hg = hitGroups.emplace_back();
+    hg.HitGroupExport = wide(name);
+    hg.Type = group.isProcedural ? D3D12_HIT_GROUP_TYPE_PROCEDURAL_PRIMITIVE : D3D12_HIT_GROUP_TYPE_TRIANGLES;
+    hg.ClosestHitShaderImport = import(group.closestHit, group);
+    hg.AnyHitShaderImport = import(group.anyHit, group);
+    hg.IntersectionShaderImport = import(group.intersection, group);
+    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_HIT_GROUP, &hg});
+    // A hit group's record serves all its shaders: the largest of theirs.
+    uint32_t bytes = 0;
+    for (const auto* s : {&group.closestHit, &group.anyHit, &group.intersection})
+      if (!s->empty()) bytes = std::max(bytes, shaderRecordBytes[*s]);
+    localRootBytes_[group.exportName] = bytes;
+  }
+
+  D3D12_RAYTRACING_SHADER_CONFIG shaderConfig{desc.maxPayloadBytes, desc.maxAttributeBytes};
+  subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_RAYTRACING_SHADER_CONFIG, &shaderConfig});
+  D3D12_RAYTRACING_PIPELINE_CONFIG pipelineConfig{desc.maxRecursionDepth};
+  subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_RAYTRACING_PIPELINE_CONFIG, &pipelineConfig});
+
+  rootSignature_ = std::make_unique<D3D12RootSignature>(device_, std::move(layout), desc.debugName);
+  D3D12_GLOBAL_ROOT_SIGNATURE global{rootSignature_->handle()};
+  subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_GLOBAL_ROOT_SIGNATURE, &global});
+
+  // Local root signatures: one per distinct record size, associated with the
+  // raygen/miss shaders and hit groups whose records carry that much data.
+  std::map<uint32_t, std::vector<LPCWSTR>> exportsBySize;
+  for (const auto& [exportName, bytes] : localRootBytes_)
+    if (bytes > 0) exportsBySize[bytes].push_back(d3dNames_.at(exportName).c_str());
+  std::list<D3D12_LOCAL_ROOT_SIGNATURE> locals;
+  for (auto& [bytes, names] : exportsBySize) {
+    const rhi::RootConstantsLayout constants = rhi::computeShaderRecordConstants(bytes);
+    D3D12_ROOT_PARAMETER1 parameter{};
+    parameter.ParameterType = D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS;
+    parameter.Constants.ShaderRegister = constants.shaderRegister;
+    parameter.Constants.RegisterSpace = constants.registerSpace;
+    parameter.Constants.Num32BitValues = constants.num32BitValues;
+    parameter.ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
+    D3D12_VERSIONED_ROOT_SIGNATURE_DESC rs{};
+    rs.Version = D3D_ROOT_SIGNATURE_VERSION_1_1;
+    rs.Desc_1_1.NumParameters = 1;
+    rs.Desc_1_1.pParameters = &parameter;
+    rs.Desc_1_1.Flags = D3D12_ROOT_SIGNATURE_FLAG_LOCAL_ROOT_SIGNATURE;
+    localRootSignatures_.push_back(
+        createRootSignature(device_, rs, fmt::format("{} local root signature ({} bytes)", desc.debugName, bytes)));
+    auto& local = locals.emplace_back();
+    local.pLocalRootSignature = localRootSignatures_.back().Get();
+    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_LOCAL_ROOT_SIGNATURE, &local});
+    auto& list = exportLists.emplace_back(names);
+    auto& association = associations.emplace_back();
+    association.pSubobjectToAssociate = &subobjects.back();
+    association.NumExports = UINT(list.size());
+    association.pExports = list.data();
+    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_SUBOBJECT_TO_EXPORTS_ASSOCIATION, &association});
+  }
+
+  D3D12_STATE_OBJECT_DESC stateObject{};
+  stateObject.Type = D3D12_STATE_OBJECT_TYPE_RAYTRACING_PIPELINE;
+  stateObject.NumSubobjects = UINT(subobjects.size());
+  stateObject.pSubobjects = subobjects.data();
+  device_.checkDevice(device_.handle()->CreateStateObject(&stateObject, IID_PPV_ARGS(&stateObject_)),
+                      "CreateStateObject (ray-tracing pipeline; run with --validation for the reason)");
+  setName(stateObject_.Get(), desc.debugName);
+  check(stateObject_.As(&properties_), "QueryInterface(ID3D12StateObjectProperties)");
+}
+
+const void* D3D12RayTracingPipeline::shaderIdentifier(const std::string& exportName) const {
+  auto it = d3dNames_.find(exportName);
+  const void* id = it == d3dNames_.end() ? nullptr : properties_->GetShaderIdentifier(it->second.c_str());
+  if (!id || !localRootBytes_.count(exportName))
+    throw Error(fmt::format("d3d12: pipeline '{}' has no raygen/miss shader or hit group '{}'", desc_.debugName,
+                            exportName));
+  return id;
+}
+
+uint32_t D3D12RayTracingPipeline::localRootBytes(const std::string& exportName) const {
+  auto it = localRootBytes_.find(exportName);
+  return it == localRootBytes_.end() ? 0 : it->second;
+}
+
+rhi::ShaderTableHandle D3D12RayTracingPipeline::createShaderTable(const std::string& debugName) {
+  return std::make_shared<D3D12ShaderTable>(device_, shared_from_this(), debugName);
+}
+
+// D3D12: a range of the shader-visible heap, one descriptor per layout item
+// at the offset the root signature's table gives it (CreateShaderResourceView
+// / CreateUnorderedAccessView / CreateConstantBufferView).
+D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc& desc,
+                                 const D3D12RootSignature& rootSignature)
+    : desc_(desc) {
+  rhi::validateBindingSet(desc, rootSignature.bindingLayout());
+  const rhi::DescriptorTableLayout* table = rootSignature.rootLayout().tableForSpace(desc.space);
+  descriptors_ = device.shaderVisibleHeap().allocate(table ? table->descriptorCount : 0);
+  if (!table) return;
+  const auto& items = rootSignature.bindingLayout().spaces[desc.space].items;
+  ID3D12Device5* d = device.handle();
+  for (const auto& item : desc.items) {
+    const rhi::DescriptorRangeLayout* range = table->rangeForSlot(item.slot);
+    const auto layoutItem = std::find_if(items.begin(), items.end(),
+                                         [&](const rhi::BindingLayoutItem& i) { return i.slot == item.slot; });
+    rangeTypes_[item.slot] = range->type;
+    const D3D12_CPU_DESCRIPTOR_HANDLE handle = descriptors_->cpu(range->offsetInTable);
+    switch (item.type) {
+      case rhi::ResourceType::AccelStruct: {
+        D3D12_SHADER_RESOURCE_VIEW_DESC srv{};
+        srv.ViewDimension = D3D12_SRV_DIMENSION_RAYTRACING_ACCELERATION_STRUCTURE;
+        srv.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
+        srv.RaytracingAccelerationStructure.Location = item.accelStruct->deviceAddress();
+        d->CreateShaderResourceView(nullptr, &srv, handle);
+        break;
+      }
+      case rhi::ResourceType::StorageBuffer: {
+        auto* buffer = static_cast<D3D12Buffer*>(item.buffer.get());
+        const uint32_t stride = layoutItem->structureStride;
+        if (stride == 0 || buffer->desc().byteSize < stride)
+          throw Error(fmt::format("{}: buffer '{}' ({} bytes) at slot {} ('{}') holds no whole {}-byte element",
+                                  desc.debugName, buffer->desc().debugName, buffer->desc().byteSize, item.slot,
+                                  layoutItem->name, stride));
+        const UINT elements = UINT(buffer->desc().byteSize / stride);
+        if (range->type == rhi::DescriptorRangeType::UAV) {
+          if (buffer->hasFixedState())
+            throw Error(fmt::format("{}: buffer '{}' at slot {} is written by shaders but lives in an upload or "
+                                    "readback heap", desc.debugName, buffer->desc().debugName, item.slot));
+          D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
+          uav.ViewDimension = D3D12_UAV_DIMENSION_BUFFER;
+          uav.Buffer.NumElements = elements;
+          uav.Buffer.StructureByteStride = stride;
+          d->CreateUnorderedAccessView(buffer->resource(), nullptr, &uav, handle);
+        } else {
+          D3D12_SHADER_RESOURCE_VIEW_DESC srv{};
+          srv.ViewDimension = D3D12_SRV_DIMENSION_BUFFER;
+          srv.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
+          srv.Buffer.NumElements = elements;
+          srv.Buffer.StructureByteStride = stride;
+          d->CreateShaderResourceView(buffer->resource(), &srv, handle);
+        }
+        break;
+      }
+      case rhi::ResourceType::ConstantBuffer: {
+        auto* buffer = static_cast<D3D12Buffer*>(item.buffer.get());
+        D3D12_CONSTANT_BUFFER_VIEW_DESC cbv{};
+        cbv.BufferLocation = buffer->deviceAddress();
+        cbv.SizeInBytes = UINT(buffer->resourceBytes());
+        if (!hasFlag(buffer->desc().usage, rhi::BufferUsage::ConstantBuffer))
+          throw Error(fmt::format("{}: buffer '{}' at slot {} lacks BufferUsage::ConstantBuffer", desc.debugName,
+                                  buffer->desc().debugName, item.slot));
+        d->CreateConstantBufferView(&cbv, handle);
+        break;
+      }
+      case rhi::ResourceType::StorageTexture: {
+        auto* texture = static_cast<D3D12Texture*>(item.texture.get());
+        if (range->type == rhi::DescriptorRangeType::UAV) {
+          D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
+          uav.Format = texture->format();
+          uav.ViewDimension = D3D12_UAV_DIMENSION_TEXTURE2D;
+          d->CreateUnorderedAccessView(texture->resource(), nullptr, &uav, handle);
+        } else {
+          D3D12_SHADER_RESOURCE_VIEW_DESC srv{};
+          srv.Format = texture->format();
+          srv.ViewDimension = D3D12_SRV_DIMENSION_TEXTURE2D;
+          srv.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
+          srv.Texture2D.MipLevels = 1;
+          d->CreateShaderResourceView(texture->resource(), &srv, handle);
+        }
+        break;
+      }
+    }
+  }
+}
+
+rhi::ResourceState D3D12BindingSet::requiredState(const rhi::BindingSetItem& item) const {
+  if (item.type == rhi::ResourceType::AccelStruct) return rhi::ResourceState::AccelStructRead;
+  switch (rangeTypes_.at(item.slot)) {
+    case rhi::DescriptorRangeType::UAV: return rhi::ResourceState::UnorderedAccess;
+    case rhi::DescriptorRangeType::CBV: return rhi::ResourceState::ConstantBuffer;
+    case rhi::DescriptorRangeType::SRV: break;
+  }
+  return rhi::ResourceState::ShaderResource;
+}
+
+}  // namespace penumbra::d3d12

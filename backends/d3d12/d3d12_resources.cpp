@@ -1,0 +1,219 @@
+// Buffers, textures and acceleration structures: committed resources, one
+// heap each (scenes are small; see docs/ARCHITECTURE.md).
+#include <fmt/format.h>
+
+#include "d3d12_backend.h"
+#include "rhi/shader_table_layout.h"
+#include "util/error.h"
+
+namespace penumbra::d3d12 {
+
+DXGI_FORMAT toDxgiFormat(rhi::Format format) {
+  switch (format) {
+    case rhi::Format::RGBA8_UNORM: return DXGI_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA32_FLOAT: return DXGI_FORMAT_R32G32B32A32_FLOAT;
+    case rhi::Format::RGB32_FLOAT: return DXGI_FORMAT_R32G32B32_FLOAT;
+    case rhi::Format::R32_UINT: return DXGI_FORMAT_R32_UINT;
+    case rhi::Format::R16_UINT: return DXGI_FORMAT_R16_UINT;
+    case rhi::Format::Unknown: break;
+  }
+  throw Error("d3d12: unsupported format");
+}
+
+D3D12_RESOURCE_STATES toResourceStates(rhi::ResourceState state) {
+  using S = rhi::ResourceState;
+  switch (state) {
+    case S::Undefined: return D3D12_RESOURCE_STATE_COMMON;
+    case S::ShaderResource: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+    case S::UnorderedAccess: return D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
+    case S::ConstantBuffer: return D3D12_RESOURCE_STATE_VERTEX_AND_CONSTANT_BUFFER;
+    case S::CopySource: return D3D12_RESOURCE_STATE_COPY_SOURCE;
+    case S::CopyDest: return D3D12_RESOURCE_STATE_COPY_DEST;
+    // DXR reads vertex, index, AABB and instance buffers as non-pixel shader resources.
+    case S::AccelStructBuildInput: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+    case S::AccelStructWrite:
+    case S::AccelStructRead: return D3D12_RESOURCE_STATE_RAYTRACING_ACCELERATION_STRUCTURE;
+    case S::ShaderTable: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+    case S::HostRead: return D3D12_RESOURCE_STATE_COPY_DEST;  // readback heaps only
+  }
+  return D3D12_RESOURCE_STATE_COMMON;
+}
+
+namespace {
+D3D12_HEAP_PROPERTIES heapProperties(D3D12_HEAP_TYPE type) {
+  D3D12_HEAP_PROPERTIES p{};
+  p.Type = type;
+  p.CPUPageProperty = D3D12_CPU_PAGE_PROPERTY_UNKNOWN;
+  p.MemoryPoolPreference = D3D12_MEMORY_POOL_UNKNOWN;
+  p.CreationNodeMask = 1;
+  p.VisibleNodeMask = 1;
+  return p;
+}
+}  // namespace
+
+// D3D12: CreateCommittedResource on a DEFAULT, UPLOAD or READBACK heap.
+// Device-local buffers allow unordered access (UAVs, clears, AS storage and
+// scratch all need it). Upload heaps start, and stay, in GENERIC_READ;
+// readback heaps in COPY_DEST; acceleration-structure storage in
+// RAYTRACING_ACCELERATION_STRUCTURE - as D3D12 requires of each.
+D3D12Buffer::D3D12Buffer(D3D12Device& device, const rhi::BufferDesc& desc) : desc_(desc) {
+  if (desc.byteSize == 0) throw Error(fmt::format("d3d12: buffer '{}' has zero size", desc.debugName));
+  resourceBytes_ = desc.byteSize;
+  // CBVs cover whole 256-byte units (D3D12_CONSTANT_BUFFER_DATA_PLACEMENT_ALIGNMENT).
+  if (hasFlag(desc.usage, rhi::BufferUsage::ConstantBuffer))
+    resourceBytes_ = rhi::alignUp(resourceBytes_, D3D12_CONSTANT_BUFFER_DATA_PLACEMENT_ALIGNMENT);
+
+  D3D12_HEAP_TYPE heapType = D3D12_HEAP_TYPE_DEFAULT;
+  D3D12_RESOURCE_STATES initial = D3D12_RESOURCE_STATE_COMMON;
+  D3D12_RESOURCE_FLAGS flags = D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS;
+  switch (desc.memory) {
+    case rhi::MemoryLocation::DeviceLocal:
+      if (isAccelStructStorage()) initial = D3D12_RESOURCE_STATE_RAYTRACING_ACCELERATION_STRUCTURE;
+      break;
+    case rhi::MemoryLocation::Upload:
+      heapType = D3D12_HEAP_TYPE_UPLOAD;
+      initial = D3D12_RESOURCE_STATE_GENERIC_READ;
+      flags = D3D12_RESOURCE_FLAG_NONE;
+      break;
+    case rhi::MemoryLocation::Readback:
+      heapType = D3D12_HEAP_TYPE_READBACK;
+      initial = D3D12_RESOURCE_STATE_COPY_DEST;
+      flags = D3D12_RESOURCE_FLAG_NONE;
+      break;
+  }
+  D3D12_RESOURCE_DESC rd{};
+  rd.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
+  rd.Width = resourceBytes_;
+  rd.Height = 1;
+  rd.DepthOrArraySize = 1;
+  rd.MipLevels = 1;
+  rd.Format = DXGI_FORMAT_UNKNOWN;
+  rd.SampleDesc.Count = 1;
+  rd.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
+  rd.Flags = flags;
+  const auto heap = heapProperties(heapType);
+  HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd, initial, nullptr,
+                                                        IID_PPV_ARGS(&resource_));
+  if (FAILED(hr))
+    throw Error(fmt::format("d3d12: allocating {} bytes for buffer '{}' failed: {}", resourceBytes_,
+                            desc.debugName, hresultName(hr)));
+  setName(resource_.Get(), desc.debugName);
+  if (desc.memory != rhi::MemoryLocation::DeviceLocal) {
+    // Readback: the CPU may read everything; upload: it reads nothing.
+    D3D12_RANGE readNothing{0, 0};
+    check(resource_->Map(0, desc.memory == rhi::MemoryLocation::Upload ? &readNothing : nullptr, &mapped_),
+          "ID3D12Resource::Map");
+  }
+}
+
+void* D3D12Buffer::mappedData() {
+  if (!mapped_)
+    throw Error(fmt::format("d3d12: buffer '{}' is device-local and cannot be mapped", desc_.debugName));
+  return mapped_;
+}
+
+DXGI_FORMAT D3D12Texture::format() const { return toDxgiFormat(desc_.format); }
+
+// D3D12: CreateCommittedResource (TEXTURE2D, one mip) on a DEFAULT heap;
+// storage textures allow unordered access.
+D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : desc_(desc) {
+  D3D12_RESOURCE_DESC rd{};
+  rd.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
+  rd.Width = desc.width;
+  rd.Height = desc.height;
+  rd.DepthOrArraySize = 1;
+  rd.MipLevels = 1;
+  rd.Format = toDxgiFormat(desc.format);
+  rd.SampleDesc.Count = 1;
+  rd.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
+  rd.Flags = hasFlag(desc.usage, rhi::TextureUsage::Storage) ? D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS
+                                                              : D3D12_RESOURCE_FLAG_NONE;
+  const auto heap = heapProperties(D3D12_HEAP_TYPE_DEFAULT);
+  HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd,
+                                                        D3D12_RESOURCE_STATE_COMMON, nullptr,
+                                                        IID_PPV_ARGS(&resource_));
+  if (FAILED(hr))
+    throw Error(fmt::format("d3d12: creating texture '{}' ({}x{}) failed: {}", desc.debugName, desc.width,
+                            desc.height, hresultName(hr)));
+  setName(resource_.Get(), desc.debugName);
+}
+
+// D3D12: GetRaytracingAccelerationStructurePrebuildInfo sizes the result
+// and scratch; the result lives in a buffer that stays in
+// RAYTRACING_ACCELERATION_STRUCTURE state. Scratch is allocated per build by
+// the command list.
+D3D12AccelStruct::D3D12AccelStruct(D3D12Device& device, const rhi::rt::AccelStructDesc& desc) : desc_(desc) {
+  if (desc.isTopLevel && desc.topLevelMaxInstances == 0)
+    throw Error(fmt::format("d3d12: top-level '{}' has topLevelMaxInstances = 0", desc.debugName));
+  if (!desc.isTopLevel && desc.bottomLevelGeometries.empty())
+    throw Error(fmt::format("d3d12: bottom-level '{}' has no geometry", desc.debugName));
+  AccelStructBuildInputs inputs = buildInputs(0, desc.topLevelMaxInstances);
+  D3D12_RAYTRACING_ACCELERATION_STRUCTURE_PREBUILD_INFO info{};
+  device.handle()->GetRaytracingAccelerationStructurePrebuildInfo(&inputs.inputs, &info);
+  if (info.ResultDataMaxSizeInBytes == 0)
+    throw Error(fmt::format("d3d12: the driver reports no size for acceleration structure '{}'", desc.debugName));
+  scratchBytes_ = rhi::alignUp(info.ScratchDataSizeInBytes, D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
+
+  rhi::BufferDesc storage;
+  storage.byteSize =
+      rhi::alignUp(info.ResultDataMaxSizeInBytes, D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
+  storage.usage = rhi::BufferUsage::AccelStructStorage;
+  storage.debugName = desc.debugName;
+  storage_ = std::make_unique<D3D12Buffer>(device, storage);
+}
+
+AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress, uint32_t instanceCount) const {
+  AccelStructBuildInputs in;
+  auto& inputs = in.inputs;
+  inputs.Flags = desc_.buildFlags == rhi::rt::BuildFlags::PreferFastBuild
+                     ? D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BUILD_FLAG_PREFER_FAST_BUILD
+                     : D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BUILD_FLAG_PREFER_FAST_TRACE;
+  inputs.DescsLayout = D3D12_ELEMENTS_LAYOUT_ARRAY;
+  if (desc_.isTopLevel) {
+    inputs.Type = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL;
+    inputs.NumDescs = instanceCount;
+    inputs.InstanceDescs = instanceAddress;  // rhi::rt::InstanceDesc == D3D12_RAYTRACING_INSTANCE_DESC
+    return in;
+  }
+  inputs.Type = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL;
+  for (const auto& geo : desc_.bottomLevelGeometries) {
+    D3D12_RAYTRACING_GEOMETRY_DESC g{};
+    g.Flags = D3D12_RAYTRACING_GEOMETRY_FLAG_NONE;
+    if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::Opaque)) g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_OPAQUE;
+    if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation))
+      g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_NO_DUPLICATE_ANYHIT_INVOCATION;
+    if (geo.type == rhi::rt::GeometryType::Triangles) {
+      const auto& t = geo.triangles;
+      if (!t.vertexBuffer)
+        throw Error(fmt::format("d3d12: '{}' has a triangle geometry without vertices", desc_.debugName));
+      g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_TRIANGLES;
+      auto& tri = g.Triangles;
+      tri.Transform3x4 = 0;
+      tri.VertexFormat = toDxgiFormat(t.vertexFormat);
+      tri.VertexCount = t.vertexCount;
+      tri.VertexBuffer.StartAddress = t.vertexBuffer->deviceAddress() + t.vertexOffset;
+      tri.VertexBuffer.StrideInBytes = t.vertexStride;
+      if (t.indexBuffer) {
+        tri.IndexFormat = toDxgiFormat(t.indexFormat);
+        tri.IndexCount = t.indexCount;
+        tri.IndexBuffer = t.indexBuffer->deviceAddress() + t.indexOffset;
+      } else {
+        tri.IndexFormat = DXGI_FORMAT_UNKNOWN;
+      }
+    } else {
+      const auto& a = geo.aabbs;
+      if (!a.buffer)
+        throw Error(fmt::format("d3d12: '{}' has an AABB geometry without a buffer", desc_.debugName));
+      g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_PROCEDURAL_PRIMITIVE_AABBS;
+      g.AABBs.AABBCount = a.count;
+      g.AABBs.AABBs.StartAddress = a.buffer->deviceAddress() + a.offset;
+      g.AABBs.AABBs.StrideInBytes = a.stride;
+    }
+    in.geometries.push_back(g);
+  }
+  inputs.NumDescs = UINT(in.geometries.size());
+  inputs.pGeometryDescs = in.geometries.data();
+  return in;
+}
+
+}  // namespace penumbra::d3d12

@@ -1,0 +1,65 @@
+# Dependencies of the mingw-w64 cross build (cmake/toolchains/). Everything
+# the Windows binary needs is header-only except zlib, so:
+# - header-only libraries (glm, nlohmann-json, CLI11, fmt, stb, tinyexr, the
+#   Vulkan headers, DirectX-Headers) come from the build machine's Debian
+#   packages through include directories that hold ONLY those libraries
+#   (symlinks under the build tree). Adding /usr/include itself would put
+#   glibc's headers in front of mingw's.
+# - tinyexr, which Debian ships as a Linux .so, is compiled from its single
+#   header here, with zlib from libz-mingw-w64-dev (linked statically).
+# It defines the same targets/variables the native find_package calls do.
+
+set(_farm ${CMAKE_BINARY_DIR}/cross-headers)
+file(MAKE_DIRECTORY ${_farm})
+# penumbra_cross_headers(<dir> <header dir or file>...): links each entry of
+# /usr/include (or PENUMBRA_HOST_INCLUDE_DIR) into <dir>.
+set(PENUMBRA_HOST_INCLUDE_DIR /usr/include CACHE PATH "Where the build machine's header-only packages live")
+function(penumbra_cross_headers dir)
+  file(MAKE_DIRECTORY ${dir})
+  foreach(entry ${ARGN})
+    set(source ${PENUMBRA_HOST_INCLUDE_DIR}/${entry})
+    if(NOT EXISTS ${source})
+      message(FATAL_ERROR "Cross build: ${source} is missing (run scripts/setup.sh)")
+    endif()
+    file(CREATE_LINK ${source} ${dir}/${entry} SYMBOLIC)
+  endforeach()
+endfunction()
+
+penumbra_cross_headers(${_farm}/glm glm)
+add_library(glm::glm INTERFACE IMPORTED)
+set_target_properties(glm::glm PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${_farm}/glm)
+
+penumbra_cross_headers(${_farm}/json nlohmann)
+add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
+set_target_properties(nlohmann_json::nlohmann_json PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${_farm}/json)
+
+penumbra_cross_headers(${_farm}/cli11 CLI)
+add_library(CLI11::CLI11 INTERFACE IMPORTED)
+set_target_properties(CLI11::CLI11 PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${_farm}/cli11)
+
+penumbra_cross_headers(${_farm}/fmt fmt)
+add_library(fmt::fmt-header-only INTERFACE IMPORTED)
+set_target_properties(fmt::fmt-header-only PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${_farm}/fmt
+                      INTERFACE_COMPILE_DEFINITIONS FMT_HEADER_ONLY=1)
+
+penumbra_cross_headers(${_farm}/stb stb)
+set(STB_INCLUDE_DIR ${_farm}/stb/stb)
+
+penumbra_cross_headers(${_farm}/vulkan vulkan vk_video)
+set(Vulkan_INCLUDE_DIRS ${_farm}/vulkan)
+
+# DirectX-Headers (directx-headers-dev): only directx/ and dxguids/, so
+# mingw's own d3d12.h is never shadowed or mixed in. mingw's rpcndr.h is
+# version 475; DirectX-Headers asks for 500 unless told otherwise.
+penumbra_cross_headers(${_farm}/directx directx dxguids)
+set(PENUMBRA_DIRECTX_INCLUDE_DIRS ${_farm}/directx)
+set(PENUMBRA_DIRECTX_DEFINITIONS __REQUIRED_RPCNDR_H_VERSION__=475)
+
+# tinyexr from its header, over mingw's static zlib.
+find_library(PENUMBRA_MINGW_ZLIB NAMES libz.a REQUIRED)
+find_path(PENUMBRA_MINGW_ZLIB_INCLUDE zlib.h REQUIRED)
+penumbra_cross_headers(${_farm}/tinyexr tinyexr.h)
+add_library(penumbra_tinyexr STATIC ${PROJECT_SOURCE_DIR}/engine/image/tinyexr_implementation.cpp)
+target_include_directories(penumbra_tinyexr SYSTEM PUBLIC ${_farm}/tinyexr PRIVATE ${PENUMBRA_MINGW_ZLIB_INCLUDE})
+target_link_libraries(penumbra_tinyexr PRIVATE ${PENUMBRA_MINGW_ZLIB})
+add_library(tinyexr::tinyexr ALIAS penumbra_tinyexr)

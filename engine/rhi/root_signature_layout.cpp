@@ -1,0 +1,103 @@
+#include "rhi/root_signature_layout.h"
+
+#include <fmt/format.h>
+
+#include "rhi/register_shifts.h"
+#include "util/error.h"
+
+namespace penumbra::rhi {
+namespace {
+
+const char* className(RegisterClass c) {
+  switch (c) {
+    case RegisterClass::B: return "b";
+    case RegisterClass::T: return "t";
+    case RegisterClass::U: return "u";
+    case RegisterClass::S: return "s";
+  }
+  return "?";
+}
+
+DescriptorRangeType rangeTypeFor(const BindingLayoutItem& item, uint32_t space) {
+  const Register reg = registerForBinding(item.slot);
+  auto fail = [&](const char* why) {
+    return Error(fmt::format("root signature: '{}' (space {}, slot {} = register {}{}) {}", item.name,
+                             space, item.slot, className(reg.registerClass), reg.index, why));
+  };
+  if (reg.registerClass == RegisterClass::S) throw fail("is a sampler register; samplers are not supported");
+  switch (item.type) {
+    case ResourceType::ConstantBuffer:
+      if (reg.registerClass != RegisterClass::B) throw fail("is a constant buffer outside the b registers");
+      return DescriptorRangeType::CBV;
+    case ResourceType::AccelStruct:
+      if (reg.registerClass != RegisterClass::T)
+        throw fail("is an acceleration structure outside the t registers");
+      return DescriptorRangeType::SRV;
+    case ResourceType::StorageBuffer:
+    case ResourceType::StorageTexture:
+      if (reg.registerClass == RegisterClass::U) return DescriptorRangeType::UAV;
+      if (reg.registerClass != RegisterClass::T) throw fail("is a storage resource in the b registers");
+      if (item.writable) throw fail("is written by the shaders but lies in the read-only t registers");
+      return DescriptorRangeType::SRV;
+  }
+  throw fail("has an unknown resource type");
+}
+
+}  // namespace
+
+const DescriptorRangeLayout* DescriptorTableLayout::rangeForSlot(uint32_t slot) const {
+  for (const auto& r : ranges)
+    if (r.slot == slot) return &r;
+  return nullptr;
+}
+
+const DescriptorTableLayout* RootSignatureLayout::tableForSpace(uint32_t space) const {
+  for (const auto& t : tables)
+    if (t.space == space) return &t;
+  return nullptr;
+}
+
+RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layout) {
+  RootSignatureLayout result;
+  uint32_t parameter = 0;
+  if (layout.pushConstantBytes > 0) {
+    if (layout.pushConstantBytes % 4 != 0)
+      throw Error(fmt::format("root signature: push constants of {} bytes are not whole DWORDs",
+                              layout.pushConstantBytes));
+    result.pushConstants =
+        RootConstantsLayout{parameter++, kPushConstantRegister, kPushConstantSpace, layout.pushConstantBytes / 4};
+    result.dwordCost += result.pushConstants->num32BitValues;
+  }
+  for (const auto& space : layout.spaces) {
+    if (space.items.empty()) continue;
+    if (space.space == kPushConstantSpace || space.space == kShaderRecordSpace)
+      throw Error(fmt::format("root signature: space {} is reserved for root constants", space.space));
+    DescriptorTableLayout table;
+    table.space = space.space;
+    table.rootParameterIndex = parameter++;
+    for (const auto& item : space.items) {
+      DescriptorRangeLayout range;
+      range.type = rangeTypeFor(item, space.space);
+      range.baseRegister = registerForBinding(item.slot).index;
+      range.count = item.arraySize;
+      range.offsetInTable = table.descriptorCount;
+      range.slot = item.slot;
+      table.descriptorCount += item.arraySize;
+      table.ranges.push_back(range);
+    }
+    result.tables.push_back(std::move(table));
+    result.dwordCost += 1;
+  }
+  if (result.dwordCost > kMaxRootSignatureDwords)
+    throw Error(fmt::format("root signature: {} DWORDs exceed D3D12's limit of {} (push constants: {} "
+                            "bytes, {} descriptor tables)",
+                            result.dwordCost, kMaxRootSignatureDwords, layout.pushConstantBytes,
+                            result.tables.size()));
+  return result;
+}
+
+RootConstantsLayout computeShaderRecordConstants(uint32_t shaderRecordBytes) {
+  return {0, kShaderRecordRegister, kShaderRecordSpace, (shaderRecordBytes + 3) / 4};
+}
+
+}  // namespace penumbra::rhi

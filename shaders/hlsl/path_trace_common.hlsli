@@ -1,0 +1,34 @@
+// Resources and trace wrappers shared by the path tracer's DXR entry points:
+// the twin of glsl/path_trace_common.glsl, with the same registers (the
+// PT_T_*/PT_U_* numbers of path_tracer_shared.h; space 0).
+#ifndef PENUMBRA_PATH_TRACE_COMMON_HLSLI
+#define PENUMBRA_PATH_TRACE_COMMON_HLSLI
+#include "path_tracer_shared.h"
+#include "math.hlsli"
+#include "payloads.hlsli"
+
+#define PT_MISS_RADIANCE 0
+#define PT_MISS_SHADOW 1
+
+// Wrapped in a struct so entry points can copy the frame out as a plain
+// FrameConstants value (a ConstantBuffer<T> is not a T).
+struct FramePush {
+  FrameConstants frame;
+};
+[[vk::push_constant]] ConstantBuffer<FramePush> gPush : PENUMBRA_PUSH_CONSTANTS;
+RaytracingAccelerationStructure gScene : PENUMBRA_REGISTER_T(PT_T_SCENE);
+StructuredBuffer<float4> gVertices : PENUMBRA_REGISTER_T(PT_T_VERTICES);
+StructuredBuffer<uint> gIndices : PENUMBRA_REGISTER_T(PT_T_INDICES);
+StructuredBuffer<InstanceData> gInstances : PENUMBRA_REGISTER_T(PT_T_INSTANCES);
+StructuredBuffer<MaterialData> gMaterials : PENUMBRA_REGISTER_T(PT_T_MATERIALS);
+StructuredBuffer<EmissiveTriangle> gEmissiveTriangles : PENUMBRA_REGISTER_T(PT_T_EMISSIVE_TRIANGLES);
+StructuredBuffer<PointLight> gPointLights : PENUMBRA_REGISTER_T(PT_T_POINT_LIGHTS);
+RWTexture2D<float4> gAccumulation : PENUMBRA_REGISTER_U(PT_U_ACCUMULATION);
+RWStructuredBuffer<uint> gRayCounter : PENUMBRA_REGISTER_U(PT_U_RAY_COUNTER);
+
+InstanceData loadInstanceData(uint index) { return gInstances[index]; }
+MaterialData loadMaterial(uint index) { return gMaterials[index]; }
+EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
+PointLight loadPointLight(uint index) { return gPointLights[index]; }
+
+#endif

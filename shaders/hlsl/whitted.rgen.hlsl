@@ -1,0 +1,20 @@
+// Whitted ray tracing (DXR twin of glsl/whitted.rgen).
+#include "trace_wrappers.hlsli"
+#include "camera.hlsli"
+#include "whitted.hlsli"
+
+[shader("raygeneration")]
+void main() {
+  FrameConstants frame = gPush.frame;
+  uint2 pixel = DispatchRaysIndex().xy;
+  uint samples = frame.image.z;
+  uint before = frame.image.w;
+  float3 sum = zero3();
+  for (uint s = 0u; s < samples; s += 1u) {
+    Rng rng = rngCreate(pixel, before + s, frame.sampling.x);
+    float2 jitter = jitteredPixelSample(s, samples, rngNext(rng), rngNext(rng));
+    float3 direction = cameraRayDirection(frame, float2(pixel) + jitter);
+    sum += traceWhitted(frame, frame.cameraPosition.xyz, direction);
+  }
+  accumulate(pixel, sum, samples, before);
+}
