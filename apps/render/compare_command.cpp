@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "backend_factory.h"
 #include "commands.h"
+#include "render/path_tracer.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 
@@ -13,7 +17,12 @@ namespace penumbra::app {
 namespace {
 
 struct CompareOptions {
-  std::string a, b;
+  std::string a, b;                  // image files
+  std::string deviceA, deviceB;      // or BACKEND:INDEX render targets
+  std::string scene = "cornell-box";
+  std::string size = "128x128";
+  uint32_t spp = 16;
+  uint32_t seed = 0;
   double tolerance = 1e-3;
   double allowedFraction = 0.0;
   std::string diffOut;
@@ -41,12 +50,52 @@ image::Image8 falseColourDifference(const image::Image& a, const image::Image& b
   return out;
 }
 
+// "vulkan:1" -> ("vulkan", 1); "vulkan" -> ("vulkan", -1 = default device).
+std::pair<std::string, int> parseDeviceSpec(const std::string& spec) {
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos) return {spec, -1};
+  const std::string index = spec.substr(colon + 1);
+  if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos)
+    throw Error(fmt::format("compare: '{}' is not BACKEND:INDEX (e.g. vulkan:0)", spec));
+  return {spec.substr(0, colon), std::stoi(index)};
+}
+
+image::Image renderOn(const std::string& spec, const scene::Scene& scene, uint32_t w, uint32_t h,
+                      const CompareOptions& o) {
+  auto [backend, index] = parseDeviceSpec(spec);
+  rhi::DeviceCreateInfo info;
+  info.adapterIndex = index;
+  auto device = backends::createDevice(backend, info);
+  fmt::print("{}: {} via {}\n", spec, device->adapter().name, device->backendName());
+  std::fflush(stdout);
+  render::PathTracerSettings settings;
+  settings.seed = o.seed;
+  return render::renderImage(*device, scene, w, h, o.spp, settings);
+}
+
 int runCompare(const CompareOptions& o) {
   if (!o.diffOut.empty()) image::checkWritable(o.diffOut);
-  const auto a = image::loadExr(o.a);
-  const auto b = image::loadExr(o.b);
+  const bool renderMode = !o.deviceA.empty() || !o.deviceB.empty();
+  if (renderMode && (o.deviceA.empty() || o.deviceB.empty() || !o.a.empty()))
+    throw Error("compare: give two image files, or --a and --b (BACKEND:INDEX) to render both");
+  if (!renderMode && (o.a.empty() || o.b.empty()))
+    throw Error("compare: give two image files, or --a and --b (BACKEND:INDEX) to render both");
+  image::Image a, b;
+  std::string nameA = o.a, nameB = o.b;
+  if (renderMode) {
+    const auto [w, h] = parseImageSize(o.size);
+    const auto scene = scene::loadScene(o.scene);
+    fmt::print("scene: {}, {}x{}, {} spp, seed {}\n", scene.name, w, h, o.spp, o.seed);
+    a = renderOn(o.deviceA, scene, w, h, o);
+    b = renderOn(o.deviceB, scene, w, h, o);
+    nameA = o.deviceA;
+    nameB = o.deviceB;
+  } else {
+    a = image::loadExr(o.a);
+    b = image::loadExr(o.b);
+  }
   const auto s = image::compareImages(a, b, o.tolerance);
-  fmt::print("images: {} vs {} ({}x{})\n", o.a, o.b, a.width, a.height);
+  fmt::print("images: {} vs {} ({}x{})\n", nameA, nameB, a.width, a.height);
   const auto ma = image::meanRgb(a), mb = image::meanRgb(b);
   fmt::print("mean RGB: a ({:.6g}, {:.6g}, {:.6g})  b ({:.6g}, {:.6g}, {:.6g})\n", ma.r, ma.g, ma.b,
              mb.r, mb.g, mb.b);
@@ -72,9 +121,17 @@ int runCompare(const CompareOptions& o) {
 
 Command addCompareCommand(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
-  auto* cmd = app.add_subcommand("compare", "Compare two linear EXR images pixel for pixel");
-  cmd->add_option("a", o->a, "First image (.exr)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("b", o->b, "Second image (.exr)")->required()->check(CLI::ExistingFile);
+  auto* cmd = app.add_subcommand(
+      "compare", "Compare two linear EXR images, or renders on two backends/devices, pixel for pixel");
+  auto* compare = cmd;
+  compare->add_option("a", o->a, "First image (.exr)")->check(CLI::ExistingFile);
+  compare->add_option("b", o->b, "Second image (.exr)")->check(CLI::ExistingFile);
+  compare->add_option("--a", o->deviceA, "Render on BACKEND:INDEX (e.g. vulkan:0) instead of reading a file");
+  compare->add_option("--b", o->deviceB, "Render on BACKEND:INDEX (e.g. d3d12:0) instead of reading a file");
+  compare->add_option("--scene", o->scene, "Scene to render with --a/--b")->capture_default_str();
+  compare->add_option("--size", o->size, "Image size with --a/--b")->capture_default_str();
+  compare->add_option("--spp", o->spp, "Samples per pixel with --a/--b")->check(CLI::Range(1u, 1u << 16))->capture_default_str();
+  compare->add_option("--seed", o->seed, "Random seed with --a/--b (the same on both)")->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance,
                   "Relative per-channel tolerance: |a-b| <= tol * max(|a|, |b|, 1e-3)")
       ->capture_default_str();

@@ -35,7 +35,9 @@ struct RenderOptions {
   float exposure = 1.0f;
 };
 
-std::pair<uint32_t, uint32_t> parseSize(const std::string& text) {
+}  // namespace
+
+std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text) {
   static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
   std::smatch m;
   if (!std::regex_match(text, m, pattern))
@@ -46,8 +48,10 @@ std::pair<uint32_t, uint32_t> parseSize(const std::string& text) {
   return {w, h};
 }
 
+namespace {
+
 int runRender(const RenderOptions& o) {
-  auto [width, height] = parseSize(o.size);
+  auto [width, height] = parseImageSize(o.size);
   // Everything that can fail on bad input fails before any rendering starts.
   image::checkWritable(o.out);
   const scene::Scene scene = scene::loadScene(o.scene);

@@ -337,4 +337,13 @@ image::Image PathTracer::readback() {
   return img;
 }
 
+image::Image renderImage(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
+                         uint32_t height, uint32_t spp, const PathTracerSettings& settings,
+                         uint32_t samplesPerFrame) {
+  PathTracer tracer(device, scene, width, height);
+  while (tracer.accumulatedSamples() < spp)
+    tracer.renderFrame(settings, std::min(samplesPerFrame, spp - tracer.accumulatedSamples()));
+  return tracer.readback();
+}
+
 }  // namespace penumbra::render

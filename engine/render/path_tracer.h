@@ -93,4 +93,11 @@ class PathTracer {
   rhi::TimerQueryHandle timer_;
 };
 
+// Renders `spp` samples per pixel in frames of up to 16 and returns the mean
+// (linear RGBA). `progress`, if set, is called after each frame with the
+// samples done so far.
+image::Image renderImage(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
+                         uint32_t height, uint32_t spp, const PathTracerSettings& settings,
+                         uint32_t samplesPerFrame = PathTracer::kMaxSamplesPerFrame);
+
 }  // namespace penumbra::render

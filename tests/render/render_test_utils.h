@@ -10,11 +10,7 @@ namespace penumbra::test {
 inline image::Image renderScene(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
                                 uint32_t height, uint32_t spp,
                                 const render::PathTracerSettings& settings = {}) {
-  render::PathTracer tracer(device, scene, width, height);
-  while (tracer.accumulatedSamples() < spp)
-    tracer.renderFrame(settings, std::min(render::PathTracer::kMaxSamplesPerFrame,
-                                          spp - tracer.accumulatedSamples()));
-  return tracer.readback();
+  return render::renderImage(device, scene, width, height, spp, settings);
 }
 
 }  // namespace penumbra::test
