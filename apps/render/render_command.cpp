@@ -65,6 +65,8 @@ int runRender(const RenderOptions& o) {
              adapter.apiVersion, device->backendName());
   fmt::print("scene: {} ({} triangles), {}x{}, {} spp, seed {}\n", scene.name, scene.triangleCount(),
              width, height, o.spp, o.seed);
+  if (o.clamp > 0.0f)
+    fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n", o.clamp);
   std::fflush(stdout);  // before the progress lines on stderr
 
   render::PathTracer tracer(*device, scene, width, height);
