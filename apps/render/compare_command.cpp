@@ -104,6 +104,7 @@ int runCompare(const CompareOptions& o) {
   fmt::print("pixels beyond relative tolerance {:g}: {} ({:.4f}%)\n", o.tolerance,
              s.pixelsBeyondTolerance, s.fractionBeyondTolerance * 100.0);
   fmt::print("PSNR: {:.2f} dB\n", s.psnr);
+  fmt::print("relative MSE (b as reference): {:.6g}\n", s.relativeMse);
   if (s.nonFiniteA || s.nonFiniteB)
     fmt::print("non-finite pixels: {} in a, {} in b\n", s.nonFiniteA, s.nonFiniteB);
   if (!o.diffOut.empty()) {

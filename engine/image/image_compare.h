@@ -15,6 +15,9 @@ struct ComparisonStats {
   double fractionBeyondTolerance = 0;
   uint64_t pixelsBeyondTolerance = 0;
   double psnr = 0;  // dB, peak = max value of image a (infinite if identical)
+  // Relative MSE against b as the reference: mean of (a - b)^2 / (b^2 + 1e-2)
+  // over RGB channels (the 1e-2 keeps dark pixels from dominating).
+  double relativeMse = 0;
   uint64_t nonFiniteA = 0, nonFiniteB = 0;
 };
 

@@ -247,7 +247,9 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
     // wo and wi are nearly opposite at the horizon, where no lobe has density.
     float cosOH = dot(wo, wh);
     float jacobian = cosOH > 0.0 ? 1.0 / (4.0 * cosOH) : 0.0;
-    if (w.specularLayer > 0.0 && !isSpecularGgx(g)) {
+    // pSpecular is 0 exactly when the layer's F0 is 0, and then F is 0 at every
+    // angle: skip the GGX work (Lambertian scenes pay nothing for it).
+    if (w.pSpecular > 0.0 && !isSpecularGgx(g)) {
       float dg = ggxD(g, wh) * ggxG2(g, wo, wi) / (4.0 * wo.z * wi.z);
       r.f += specularFresnel(m, cosThetaD) * (dg * coat);
       r.pdf += w.pSpecular * vndf * jacobian;
