@@ -31,8 +31,9 @@ TEST_CASE("an injected difference is measured exactly", "[image][compare]") {
   REQUIRE(s.fractionBeyondTolerance == Approx(0.05));
   // MSE = 5 * 0.25 / 300; peak = 1.
   REQUIRE(s.psnr == Approx(10.0 * std::log10(1.0 / (1.25 / 300.0))));
-  // relMSE: 5 channels of 300 with 0.25 / (1 + 1e-2).
-  REQUIRE(s.relativeMse == Approx(5 * 0.25 / 1.01 / 300.0));
+  // relMSE with b (1.5 in the changed channels) as the reference:
+  // 5 of 300 channels contribute 0.25 / (1.5^2 + 1e-2).
+  REQUIRE(s.relativeMse == Approx(5 * 0.25 / (2.25 + 0.01) / 300.0));
   // A tolerance above the relative difference (0.5 / 1.5) accepts them.
   REQUIRE(image::compareImages(a, b, 0.4).pixelsBeyondTolerance == 0u);
 }
