@@ -1,5 +1,6 @@
 # penumbra_add_shaders(TARGET name NAMESPACE ns SOURCES files... INCLUDE_DIRS dirs...
-#                      [HLSL_DIR dir HLSL_INCLUDE_DIRS dirs...])
+#                      [HLSL_DIR dir HLSL_INCLUDE_DIRS dirs...]
+#                      [EFFECT_VARIANTS source bits [source bits ...]])
 #
 # Builds every entry point for both APIs and embeds the results in a static
 # library:
@@ -20,6 +21,10 @@
 #   std::span<const uint32_t> find(name);   // SPIR-V words, empty if unknown
 #   rhi::ShaderDesc shaderDesc(name);        // everything a backend needs
 # where `name` is the source file name, e.g. "path_trace.rgen".
+#
+# EFFECT_VARIANTS (shaders/shared/effects.h): each listed source is also built
+# once per proper subset M of `bits` with -DPT_EFFECTS=M, named
+# "<stem>.e<M>.<ext>" (path_trace.e5.rgen); the plain name holds every effect.
 
 # --- DXC: Windows SDK, Vulkan SDK, PATH, or -DDXC_EXECUTABLE=... -------------
 set(DXC_EXECUTABLE "" CACHE FILEPATH "DirectX Shader Compiler used to build the D3D12 backend's DXIL")
@@ -89,7 +94,8 @@ function(_penumbra_shader_stage name out)
 endfunction()
 
 function(penumbra_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;NAMESPACE;HLSL_DIR" "SOURCES;INCLUDE_DIRS;HLSL_INCLUDE_DIRS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;NAMESPACE;HLSL_DIR"
+                        "SOURCES;INCLUDE_DIRS;HLSL_INCLUDE_DIRS;EFFECT_VARIANTS" ${ARGN})
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
   file(MAKE_DIRECTORY ${out_dir})
   set(include_flags)
@@ -107,9 +113,42 @@ function(penumbra_add_shaders)
   set(headers)
   set(table_entries)
   set(includes)
+  # Jobs: "<source>|<embedded name>|<PT_EFFECTS value or empty>".
+  set(jobs)
   foreach(src ${ARG_SOURCES})
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME)
+    list(APPEND jobs "${abs}|${name}|")
+  endforeach()
+  set(variant_args ${ARG_EFFECT_VARIANTS})
+  while(variant_args)
+    list(POP_FRONT variant_args src bits)
+    get_filename_component(abs ${src} ABSOLUTE)
+    get_filename_component(name ${src} NAME)
+    string(REGEX REPLACE "^([^.]+)\\.(.*)$" "\\1" stem ${name})
+    string(REGEX REPLACE "^([^.]+)\\.(.*)$" "\\2" ext ${name})
+    foreach(mask RANGE ${bits})
+      math(EXPR inside "${mask} & ${bits}")
+      if(inside EQUAL mask AND NOT mask EQUAL bits)
+        list(APPEND jobs "${abs}|${stem}.e${mask}.${ext}|${mask}")
+      endif()
+    endforeach()
+  endwhile()
+
+  foreach(job ${jobs})
+    string(REPLACE "|" ";" job_parts "${job}")
+    list(GET job_parts 0 abs)
+    list(GET job_parts 1 name)
+    list(LENGTH job_parts job_length)
+    set(effect_defines)
+    if(job_length GREATER 2)
+      list(GET job_parts 2 effects)
+      if(NOT effects STREQUAL "")
+        set(effect_defines -DPT_EFFECTS=${effects})
+      endif()
+    endif()
+    get_filename_component(source_name ${abs} NAME)
+    set(src ${abs})
     string(MAKE_C_IDENTIFIER "shader_${name}" var)
     _penumbra_shader_stage(${name} stage)
     set(spv ${out_dir}/${name}.spv)
@@ -126,7 +165,7 @@ function(penumbra_add_shaders)
     endif()
     add_custom_command(
       OUTPUT ${spv}
-      COMMAND ${GLSLANG_VALIDATOR} ${lang_flags} ${include_flags} --quiet
+      COMMAND ${GLSLANG_VALIDATOR} ${lang_flags} ${effect_defines} ${include_flags} --quiet
               --depfile ${spv}.d -o ${spv} ${abs}
       DEPENDS ${abs}
       DEPFILE ${spv}.d
@@ -136,7 +175,7 @@ function(penumbra_add_shaders)
     set(dxil_args)
     set(dxil_depends)
     if(ARG_HLSL_DIR AND NOT name MATCHES "\\.hlsl$")
-      set(hlsl ${ARG_HLSL_DIR}/${name}.hlsl)
+      set(hlsl ${ARG_HLSL_DIR}/${source_name}.hlsl)
       if(NOT EXISTS ${hlsl})
         message(FATAL_ERROR "penumbra_add_shaders: ${src} has no DXR twin ${hlsl}")
       endif()
@@ -149,7 +188,8 @@ function(penumbra_add_shaders)
         endif()
         add_custom_command(
           OUTPUT ${dxil}
-          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 ${hlsl_include_flags} -Fo ${dxil} ${hlsl}
+          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 ${effect_defines} ${hlsl_include_flags} -Fo ${dxil}
+                  ${hlsl}
           DEPENDS ${hlsl} ${hlsl_depends}
           COMMENT "dxc ${name}.hlsl"
           VERBATIM)

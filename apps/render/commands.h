@@ -12,6 +12,7 @@ using Command = std::function<int()>;
 Command addRenderCommand(CLI::App& app);
 Command addDevicesCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
 // "512x512" -> (512, 512); penumbra::Error with the flag's name otherwise.
 std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text);
 }  // namespace penumbra::app

@@ -1,4 +1,4 @@
-// `penumbra`: the headless renderer (render, devices, compare).
+// `penumbra`: the headless renderer (render, devices, compare, bench).
 #include <cstdio>
 #include <map>
 
@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   add(&app::addRenderCommand);
   add(&app::addDevicesCommand);
   add(&app::addCompareCommand);
+  add(&app::addBenchCommand);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "image/image_io.h"
 #include "progress.h"
+#include "render/effect_set.h"
 #include "render/path_tracer.h"
 #include "render/tonemapper.h"
 #include "scene/scene_loader.h"
@@ -32,6 +33,8 @@ struct RenderOptions {
   float clamp = 0.0f;
   bool noRoulette = false;
   bool validation = false;
+  bool allEffects = false;
+  bool printEffects = false;
   float exposure = 1.0f;
 };
 
@@ -53,8 +56,12 @@ namespace {
 int runRender(const RenderOptions& o) {
   auto [width, height] = parseImageSize(o.size);
   // Everything that can fail on bad input fails before any rendering starts.
-  image::checkWritable(o.out);
   const scene::Scene scene = scene::loadScene(o.scene);
+  if (o.printEffects) {
+    for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
+    return 0;
+  }
+  image::checkWritable(o.out);
 
   rhi::DeviceCreateInfo info;
   info.adapterIndex = o.device;
@@ -69,7 +76,14 @@ int runRender(const RenderOptions& o) {
     fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n", o.clamp);
   std::fflush(stdout);  // before the progress lines on stderr
 
-  render::PathTracer tracer(*device, scene, width, height);
+  render::PipelineOptions pipeline;
+  pipeline.allEffects = o.allEffects;
+  render::PathTracer tracer(*device, scene, width, height, pipeline);
+  std::string effects;
+  for (const auto& name : render::effectNames(tracer.pipelineEffects()))
+    effects += (effects.empty() ? "" : ", ") + name;
+  fmt::print("pipeline effects: {}{}\n", effects.empty() ? "none" : effects,
+             o.allEffects ? " (--all-effects)" : "");
   render::PathTracerSettings settings;
   settings.seed = o.seed;
   settings.maxDepth = o.maxDepth;
@@ -143,6 +157,10 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")->capture_default_str();
+  cmd->add_flag("--all-effects", o->allEffects,
+                "Build the full pipeline instead of only the effects the scene calls for");
+  cmd->add_flag("--print-effects", o->printEffects,
+                "List the effects the scene calls for, one per line, and exit");
   cmd->add_flag("--validation", o->validation, "Enable the API validation layer; fail on any message");
   return [o] { return runRender(*o); };
 }

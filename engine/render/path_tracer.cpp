@@ -2,12 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "effects.h"
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
+#include "render/effect_set.h"
 #include "util/error.h"
 
 namespace penumbra::render {
@@ -65,11 +68,14 @@ struct PathTracer::SceneBuffers {
   rhi::rt::AccelStructHandle topLevel;
 };
 
-PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height)
+PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
+                       const PipelineOptions& options)
     : device_(device), width_(width), height_(height), camera_(scene.camera) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
   scene::validate(scene);
+  sceneEffects_ = deriveEffects(scene);
+  pipelineEffects_ = options.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
   commandList_ = device_.createCommandList();
   timer_ = device_.createTimerQuery();
 
@@ -226,15 +232,25 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 }
 
 void PathTracer::createPipeline() {
+  // The ray-generation shaders hold the shading code, so they are what the
+  // effect set specializes; their export names stay the plain ones.
+  auto rayGenVariant = [&](const char* name) {
+    rhi::ShaderDesc shader = shaders::shaderDesc(rayGenerationVariant(name, pipelineEffects_));
+    shader.exportName = name;
+    return shader;
+  };
   rhi::RayTracingPipelineDesc desc;
-  desc.debugName = "path tracer";
-  desc.shaders = {shaders::shaderDesc("path_trace.rgen"), shaders::shaderDesc("whitted.rgen"),
+  desc.debugName = fmt::format("path tracer (effects {:#x})", pipelineEffects_);
+  desc.shaders = {rayGenVariant("path_trace.rgen"), rayGenVariant("whitted.rgen"),
                   shaders::shaderDesc("path_trace.rmiss"), shaders::shaderDesc("shadow.rmiss"),
                   shaders::shaderDesc("triangle.rchit")};
   desc.hitGroups = {{"triangles", "triangle.rchit", "", "", false}};
   desc.maxPayloadBytes = 36;  // SurfaceHit
   desc.maxRecursionDepth = 1; // only the ray generation shader traces
+  const auto start = std::chrono::steady_clock::now();
   pipeline_ = device_.createRayTracingPipeline(desc);
+  pipelineCreationSeconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // One table per integrator; they differ in the ray generation record only.
   auto makeTable = [&](const char* rayGen) {
@@ -339,8 +355,8 @@ image::Image PathTracer::readback() {
 
 image::Image renderImage(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
                          uint32_t height, uint32_t spp, const PathTracerSettings& settings,
-                         uint32_t samplesPerFrame) {
-  PathTracer tracer(device, scene, width, height);
+                         uint32_t samplesPerFrame, const PipelineOptions& options) {
+  PathTracer tracer(device, scene, width, height, options);
   while (tracer.accumulatedSamples() < spp)
     tracer.renderFrame(settings, std::min(samplesPerFrame, spp - tracer.accumulatedSamples()));
   return tracer.readback();

@@ -37,6 +37,13 @@ struct PathTracerSettings {
   uint32_t seed = 0;
 };
 
+// How the pipeline is built. By default it holds only the effects the scene
+// calls for (engine/render/effect_set.h); `allEffects` builds the full one,
+// for comparison and benchmarks.
+struct PipelineOptions {
+  bool allEffects = false;
+};
+
 struct FrameStats {
   double gpuSeconds = 0;  // GPU timestamps around the dispatch
   uint64_t rays = 0;      // every traced ray (camera, bounce, shadow), counted on the GPU
@@ -53,7 +60,8 @@ class PathTracer {
  public:
   static constexpr uint32_t kMaxSamplesPerFrame = 16;
 
-  PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height);
+  PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
+             const PipelineOptions& options = {});
   ~PathTracer();
   PathTracer(const PathTracer&) = delete;
   PathTracer& operator=(const PathTracer&) = delete;
@@ -70,6 +78,11 @@ class PathTracer {
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   uint32_t emissiveTriangleCount() const { return emissiveTriangleCount_; }
+  // The PT_EFFECT_* bits the scene calls for, and those the pipeline holds.
+  uint32_t sceneEffects() const { return sceneEffects_; }
+  uint32_t pipelineEffects() const { return pipelineEffects_; }
+  // CPU time spent creating the ray-tracing pipeline (compiling its shaders).
+  double pipelineCreationSeconds() const { return pipelineCreationSeconds_; }
 
  private:
   struct SceneBuffers;
@@ -82,6 +95,9 @@ class PathTracer {
   uint32_t accumulatedSamples_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
   uint32_t pointLightCount_ = 0;
+  uint32_t sceneEffects_ = 0;
+  uint32_t pipelineEffects_ = 0;
+  double pipelineCreationSeconds_ = 0;
   glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;
@@ -98,6 +114,7 @@ class PathTracer {
 // samples done so far.
 image::Image renderImage(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
                          uint32_t height, uint32_t spp, const PathTracerSettings& settings,
-                         uint32_t samplesPerFrame = PathTracer::kMaxSamplesPerFrame);
+                         uint32_t samplesPerFrame = PathTracer::kMaxSamplesPerFrame,
+                         const PipelineOptions& options = {});
 
 }  // namespace penumbra::render

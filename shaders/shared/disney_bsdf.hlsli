@@ -30,6 +30,7 @@
 // specular (delta) and are sampled but never evaluated.
 #ifndef PENUMBRA_DISNEY_BSDF_HLSLI
 #define PENUMBRA_DISNEY_BSDF_HLSLI
+#include "effects.h"
 #include "fresnel.hlsli"
 #include "microfacet.hlsli"
 #include "sampling.hlsli"
@@ -239,7 +240,11 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
     float coat = coatAttenuation(m, wo.z, wi.z);
     if (w.diffuse > 0.0) {
       r.f += (w.diffuse * baseAttenuation(m, wo.z, wi.z)) *
-             (diffuseTerm(m, wo, wi, cosThetaD) + sheenTerm(m, cosThetaD));
+             (diffuseTerm(m, wo, wi, cosThetaD)
+#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+              + sheenTerm(m, cosThetaD)
+#endif
+             );
       r.pdf += w.pDiffuse * cosineHemispherePdf(wi.z);
     }
     float vndf = ggxVisibleNormalPdf(g, wo, wh);
@@ -249,11 +254,14 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
     float jacobian = cosOH > 0.0 ? 1.0 / (4.0 * cosOH) : 0.0;
     // pSpecular is 0 exactly when the layer's F0 is 0, and then F is 0 at every
     // angle: skip the GGX work (Lambertian scenes pay nothing for it).
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR)
     if (w.pSpecular > 0.0 && !isSpecularGgx(g)) {
       float dg = ggxD(g, wh) * ggxG2(g, wo, wi) / (4.0 * wo.z * wi.z);
       r.f += specularFresnel(m, cosThetaD) * (dg * coat);
       r.pdf += w.pSpecular * vndf * jacobian;
     }
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
     if (w.glass > 0.0) {
       Ggx gg = m.thin ? thinGlassGgx(m) : g;
       if (!isSpecularGgx(gg) && eta != 1.0) {
@@ -263,6 +271,8 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         r.pdf += w.pGlass * fr * ggxVisibleNormalPdf(gg, wo, wh) * jacobian;
       }
     }
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
     if (w.clearcoat > 0.0) {
       float alpha = clearcoatAlpha(m);
       float d = gtr1D(alpha, wh.z);
@@ -271,7 +281,10 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
       r.f += splat3(w.clearcoat * d * fc * gc / (4.0 * wo.z * wi.z));
       r.pdf += w.pClearcoat * d * wh.z * jacobian;
     }
-  } else if (w.glass > 0.0 && eta != 1.0) {
+#endif
+  }
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  else if (w.glass > 0.0 && eta != 1.0) {
     float3 wiAbs = float3(wi.x, wi.y, -wi.z);
     if (m.thin) {
       // Thin: the transmitted lobe is the reflected one mirrored through the sheet.
@@ -301,6 +314,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
       }
     }
   }
+#endif
   return r;
 }
 
@@ -328,7 +342,9 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
   if (u0 < w.pDiffuse) {
     s.lobe = BSDF_LOBE_DIFFUSE;
     wi = sampleCosineHemisphere(u1, u2);
-  } else if (u0 < w.pDiffuse + w.pSpecular) {
+  }
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR)
+  else if (u0 < w.pDiffuse + w.pSpecular) {
     s.lobe = BSDF_LOBE_SPECULAR;
     if (isSpecularGgx(g)) {
       s.wi = float3(-wo.x, -wo.y, wo.z * side);
@@ -338,7 +354,10 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
     }
     wi = reflectDirection(wo, ggxSampleVisibleNormal(g, wo, u1, u2));
     if (wi.z <= 0.0) return disneyNoSample();
-  } else if (u0 < w.pDiffuse + w.pSpecular + w.pGlass) {
+  }
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  else if (u0 < w.pDiffuse + w.pSpecular + w.pGlass) {
     s.lobe = BSDF_LOBE_GLASS;
     // Reuse u0 to choose reflection or transmission.
     float uChoice = (u0 - w.pDiffuse - w.pSpecular) / w.pGlass;
@@ -376,14 +395,19 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
       s.isDelta = true;
       return s;
     }
-  } else if (w.pClearcoat > 0.0) {
+  }
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
+  else if (w.pClearcoat > 0.0) {
     s.lobe = BSDF_LOBE_CLEARCOAT;
     float cosThetaM = gtr1SampleCosTheta(clearcoatAlpha(m), u1);
     float sinThetaM = sqrt(max(0.0, 1.0 - cosThetaM * cosThetaM));
     float phi = 2.0 * kPi * u2;
     wi = reflectDirection(wo, float3(sinThetaM * cos(phi), sinThetaM * sin(phi), cosThetaM));
     if (wi.z <= 0.0) return disneyNoSample();
-  } else {
+  }
+#endif
+  else {
     return s;
   }
 

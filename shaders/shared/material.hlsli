@@ -53,6 +53,21 @@ DisneyMaterial unpackDisney(MaterialData d) {
     m.specular = 0.5 * p.ks;
     m.lambertDiffuse = true;
   }
+  // A variant without an effect is only used for scenes whose materials all
+  // have these parameters at 0; saying so lets the compiler fold the lobes away.
+#if !PT_HAS_EFFECT(PT_EFFECT_SPECULAR)
+  m.metallic = 0.0;
+  m.specular = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  m.specTrans = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
+  m.clearcoat = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+  m.sheen = 0.0;
+#endif
   return m;
 }
 

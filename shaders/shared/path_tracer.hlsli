@@ -68,6 +68,7 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
     InstanceData instance = loadInstanceData(hit.instanceIndex);
     MaterialData data = loadMaterial(instance.materialIndex);
 
+#if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
     // Emission: one-sided, from the counter-clockwise face.
     float cosLight = -dot(direction, hit.geometricNormal);
     if (instance.firstEmissiveTriangle != PT_NO_EMISSION && cosLight > 0.0) {
@@ -82,6 +83,7 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
       }
       // NEE without MIS: this light was already counted by a shadow ray.
     }
+#endif
     if (depth >= maxDepth) break;
 
     DisneyMaterial material = unpackDisney(data);
@@ -90,6 +92,7 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
     float3 wo = frameToLocal(frame, -direction);
     if (wo.z == 0.0) break;  // exactly grazing: no side to scatter into
 
+#if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
     if (useNee && c.lights.x > 0u) {
       float u0 = rngNext(rng);
       float u1 = rngNext(rng);
@@ -118,6 +121,8 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
         }
       }
     }
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
     if (useNee) {
       for (uint l = 0u; l < c.lights.y; l += 1u) {
         PointLight pl = loadPointLight(l);
@@ -135,6 +140,7 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
           radiance += clampContribution(throughput * e.f * incident * abs(wiLocal.z), clampLimit);
       }
     }
+#endif
 
     // Next direction.
     float u0 = rngNext(rng);

@@ -84,6 +84,7 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
 
     if (ray.depth >= c.sampling.y) continue;
     float3 mirror = normalize(ray.direction + 2.0 * abs(cosIn) * n);
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
     if (p.transparency > 0.0) {
       // Entering through the front face goes from air into the material.
       float eta = frontFace ? p.ior : 1.0 / p.ior;
@@ -103,6 +104,8 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
         top += 1;
       }
     }
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR)
     if (p.reflectivity > 0.0 && top < WHITTED_STACK_SIZE) {
       float3 w = ray.weight * p.reflectivity;
       if (maxComponent(w) > kWhittedMinWeight) {
@@ -110,6 +113,7 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
         top += 1;
       }
     }
+#endif
   }
   return radiance;
 }

@@ -15,6 +15,15 @@ grep -qE "^GPU time: [0-9.]+ ms" "$work/log"
 [ "$(od -An -tu1 -j16 -N8 "$work/cornell.png" | tr -s ' ')" = " 0 0 0 48 0 0 0 32" ]
 "$penumbra" render --size 48x32 --spp 4 --seed 3 --validation --out "$work/cornell.exr" >/dev/null
 [ "$(head -c 4 "$work/cornell.exr" | od -An -tx1 | tr -d ' \n')" = "762f3101" ]
+# The Cornell box calls for its area light only (Lambertian walls); the full
+# pipeline is one flag away, and the render says which it built.
+[ "$("$penumbra" render --print-effects)" = "area-lights" ]
+grep -q "^pipeline effects: area-lights$" "$work/log"
+"$penumbra" render --size 16x16 --spp 1 --all-effects --out "$work/full.exr" | grep -q "^pipeline effects: area-lights, delta-lights, specular, transmission, clearcoat, sheen (--all-effects)$"
+# bench times both pipelines in one run and finds their images identical.
+"$penumbra" bench --size 16x16 --frames 2 | tee "$work/bench"
+grep -qE "^full / specialized GPU time \(medians\): [0-9.]+$" "$work/bench"
+grep -qE "^images: max \|difference\| 0," "$work/bench"
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
 "$penumbra" render --help | grep -q -- "--spp"
 echo "render CLI ok"

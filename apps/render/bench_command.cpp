@@ -1,0 +1,140 @@
+// `penumbra bench`: the cost of the effect-specialized pipeline against the
+// full one, measured side by side in one run on one device. Frames alternate
+// between the two so clock and thermal drift hit both alike; the figures are
+// GPU timestamps around each dispatch.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include "backend_factory.h"
+#include "commands.h"
+#include "image/image_compare.h"
+#include "render/effect_set.h"
+#include "render/path_tracer.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+
+namespace penumbra::app {
+namespace {
+
+struct BenchOptions {
+  std::string scene = "cornell-box";
+  std::string size = "1920x1080";
+  uint32_t sppPerFrame = 1;
+  uint32_t frames = 16;
+  std::string backend = "vulkan";
+  int device = -1;
+  render::Integrator integrator = render::Integrator::Path;
+};
+
+struct Timings {
+  std::vector<double> frameSeconds;
+  uint64_t rays = 0;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double mean(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+}
+
+std::string joinNames(uint32_t effects) {
+  const auto names = render::effectNames(effects);
+  if (names.empty()) return "none";
+  std::string joined;
+  for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
+  return joined;
+}
+
+int runBench(const BenchOptions& o) {
+  auto [width, height] = parseImageSize(o.size);
+  const scene::Scene scene = scene::loadScene(o.scene);
+  rhi::DeviceCreateInfo info;
+  info.adapterIndex = o.device;
+  auto device = backends::createDevice(o.backend, info);
+  const auto& adapter = device->adapter();
+  fmt::print("device: {} ({}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
+             device->backendName());
+  fmt::print("scene: {} ({} triangles), {}x{}, {} spp per frame, {} frames each, {} integrator\n",
+             scene.name, scene.triangleCount(), width, height, o.sppPerFrame, o.frames,
+             o.integrator == render::Integrator::Path ? "path" : "whitted");
+
+  render::PipelineOptions full;
+  full.allEffects = true;
+  render::PathTracer specialized(*device, scene, width, height);
+  render::PathTracer everything(*device, scene, width, height, full);
+  render::PathTracerSettings settings;
+  settings.integrator = o.integrator;
+
+  // One warm-up frame each (first-dispatch costs), then a fresh mean.
+  specialized.renderFrame(settings, o.sppPerFrame);
+  everything.renderFrame(settings, o.sppPerFrame);
+  specialized.resetAccumulation();
+  everything.resetAccumulation();
+
+  Timings tSpecialized, tFull;
+  for (uint32_t f = 0; f < o.frames; ++f) {
+    settings.seed = f;  // both pipelines trace the same paths frame by frame
+    auto a = specialized.renderFrame(settings, o.sppPerFrame);
+    auto b = everything.renderFrame(settings, o.sppPerFrame);
+    tSpecialized.frameSeconds.push_back(a.gpuSeconds);
+    tSpecialized.rays += a.rays;
+    tFull.frameSeconds.push_back(b.gpuSeconds);
+    tFull.rays += b.rays;
+  }
+
+  const auto stats = image::compareImages(specialized.readback(), everything.readback(), 1e-4);
+  auto report = [&](const char* label, const render::PathTracer& t, const Timings& timings) {
+    const double total =
+        std::accumulate(timings.frameSeconds.begin(), timings.frameSeconds.end(), 0.0);
+    fmt::print("{:<12} effects [{}]\n", label, joinNames(t.pipelineEffects()));
+    fmt::print(
+        "{:<12} GPU ms/frame median {:.3f}, mean {:.3f}; {:.2f} Mrays/s; pipeline creation {:.1f} "
+        "ms\n",
+        "", median(timings.frameSeconds) * 1e3, mean(timings.frameSeconds) * 1e3,
+        total > 0 ? double(timings.rays) / total * 1e-6 : 0.0, t.pipelineCreationSeconds() * 1e3);
+  };
+  report("specialized", specialized, tSpecialized);
+  report("full", everything, tFull);
+  fmt::print("full / specialized GPU time (medians): {:.3f}\n",
+             median(tFull.frameSeconds) / median(tSpecialized.frameSeconds));
+  fmt::print("images: max |difference| {:.3g}, mean {:.3g}, rays traced {} vs {}\n",
+             stats.maxAbsoluteDifference, stats.meanAbsoluteDifference, tSpecialized.rays,
+             tFull.rays);
+  return 0;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  auto* cmd = app.add_subcommand(
+      "bench",
+      "Time the effect-specialized pipeline against the full one on one scene (GPU timestamps)");
+  cmd->add_option("--scene", o->scene, "Built-in scene name or scene file (.json)")
+      ->capture_default_str();
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each frame")
+      ->check(CLI::Range(1u, 16u))
+      ->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per pipeline")
+      ->check(CLI::Range(1u, 100000u))
+      ->capture_default_str();
+  cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
+  cmd->add_option("--device", o->device,
+                  "Device index from 'penumbra devices' (default: best with ray tracing)");
+  const std::map<std::string, render::Integrator> integrators{
+      {"path", render::Integrator::Path}, {"whitted", render::Integrator::Whitted}};
+  cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
+      ->transform(CLI::CheckedTransformer(integrators))
+      ->default_str("path");
+  return [o] { return runBench(*o); };
+}
+
+}  // namespace penumbra::app

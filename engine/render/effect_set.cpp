@@ -1,0 +1,67 @@
+#include "render/effect_set.h"
+
+#include <fmt/format.h>
+
+#include "effects.h"
+#include "util/error.h"
+
+namespace penumbra::render {
+namespace {
+
+uint32_t materialEffects(const scene::Material& m) {
+  uint32_t effects = 0;
+  // Whitted reads the Phong fields of every material; the path tracer maps a
+  // Phong material onto Disney (shaders/shared/material.hlsli: reflectivity ->
+  // metallic, ks -> specular, transparency -> specTrans).
+  if (m.reflectivity > 0.0f || m.ks > 0.0f) effects |= PT_EFFECT_SPECULAR;
+  if (m.transparency > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
+  if (m.model == scene::MaterialModel::Phong) return effects;
+  if (m.metallic > 0.0f || m.specular > 0.0f) effects |= PT_EFFECT_SPECULAR;
+  if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
+  if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
+  if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN;
+  return effects;
+}
+
+struct EntryPointBits {
+  std::string_view shader;
+  uint32_t bits;
+};
+constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFFECT_BITS},
+                                           {"whitted.rgen", PT_WHITTED_EFFECT_BITS}};
+
+}  // namespace
+
+uint32_t deriveEffects(const scene::Scene& scene) {
+  uint32_t effects = 0;
+  if (!scene.pointLights.empty()) effects |= PT_EFFECT_DELTA_LIGHTS;
+  // Materials of meshes that are drawn, not every material the file lists.
+  for (const auto& instance : scene.instances) {
+    const auto& material = scene.materials.at(scene.meshes.at(instance.mesh).material);
+    effects |= materialEffects(material);
+    if (material.isEmissive()) effects |= PT_EFFECT_AREA_LIGHTS;
+  }
+  return effects;
+}
+
+std::vector<std::string> effectNames(uint32_t effects) {
+  static const char* const kNames[PT_EFFECT_COUNT] = {"area-lights",  "delta-lights", "specular",
+                                                      "transmission", "clearcoat",    "sheen"};
+  std::vector<std::string> names;
+  for (int bit = 0; bit < PT_EFFECT_COUNT; ++bit)
+    if (effects & (1u << bit)) names.emplace_back(kNames[bit]);
+  return names;
+}
+
+std::string rayGenerationVariant(std::string_view shader, uint32_t effects) {
+  for (const auto& entry : kVariantBits) {
+    if (entry.shader != shader) continue;
+    const uint32_t mask = effects & entry.bits;
+    if (mask == entry.bits) return std::string(shader);
+    const auto dot = shader.find('.');
+    return fmt::format("{}.e{}{}", shader.substr(0, dot), mask, shader.substr(dot));
+  }
+  throw Error(fmt::format("no effect variants are built for shader '{}'", shader));
+}
+
+}  // namespace penumbra::render

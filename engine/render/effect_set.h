@@ -1,0 +1,27 @@
+#pragma once
+// The effect set of a scene (shaders/shared/effects.h): the code paths its
+// pipeline must hold. The path tracer builds its pipeline from the shader
+// variants compiled for exactly this set, unless asked for every effect.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace penumbra::render {
+
+// PT_EFFECT_* bits the scene calls for. A bit is set if any material or light
+// of the scene could use the code behind it, so a variant without it renders
+// the scene exactly as the full pipeline does.
+uint32_t deriveEffects(const scene::Scene& scene);
+
+// Names of the bits in `effects`, in bit order ("area-lights", "sheen", ...).
+std::vector<std::string> effectNames(uint32_t effects);
+
+// The embedded variant of a ray-generation shader ("path_trace.rgen") compiled
+// for `effects`, restricted to the bits the entry point has variants for:
+// "path_trace.e5.rgen", or the plain name when every one of its bits is set.
+std::string rayGenerationVariant(std::string_view shader, uint32_t effects);
+
+}  // namespace penumbra::render

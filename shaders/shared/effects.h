@@ -1,0 +1,31 @@
+// The effects a scene can call for. A pipeline is built from shader variants
+// compiled with PT_EFFECTS set to the scene's effect set, so code a scene does
+// not need (refraction without glass, NEE without area lights, ...) is not in
+// its pipeline at all. Without PT_EFFECTS a shader holds every effect.
+//
+// Plain integers, not 1u: preprocessor #if expressions use them too, in GLSL,
+// HLSL and C++. The host derives the set in engine/render/effect_set.cpp; a bit
+// may be off only if no material or light of the scene could use the code.
+#ifndef PENUMBRA_EFFECTS_H
+#define PENUMBRA_EFFECTS_H
+
+#define PT_EFFECT_AREA_LIGHTS 1    // emissive geometry: emission on hit, NEE on triangles, MIS
+#define PT_EFFECT_DELTA_LIGHTS 2   // point and spot lights
+#define PT_EFFECT_SPECULAR 4       // a GGX specular layer: metallic > 0 or specular > 0 (Phong: ks, mirrors)
+#define PT_EFFECT_TRANSMISSION 8   // specTrans > 0 (Phong: transparency > 0)
+#define PT_EFFECT_CLEARCOAT 16     // clearcoat > 0
+#define PT_EFFECT_SHEEN 32         // sheen > 0
+#define PT_EFFECT_COUNT 6
+#define PT_EFFECTS_ALL 63
+
+// The effects each ray-generation entry point is compiled in variants of
+// (cmake/Shaders.cmake builds one variant per subset of these bits).
+#define PT_PATH_TRACE_EFFECT_BITS PT_EFFECTS_ALL
+#define PT_WHITTED_EFFECT_BITS (PT_EFFECT_SPECULAR + PT_EFFECT_TRANSMISSION)
+
+#ifndef PT_EFFECTS
+#define PT_EFFECTS PT_EFFECTS_ALL
+#endif
+#define PT_HAS_EFFECT(effect) ((PT_EFFECTS & (effect)) != 0)
+
+#endif
