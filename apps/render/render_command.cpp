@@ -11,6 +11,7 @@
 #include "render/effect_set.h"
 #include "render/path_tracer.h"
 #include "render/tonemapper.h"
+#include "scene/material_row.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -33,6 +34,8 @@ struct RenderOptions {
   float clamp = 0.0f;
   bool noRoulette = false;
   bool validation = false;
+  std::string vary;
+  std::string set;
   bool allEffects = false;
   bool printEffects = false;
   float exposure = 1.0f;
@@ -56,7 +59,8 @@ namespace {
 int runRender(const RenderOptions& o) {
   auto [width, height] = parseImageSize(o.size);
   // Everything that can fail on bad input fails before any rendering starts.
-  const scene::Scene scene = scene::loadScene(o.scene);
+  scene::Scene scene = scene::loadScene(o.scene);
+  if (!o.vary.empty() || !o.set.empty()) scene::changeMaterialRow(scene, o.vary, o.set);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
     return 0;
@@ -157,6 +161,10 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")->capture_default_str();
+  cmd->add_option("--vary", o->vary,
+                  "material-test: the Disney parameter that goes from 0 to 1 along the row");
+  cmd->add_option("--set", o->set,
+                  "material-test: the shared material's constants, e.g. metallic=1,baseColor=0.9,0.6,0.2");
   cmd->add_flag("--all-effects", o->allEffects,
                 "Build the full pipeline instead of only the effects the scene calls for");
   cmd->add_flag("--print-effects", o->printEffects,

@@ -2,6 +2,7 @@
 // The API-neutral scene: meshes with materials, instances, a camera. Units are
 // metres once loaded (scene files may state a unitScale).
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,14 @@ struct Camera {
   float verticalFovDegrees = 45.0f;
 };
 
+// The material-test row (scene/material_row.h): which materials belong to
+// its spheres, the base they share and the Disney parameter they vary.
+struct MaterialRow {
+  Material base;
+  std::string vary;
+  std::vector<uint32_t> materials;  // one per sphere, first to last
+};
+
 struct Scene {
   std::string name;
   std::vector<Material> materials;
@@ -82,6 +91,7 @@ struct Scene {
   std::vector<PointLight> pointLights;
   glm::vec3 ambient{0.0f};  // Whitted's ambient term
   Camera camera;
+  std::optional<MaterialRow> materialRow;
   uint64_t triangleCount() const;
 };
 

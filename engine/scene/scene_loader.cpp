@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "scene/material_row.h"
 #include "util/embedded_files.h"
 #include "util/error.h"
 
@@ -72,6 +73,25 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
   material.reflectivity = readFloat(m, "reflectivity", material.reflectivity, where);
   material.transparency = readFloat(m, "transparency", material.transparency, where);
   return material;
+}
+
+MaterialRowDesc parseMaterialRow(const json& row, const Scene& scene,
+                                 const std::map<std::string, uint32_t>& materialIndex, float scale,
+                                 const std::string& at) {
+  const std::string where = at + " materialTest";
+  if (!row.is_object()) throw Error(where + ": must be an object");
+  MaterialRowDesc desc;
+  const std::string material = require(row, "material", where).get<std::string>();
+  auto it = materialIndex.find(material);
+  if (it == materialIndex.end()) throw Error(fmt::format("{}: unknown material '{}'", where, material));
+  desc.base = scene.materials[it->second];
+  desc.vary = row.value("vary", desc.vary);
+  desc.count = row.value("count", desc.count);
+  desc.radius = readFloat(row, "radius", desc.radius / scale, where) * scale;
+  desc.first = readVec3(require(row, "first", where), where + " first") * scale;
+  desc.last = readVec3(require(row, "last", where), where + " last") * scale;
+  desc.subdivisions = row.value("subdivisions", desc.subdivisions);
+  return desc;
 }
 
 }  // namespace
@@ -153,6 +173,8 @@ Scene parseScene(std::string_view text, const std::string& source) {
     scene.instances.push_back({uint32_t(scene.meshes.size()), glm::mat4(1.0f)});
     scene.meshes.push_back(std::move(mesh));
   }
+  if (doc.contains("materialTest"))
+    addMaterialRow(scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
   validate(scene);
   return scene;
 }

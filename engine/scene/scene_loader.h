@@ -21,6 +21,10 @@
 //                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ] }
 // Each quad is split into two counter-clockwise triangles (v0 v1 v2, v0 v2 v3);
 // each mesh becomes one instance with the identity transform.
+//     "materialTest": { "material": "base", "vary": "roughness", "count": 7,
+//                       "radius": 0.4, "first": [x,y,z], "last": [x,y,z] }
+//       a row of spheres from `first` to `last` (centres) sharing material
+//       "base", with `vary` from 0 to 1 (scene/material_row.h); optional.
 #include <string>
 #include <string_view>
 #include <vector>

@@ -39,6 +39,8 @@ expect_error "bad size" "--size" render --size 12 --out "$work/out.png"
 expect_error "d3d12 on Linux" "Windows builds only" render --backend d3d12 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "device index out of range" "does not exist" render --device 99 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "unknown subcommand" "subcommand" bogus
+expect_error "unknown --vary parameter" "--vary 'colour'" render --scene material-test --vary colour --out "$work/out.png"
+expect_error "--set on a scene without a row" "no material-test row" render --scene cornell-box --set metallic=1 --out "$work/out.png"
 # A machine without a Vulkan driver: point the loader at an empty driver list.
 VK_DRIVER_FILES="$work/none.json" VK_ICD_FILENAMES="$work/none.json" \
   expect_error "no device with ray tracing" "no Vulkan driver" render --size 8x8 --spp 1 --out "$work/out.png"

@@ -24,6 +24,10 @@ grep -q "^pipeline effects: area-lights$" "$work/log"
 "$penumbra" bench --size 16x16 --frames 2 | tee "$work/bench"
 grep -qE "^full / specialized GPU time \(medians\): [0-9.]+$" "$work/bench"
 grep -qE "^images: max \|difference\| 0," "$work/bench"
+# The material test with a varied parameter and constants from the command line.
+"$penumbra" render --scene material-test --vary metallic --set roughness=0.3,baseColor=0.9,0.6,0.2 \
+  --size 48x16 --spp 2 --validation --out "$work/row.png" >/dev/null
+[ -s "$work/row.png" ]
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
 "$penumbra" render --help | grep -q -- "--spp"
 echo "render CLI ok"
