@@ -17,8 +17,9 @@ using namespace penumbra;
 
 namespace {
 constexpr uint32_t kSize = 48;
-// Deep enough for every main path below (at most 4 TIR bounces measured in
-// the cube, 6 hits in all); Whitted shades the hit at depth <= maxDepth.
+// Far deeper than any main path below (the longest, in the cube, enters,
+// is totally reflected twice, leaves and hits a wall: 5 hits); Whitted
+// shades the hit at depth <= maxDepth.
 constexpr uint32_t kMaxDepth = 12;
 // Pixels whose main path keeps less than this share of the weight (near the
 // critical angle, Fresnel sends most of it elsewhere) say little; skip them.
@@ -208,7 +209,8 @@ TEST_CASE("whitted: a mirror shows the wall it faces, lit as the Phong model say
           "[render][gpu][whitted]") {
   // A square mirror at z = 3 turned 45 degrees to face the camera and +x, a
   // side wall at x = 1.6 (red for z < 3, green beyond) that the camera sees
-  // only in the mirror, a blue back wall beside and behind the mirror. The
+  // in the mirror (and, for its far green end, directly at the image's left
+  // edge), a blue back wall beside and behind the mirror. The
   // ray through the mirror's centre reflects to +x and meets the wall on the
   // red/green seam, so the mirror's image splits where reflection about the
   // normal puts it. A point light makes the wall's value depend on where the
