@@ -143,7 +143,7 @@ TEST_CASE("glass furnace: a smooth glass sphere is invisible", "[render][gpu][fu
     INFO("beside: " << count[0] << " pixels, worst " << worst[0] << "; through: " << count[1]
                     << " pixels, worst " << worst[1] << "; rim: " << count[2] << " pixels, mean "
                     << rimMean << " Le; brightest pixel Le + " << brightest);
-    // 633 beside, 256 through and 135 rim pixels of 1024: the sphere is in view.
+    // 632 beside, 252 through and 140 rim pixels of 1024: the sphere is in view.
     REQUIRE(count[0] >= 500u);
     REQUIRE(count[1] >= 200u);
     REQUIRE(worst[0] <= kExact);
