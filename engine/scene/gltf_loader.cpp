@@ -149,14 +149,25 @@ class Importer {
   }
 
   void convertMaterials() {
+    size_t textured = 0;
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const auto& src = model_.materials[i];
+      const auto& pbr = src.pbrMetallicRoughness;
+      if (pbr.baseColorTexture.index >= 0 || pbr.metallicRoughnessTexture.index >= 0 ||
+          src.normalTexture.index >= 0 || src.occlusionTexture.index >= 0 ||
+          src.emissiveTexture.index >= 0)
+        ++textured;
       auto converted = gltf::convertMaterial(
           src, fmt::format("{} {}", at(), named("material", i, src.name)), out_.warnings);
       if (converted.material.name.empty()) converted.material.name = fmt::format("material{}", i);
       invisible_.push_back(converted.invisible);
       out_.scene.materials.push_back(std::move(converted.material));
     }
+    if (textured > 0)
+      warn(
+          fmt::format("{}: textures are not supported yet; {} textured material(s) render with "
+                      "their factors only",
+                      at(), textured));
   }
 
   uint32_t defaultMaterialIndex() {

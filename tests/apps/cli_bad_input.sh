@@ -39,6 +39,10 @@ expect_error "bad size" "--size" render --size 12 --out "$work/out.png"
 expect_error "d3d12 on Linux" "Windows builds only" render --backend d3d12 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "device index out of range" "does not exist" render --device 99 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "unknown subcommand" "subcommand" bogus
+gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
+expect_error "missing glTF file" "no such file" render --scene "$work/missing.glb" --out "$work/out.png"
+expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
+expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"
 # A machine without a Vulkan driver: point the loader at an empty driver list.
 VK_DRIVER_FILES="$work/none.json" VK_ICD_FILENAMES="$work/none.json" \
   expect_error "no device with ray tracing" "no Vulkan driver" render --size 8x8 --spp 1 --out "$work/out.png"

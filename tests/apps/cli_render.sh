@@ -15,6 +15,13 @@ grep -qE "^GPU time: [0-9.]+ ms" "$work/log"
 [ "$(od -An -tu1 -j16 -N8 "$work/cornell.png" | tr -s ' ')" = " 0 0 0 48 0 0 0 32" ]
 "$penumbra" render --size 48x32 --spp 4 --seed 3 --validation --out "$work/cornell.exr" >/dev/null
 [ "$(head -c 4 "$work/cornell.exr" | od -An -tx1 | tr -d ' \n')" = "762f3101" ]
+# A .glb straight from the command line, from a camera chosen by name.
+gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
+"$penumbra" render --scene "$gltf_data/cameras.gltf" --camera side --size 16x16 --spp 1 --validation \
+  --out "$work/gltf.png" | grep -q "^scene: cameras (1 triangles)"
+"$penumbra" render --scene "$gltf_data/triangle.glb" --size 16x16 --spp 1 --validation \
+  --out "$work/glb.png" >/dev/null
+[ -s "$work/glb.png" ]
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
 "$penumbra" render --help | grep -q -- "--spp"
 echo "render CLI ok"

@@ -189,6 +189,39 @@ TEST_CASE("glTF tangents are generated from UVs", "[gltf]") {
   }
 }
 
+TEST_CASE("glTF strips and fans become triangle lists; points and lines are skipped", "[gltf]") {
+  const auto r = scene::importGltf(gltf("modes.gltf"));
+  // Strip corners v0 (0,0,0), v1 (1,0,0), v2 (0,1,0), v3 (1,1,0); flat
+  // normals unweld the corners in triangle order.
+  REQUIRE(r.scene.meshes.size() == 2u);
+  REQUIRE(hasWarning(r, "primitive 0: mode 0 is not made of triangles"));
+  REQUIRE(hasWarning(r, "primitive 1: mode 1 is not made of triangles"));
+  // Strip: (v0 v1 v2), then (v1 v3 v2): every other triangle reversed, so
+  // both keep the first one's counter-clockwise winding (+z).
+  const auto& strip = r.scene.meshes[0];
+  REQUIRE(strip.triangleCount() == 2u);
+  requireNear(strip.positions[3], {1, 0, 0});
+  requireNear(strip.positions[4], {1, 1, 0});
+  requireNear(strip.positions[5], {0, 1, 0});
+  // Fan corners v0 (0,0,0), v1 (1,0,0), v2 (1,1,0), v3 (0,1,0):
+  // triangles (v1 v2 v0), (v2 v3 v0).
+  const auto& fan = r.scene.meshes[1];
+  REQUIRE(fan.triangleCount() == 2u);
+  requireNear(fan.positions[0], {1, 0, 0});
+  requireNear(fan.positions[2], {0, 0, 0});
+  requireNear(fan.positions[3], {1, 1, 0});
+  requireNear(fan.positions[4], {0, 1, 0});
+  for (const auto* m : {&strip, &fan})
+    for (const auto& n : m->normals) requireNear(n, {0, 0, 1});
+}
+
+TEST_CASE("glTF textures are decoded but not applied yet, with a warning", "[gltf]") {
+  const auto r = scene::importGltf(gltf("textured.gltf"));
+  REQUIRE(hasWarning(r, "textures are not supported yet; 1 textured material(s)"));
+  // The factor still applies.
+  REQUIRE(r.scene.materials[0].baseColor == glm::vec3(0.5f));
+}
+
 TEST_CASE("glTF .glb, external and embedded buffers load the same triangle", "[gltf]") {
   for (const char* name : {"triangle.glb", "external.gltf", "embedded.gltf"}) {
     INFO(name);

@@ -435,6 +435,45 @@ def leak():
     b.write_gltf("leak.gltf")
 
 
+def modes():
+    """A unit square as POINTS, LINES, TRIANGLE_STRIP (corners in zigzag
+    order) and TRIANGLE_FAN (corners in counter-clockwise order)."""
+    b = Builder()
+    zigzag = b.accessor([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], minmax=True)
+    cyclic = b.accessor([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], minmax=True)
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": zigzag}, "mode": 0},
+                                    {"attributes": {"POSITION": zigzag}, "mode": 1},
+                                    {"attributes": {"POSITION": zigzag}, "mode": 5},
+                                    {"attributes": {"POSITION": cyclic}, "mode": 6}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("modes.gltf")
+
+
+def png_rgba(width, height, pixels):
+    """A PNG of 8-bit RGBA pixels (rows top first), without filters."""
+    import zlib
+    raw = b"".join(b"\0" + bytes(pixels[y * width * 4:(y + 1) * width * 4]) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def textured():
+    """A triangle whose material has a base-colour texture (a 2 x 2 PNG in a data URI)."""
+    b = triangle_file()
+    png = png_rgba(2, 2, [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255])
+    b.doc["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}]
+    b.doc["textures"] = [{"source": 0}]
+    b.doc["materials"] = [{"name": "painted",
+                           "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                                    "baseColorFactor": [0.5, 0.5, 0.5, 1]}}]
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.write_gltf("textured.gltf")
+
+
 def scene_files():
     """Penumbra scene files that reference the glTF files above."""
     # Near the camera, so the shadow terminator (where faceted geometry
@@ -481,4 +520,6 @@ if __name__ == "__main__":
     emissive_quad()
     spheres()
     leak()
+    modes()
+    textured()
     scene_files()
