@@ -23,11 +23,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// tinygltf reports several lines; a penumbra::Error is one.
+// tinygltf reports several lines, and its JSON errors quote the input (a
+// whole data URI, say); a penumbra::Error is one readable line.
 std::string oneLine(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   std::replace(text.begin(), text.end(), '\n', ';');
   std::replace(text.begin(), text.end(), '\r', ' ');
+  constexpr size_t kLimit = 300;
+  if (text.size() > kLimit) text = text.substr(0, kLimit) + "...";
   return text;
 }
 
