@@ -20,6 +20,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene = "cornell-box";
+  std::string camera;
   std::string size = "512x512";
   uint32_t spp = 64;
   uint32_t sppPerFrame = 16;
@@ -60,6 +61,7 @@ int runRender(const RenderOptions& o) {
   auto [width, height] = parseImageSize(o.size);
   // Everything that can fail on bad input fails before any rendering starts.
   scene::Scene scene = scene::loadScene(o.scene);
+  if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
   if (!o.vary.empty() || !o.set.empty()) scene::changeMaterialRow(scene, o.vary, o.set);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
@@ -131,7 +133,12 @@ int runRender(const RenderOptions& o) {
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd = app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
-  cmd->add_option("--scene", o->scene, "Built-in scene name or scene file (.json)")->capture_default_str();
+  cmd->add_option("--scene", o->scene,
+                  "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)")
+      ->capture_default_str();
+  cmd->add_option("--camera", o->camera,
+                  "Render from the scene's camera of this name (glTF camera or node name; "
+                  "default: the first camera in node order)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 20))->capture_default_str();
   cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")
