@@ -22,6 +22,9 @@ layout(set = 0, binding = PT_SLOT_EMISSIVE_TRIANGLES, std430) readonly buffer Em
 layout(set = 0, binding = PT_SLOT_POINT_LIGHTS, std430) readonly buffer PointLights {
   PointLight gPointLights[];
 };
+layout(set = 0, binding = PT_SLOT_IMPLICITS, std430) readonly buffer Implicits {
+  ImplicitData gImplicits[];
+};
 layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
 layout(set = 0, binding = PT_SLOT_RAY_COUNTER, std430) buffer RayCounter { uint gRayCount; };
 
@@ -29,3 +32,4 @@ InstanceData loadInstanceData(uint index) { return gInstances[index]; }
 MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
+ImplicitData loadImplicit(uint index) { return gImplicits[index]; }

@@ -23,6 +23,7 @@ StructuredBuffer<InstanceData> gInstances : PENUMBRA_REGISTER_T(PT_T_INSTANCES);
 StructuredBuffer<MaterialData> gMaterials : PENUMBRA_REGISTER_T(PT_T_MATERIALS);
 StructuredBuffer<EmissiveTriangle> gEmissiveTriangles : PENUMBRA_REGISTER_T(PT_T_EMISSIVE_TRIANGLES);
 StructuredBuffer<PointLight> gPointLights : PENUMBRA_REGISTER_T(PT_T_POINT_LIGHTS);
+StructuredBuffer<ImplicitData> gImplicits : PENUMBRA_REGISTER_T(PT_T_IMPLICITS);
 RWTexture2D<float4> gAccumulation : PENUMBRA_REGISTER_U(PT_U_ACCUMULATION);
 RWStructuredBuffer<uint> gRayCounter : PENUMBRA_REGISTER_U(PT_U_RAY_COUNTER);
 
@@ -30,5 +31,6 @@ InstanceData loadInstanceData(uint index) { return gInstances[index]; }
 MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
+ImplicitData loadImplicit(uint index) { return gImplicits[index]; }
 
 #endif
