@@ -2,24 +2,29 @@
 // Antialiased Ray Tracing of Implicit Surfaces") of a 1-Lipschitz distance
 // bound, in object space. The entry point defines, before including this:
 //   float implicitSdf(ImplicitData o, float3 p);
+//
+// implicitSdf is called from one place only. Ray-tracing compilers inline
+// intersection shaders into every trace call of every ray-generation shader
+// (lavapipe does), so each extra call site of a distance function multiplies
+// pipeline compile time; the normal's samples therefore run through the
+// march loop too.
 #ifndef PENUMBRA_SPHERE_TRACING_HLSLI
 #define PENUMBRA_SPHERE_TRACING_HLSLI
 #include "implicit.hlsli"
 
-// Gradient direction by the tetrahedron technique (four samples instead of
-// six central differences, Quilez), at the scale of the hit tolerance so it
-// sees the surface that was hit rather than detail below it. Zero where the
-// field is flat.
-float3 sdfGradient(ImplicitData o, float3 p, float h) {
-  float3 k0 = float3(1.0, -1.0, -1.0);
-  float3 k1 = float3(-1.0, -1.0, 1.0);
-  float3 k2 = float3(-1.0, 1.0, -1.0);
-  float3 k3 = float3(1.0, 1.0, 1.0);
-  float3 g = k0 * implicitSdf(o, p + h * k0) + k1 * implicitSdf(o, p + h * k1) +
-             k2 * implicitSdf(o, p + h * k2) + k3 * implicitSdf(o, p + h * k3);
-  float len = length(g);
-  if (len > 0.0) return g / len;
-  return zero3();
+// Central differences (second-order accurate, unlike the tetrahedron
+// technique, whose error grows with h times the curvature) at the scale of
+// the hit tolerance, so the normal sees the surface that was hit rather than
+// detail below it. The scale does not go below 1e-3 |p|: distances carry
+// float rounding of a few 1e-7 |p|, which divided by a smaller step would
+// tilt the normal by more than 1e-3.
+static const uint kGradientSamples = 6u;
+
+float gradientStep(float tolerance, float3 p) { return max(tolerance, 1e-3 * length(p)); }
+
+// Sample k of the central differences: +-h along axis k / 2.
+float3 gradientSampleOffset(uint k, float h) {
+  return axisVector(k / 2u, (k & 1u) == 0u ? h : -h);
 }
 
 // March from where the ray enters the object's bounds (boundsMin/Max, padded
@@ -30,38 +35,66 @@ float3 sdfGradient(ImplicitData o, float3 p, float h) {
 // miss, as is leaving the bounds or passing sMax.
 ImplicitHit sphereTrace(ImplicitData o, ObjectRay ray) {
   float tolerance = o.boundsMin.w;
+  uint maxSteps = o.info.z;
   SlabSpan span = intersectSlabs(ray.origin, ray.direction, o.boundsMin.xyz, o.boundsMax.xyz);
   float s = max(ray.sMin, span.sEnter);
   float sEnd = min(ray.sMax, span.sExit);
   if (!(s <= sEnd)) return implicitMiss();
 
-  float side = 1.0;  // -1 while marching inside the object
+  float side = 1.0;  // -1 while marching inside the object; 0 until known
   bool leaving = false;
-  for (uint i = 0u; i < o.info.z; i += 1u) {
+  float firstValue = 0.0;
+  uint steps = 0u;
+  // After a hit: which gradient sample is next (0 = still marching).
+  uint gradientSample = 0u;
+  float sHit = 0.0;
+  float3 hitPoint = zero3();
+  float h = 0.0;
+  float3 gradient = zero3();
+  for (uint i = 0u; i < maxSteps + kGradientSamples; i += 1u) {
     float3 p = ray.origin + s * ray.direction;
+    if (gradientSample > 0u) p = hitPoint + gradientSampleOffset(gradientSample - 1u, h);
     float value = implicitSdf(o, p);
-    if (i == 0u) {
+
+    if (gradientSample > 0u) {
+      gradient += gradientSampleOffset(gradientSample - 1u, value);
+      if (gradientSample == kGradientSamples) {
+        if (dot(gradient, gradient) == 0.0) return implicitHitAt(sHit, -ray.direction);
+        return implicitHitAt(sHit, normalize(gradient));
+      }
+      gradientSample += 1u;
+      continue;
+    }
+
+    if (steps == 0u) {
+      firstValue = value;
       if (abs(value) < tolerance) {
         // Starting on the surface (a ray spawned at an earlier hit): the ray
-        // belongs to the side it points into and must first get clear of
-        // the surface, or it would hit it again at s = 0.
-        side = dot(sdfGradient(o, p, tolerance), ray.direction) >= 0.0 ? 1.0 : -1.0;
+        // belongs to the side it moves into, which the next distance tells,
+        // and it must get clear of the surface first, or it would hit it
+        // again at s = 0.
+        side = 0.0;
         leaving = true;
       } else {
         side = value < 0.0 ? -1.0 : 1.0;
       }
+    } else if (side == 0.0) {
+      side = value >= firstValue ? 1.0 : -1.0;
     }
-    float clearance = side * value;
+    steps += 1u;
+    float clearance = side == 0.0 ? abs(value) : side * value;
     if (leaving) {
-      leaving = clearance < tolerance;
+      leaving = side == 0.0 || clearance < tolerance;
     } else if (clearance < tolerance) {
       // One more step of the signed distance lands nearer the surface
-      // (forward if short of it, back if past it).
-      float sHit = clamp(s + clearance, ray.sMin, sEnd);
-      float3 normal = sdfGradient(o, ray.origin + sHit * ray.direction, tolerance);
-      if (dot(normal, normal) == 0.0) normal = -ray.direction;
-      return implicitHitAt(sHit, normal);
+      // (forward if short of it, back if past it); then the normal's samples.
+      sHit = clamp(s + clearance, ray.sMin, sEnd);
+      hitPoint = ray.origin + sHit * ray.direction;
+      h = gradientStep(tolerance, hitPoint);
+      gradientSample = 1u;
+      continue;
     }
+    if (steps >= maxSteps) return implicitMiss();
     s += max(abs(clearance), tolerance);
     if (s > sEnd) return implicitMiss();
   }
