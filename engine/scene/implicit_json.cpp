@@ -16,6 +16,8 @@ using nlohmann::json;
 
 const std::set<std::string> kCommonKeys = {"name", "kind", "material", "transform"};
 const std::set<std::string> kSphereTracingKeys = {"maxSteps", "tolerance"};
+// The kinds scene::isSignedDistanceKind names, as the file spells them.
+const std::set<std::string> kMarchedKinds = {"torus", "roundedBox", "blend", "mandelbulb"};
 
 std::string requireString(const json& object, const char* key, const std::string& where) {
   const json& value = require(object, key, where);
@@ -158,11 +160,11 @@ ImplicitObject parseObject(const json& o, size_t index,
   const std::string at = fmt::format("{} implicit '{}'", where, object.name);
   auto allowed = shapeKeys(kind);
   if (allowed.empty()) throw Error(fmt::format("{}: unknown kind '{}' ({})", at, kind, kKinds));
-  object.shape = parseShape(o, kind, at);
   allowed.insert(kCommonKeys.begin(), kCommonKeys.end());
-  if (isSignedDistanceKind(object.kind()))
+  if (kMarchedKinds.count(kind))
     allowed.insert(kSphereTracingKeys.begin(), kSphereTracingKeys.end());
   rejectUnknownKeys(o, allowed, at);
+  object.shape = parseShape(o, kind, at);
 
   const std::string materialName = requireString(o, "material", at);
   auto it = materialIndex.find(materialName);

@@ -13,7 +13,9 @@
 
 namespace penumbra::test {
 
-inline glm::mat4 translate(glm::vec3 t) { return glm::translate(glm::mat4(1.0f), t); }
+inline glm::mat4 translate(glm::vec3 t) {
+  return glm::translate(glm::mat4(1.0f), t);
+}
 
 inline scene::ImplicitObject implicitObject(std::string name, scene::ImplicitShape shape,
                                             glm::mat4 transform = glm::mat4(1.0f),
@@ -54,9 +56,8 @@ inline void checkHit(const render::ProbeRay& ray, const render::SurfaceHit& hit,
   INFO("ray from (" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") along ("
                     << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z
                     << ")");
-  INFO("hit t " << hit.hitT << " (expected " << expected.t << "), normal ("
-                << hit.geometricNormal.x << ", " << hit.geometricNormal.y << ", "
-                << hit.geometricNormal.z << ")");
+  INFO("hit t " << hit.hitT << " (expected " << expected.t << "), normal (" << hit.geometricNormal.x
+                << ", " << hit.geometricNormal.y << ", " << hit.geometricNormal.z << ")");
   REQUIRE(hit.isHit());
   CHECK(std::abs(hit.hitT - expected.t) <= expected.tTolerance);
   for (int i = 0; i < 3; ++i)

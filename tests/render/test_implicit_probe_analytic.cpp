@@ -38,7 +38,9 @@ SphereRoot nearestSphereRoot(glm::dvec3 origin, glm::dvec3 direction, glm::dvec3
 }
 
 // The ray as the GPU receives it (float), for exact expectations.
-glm::dvec3 asSent(glm::vec3 v) { return glm::dvec3(v); }
+glm::dvec3 asSent(glm::vec3 v) {
+  return glm::dvec3(v);
+}
 
 }  // namespace
 
@@ -66,23 +68,23 @@ TEST_CASE("implicit probe: spheres, grazing, from inside, tiny and distant, elli
   const double grazingHalfChord = std::sqrt(1.0 - double(0.999f) * double(0.999f));
   const double insideHalfChord = std::sqrt(1.0 - 0.25);
   std::vector<render::ProbeRay> rays = {
-      probeRay({0, 0, 0}, {0, 0, 1}),                // 0 head-on
-      probeRay({0, 0.6, 0}, {0, 0, 1}),              // 1 off-centre
-      probeRay({0, 0.999f, 0}, {0, 0, 1}),           // 2 grazing, just inside the rim
-      probeRay({0, 1.001f, 0}, {0, 0, 1}),           // 3 grazing, just outside
-      probeRay({0, 0, 5}, {0, 0, 1}),                // 4 from the centre
-      probeRay({0, 0.5, 4.5}, {0, 0, 1}),            // 5 from inside, off-centre
-      probeRay({0, 0, 0}, {0, 0, -1}),               // 6 pointing away
-      probeRay({0, 0, 0}, {0, 0, 1}, 3.9f),          // 7 tMax short of it
-      probeRay({-20, 0, 0}, {0, 0, 1}),              // 8 the triangle quad
-      probeRay({0, 0, 0}, {1e4, 0, 0}),              // 9 tiny far sphere, centre
-      probeRay({0, 0, 0}, {1e4, 5e-4, 0}),           // 10 half its radius off-centre
-      probeRay({0, 0, 0}, {1e4, 9e-4, 0}),           // 11 near its rim
-      probeRay({0, 0, 0}, {1e4, 1.1e-3, 0}),         // 12 past its rim
-      probeRay({9999.5, 0, 0}, {1, 0, 0}),           // 13 from close by
-      probeRay({0, 30, 0}, {0, 0, 1}),               // 14 ellipsoid, along its 3 axis
-      probeRay({5, 31, 10}, {-1, 0, 0}),             // 15 ellipsoid, off-axis
-      probeRay({0, -30, 0}, {0, 0, 1}),              // 16 half-size sphere
+      probeRay({0, 0, 0}, {0, 0, 1}),         // 0 head-on
+      probeRay({0, 0.6, 0}, {0, 0, 1}),       // 1 off-centre
+      probeRay({0, 0.999f, 0}, {0, 0, 1}),    // 2 grazing, just inside the rim
+      probeRay({0, 1.001f, 0}, {0, 0, 1}),    // 3 grazing, just outside
+      probeRay({0, 0, 5}, {0, 0, 1}),         // 4 from the centre
+      probeRay({0, 0.5, 4.5}, {0, 0, 1}),     // 5 from inside, off-centre
+      probeRay({0, 0, 0}, {0, 0, -1}),        // 6 pointing away
+      probeRay({0, 0, 0}, {0, 0, 1}, 3.9f),   // 7 tMax short of it
+      probeRay({-20, 0, 0}, {0, 0, 1}),       // 8 the triangle quad
+      probeRay({0, 0, 0}, {1e4, 0, 0}),       // 9 tiny far sphere, centre
+      probeRay({0, 0, 0}, {1e4, 5e-4, 0}),    // 10 half its radius off-centre
+      probeRay({0, 0, 0}, {1e4, 9e-4, 0}),    // 11 near its rim
+      probeRay({0, 0, 0}, {1e4, 1.1e-3, 0}),  // 12 past its rim
+      probeRay({9999.5, 0, 0}, {1, 0, 0}),    // 13 from close by
+      probeRay({0, 30, 0}, {0, 0, 1}),        // 14 ellipsoid, along its 3 axis
+      probeRay({5, 31, 10}, {-1, 0, 0}),      // 15 ellipsoid, off-axis
+      probeRay({0, -30, 0}, {0, 0, 1}),       // 16 half-size sphere
   };
   const auto hits = tracer.traceProbeRays(rays);
   REQUIRE(hits.size() == rays.size());
@@ -90,7 +92,9 @@ TEST_CASE("implicit probe: spheres, grazing, from inside, tiny and distant, elli
   checkHit(rays[0], hits[0], {4.0, {0, 0, -1}, kUnitTolerance, kUnitTolerance});
   checkHit(rays[1], hits[1], {4.2, {0, 0.6, -0.8}, kUnitTolerance, kUnitTolerance});
   checkHit(rays[2], hits[2],
-           {5.0 - grazingHalfChord, {0, double(0.999f), -grazingHalfChord}, kUnitTolerance,
+           {5.0 - grazingHalfChord,
+            {0, double(0.999f), -grazingHalfChord},
+            kUnitTolerance,
             kUnitTolerance});
   checkMiss(rays[3], hits[3]);
   checkHit(rays[4], hits[4], {1.0, {0, 0, 1}, kUnitTolerance, kUnitTolerance});
@@ -108,8 +112,8 @@ TEST_CASE("implicit probe: spheres, grazing, from inside, tiny and distant, elli
   // half chord, which keep their relative precision, so it is held to 1e-4.
   const glm::dvec3 farCentre(1e4, 0, 0);
   for (int i : {9, 10, 11}) {
-    const auto root = nearestSphereRoot(asSent(rays[i].origin), asSent(rays[i].direction),
-                                        farCentre, 1e-3);
+    const auto root =
+        nearestSphereRoot(asSent(rays[i].origin), asSent(rays[i].direction), farCentre, 1e-3);
     checkHit(rays[i], hits[i], {root.t, root.normal, 2e-3, 1e-4});
     CHECK(hits[i].instanceIndex == 2u);
   }
@@ -147,22 +151,22 @@ TEST_CASE("implicit probe: infinite and bounded planes, boxes from outside and i
   const double diagonal = std::sqrt(0.5);
   const glm::dvec3 toTurnedCentre(diagonal, 0, diagonal);
   std::vector<render::ProbeRay> rays = {
-      probeRay({0, 1, 0}, {0, -1, 0}),            // 0 floor from above
-      probeRay({0, -3, 0}, {0, 1, 0}),            // 1 floor from below
-      probeRay({0, 1, 0}, {1, -1, 0}),            // 2 floor at 45 degrees
-      probeRay({0, 1, 0}, {1, -1e-3, 0}),         // 3 floor, grazing
-      probeRay({0, 1, 0}, {1, 0, 0}),             // 4 parallel to the floor
-      probeRay({0, 5, 0}, {0, 0, 1}),             // 5 panel centre
-      probeRay({0.9, 6.9, 0}, {0, 0, 1}),         // 6 panel, inside its corner
-      probeRay({1.1, 5, 0}, {0, 0, 1}),           // 7 beside the panel
-      probeRay({0, 7.1, 0}, {0, 0, 1}),           // 8 above the panel
-      probeRay({0, 5, 20}, {0, 0, -1}),           // 9 panel from behind
-      probeRay({0, 20, 0}, {0, 0, 1}),            // 10 box -z face
-      probeRay({5, 20.2, 10}, {-1, 0, 0}),        // 11 box +x face
-      probeRay({0.3, 25, 9}, {0, -1, 0}),         // 12 box top
-      probeRay({0.3, 15, 11}, {0, 1, 0}),         // 13 box bottom
-      probeRay({0, 20, 10}, {0, 1, 0}),           // 14 from the box centre
-      probeRay({0, 20, 10}, {1, 1, 0}),           // 15 from the centre, diagonally
+      probeRay({0, 1, 0}, {0, -1, 0}),               // 0 floor from above
+      probeRay({0, -3, 0}, {0, 1, 0}),               // 1 floor from below
+      probeRay({0, 1, 0}, {1, -1, 0}),               // 2 floor at 45 degrees
+      probeRay({0, 1, 0}, {1, -1e-3, 0}),            // 3 floor, grazing
+      probeRay({0, 1, 0}, {1, 0, 0}),                // 4 parallel to the floor
+      probeRay({0, 5, 0}, {0, 0, 1}),                // 5 panel centre
+      probeRay({0.9, 6.9, 0}, {0, 0, 1}),            // 6 panel, inside its corner
+      probeRay({1.1, 5, 0}, {0, 0, 1}),              // 7 beside the panel
+      probeRay({0, 7.1, 0}, {0, 0, 1}),              // 8 above the panel
+      probeRay({0, 5, 20}, {0, 0, -1}),              // 9 panel from behind
+      probeRay({0, 20, 0}, {0, 0, 1}),               // 10 box -z face
+      probeRay({5, 20.2, 10}, {-1, 0, 0}),           // 11 box +x face
+      probeRay({0.3, 25, 9}, {0, -1, 0}),            // 12 box top
+      probeRay({0.3, 15, 11}, {0, 1, 0}),            // 13 box bottom
+      probeRay({0, 20, 10}, {0, 1, 0}),              // 14 from the box centre
+      probeRay({0, 20, 10}, {1, 1, 0}),              // 15 from the centre, diagonally
       probeRay({-5, 20.5f - 1e-4f, 10}, {1, 0, 0}),  // 16 grazing just under the top
       probeRay({-5, 20.5f + 1e-4f, 10}, {1, 0, 0}),  // 17 grazing just over it
       probeRay(glm::dvec3(0, 40, 10) - 5.0 * toTurnedCentre, toTurnedCentre),  // 18

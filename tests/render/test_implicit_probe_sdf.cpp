@@ -62,9 +62,9 @@ shapes::Blend slabUnderTallBounds() {
 TEST_CASE("implicit probe: torus, rounded box and blend, from outside, inside and grazing",
           "[render][gpu][implicit]") {
   auto device = test::makeTestDevice();
-  const glm::mat4 stoodUpDoubled = glm::scale(
-      glm::rotate(test::translate({30, 0, 10}), glm::radians(90.0f), glm::vec3(1, 0, 0)),
-      glm::vec3(2.0f));
+  const glm::mat4 stoodUpDoubled =
+      glm::scale(glm::rotate(test::translate({30, 0, 10}), glm::radians(90.0f), glm::vec3(1, 0, 0)),
+                 glm::vec3(2.0f));
   auto s = test::implicitScene({
       marched("torus", shapes::Torus{1.0f, 0.25f}, test::translate({0, 0, 5})),
       marched("big torus", shapes::Torus{1.0f, 0.25f}, stoodUpDoubled),
@@ -78,23 +78,23 @@ TEST_CASE("implicit probe: torus, rounded box and blend, from outside, inside an
   const glm::dvec3 edge = glm::normalize(glm::dvec3(1, 0, 1));
   const glm::dvec3 boxCentre(0, 20, 5);
   std::vector<render::ProbeRay> rays = {
-      probeRay({0, 0, 0}, {0, 0, 1}),         // 0 torus, outer equator
-      probeRay({0, 5, 5}, {0, -1, 0}),        // 1 torus, down its hole
-      probeRay({1, 5, 5}, {0, -1, 0}),        // 2 torus, top of the tube
-      probeRay({1, 0, 5}, {0, 1, 0}),         // 3 from inside the tube, up
-      probeRay({1, 0, 5}, {1, 0, 0}),         // 4 from inside the tube, out
-      probeRay({-5, 0.24, 5}, {1, 0, 0}),     // 5 grazing the tube top
-      probeRay({-5, 0.26, 5}, {1, 0, 0}),     // 6 just over the tube
-      probeRay({32, 0, 20}, {0, 0, -1}),      // 7 big torus, its front (+z now)
-      probeRay({32, 0, 0}, {0, 0, 1}),        // 8 big torus, its back
-      probeRay({50, 0, 10}, {-1, 0, 0}),      // 9 big torus, outer equator
-      probeRay({0, 20, 0}, {0, 0, 1}),        // 10 rounded box face
+      probeRay({0, 0, 0}, {0, 0, 1}),               // 0 torus, outer equator
+      probeRay({0, 5, 5}, {0, -1, 0}),              // 1 torus, down its hole
+      probeRay({1, 5, 5}, {0, -1, 0}),              // 2 torus, top of the tube
+      probeRay({1, 0, 5}, {0, 1, 0}),               // 3 from inside the tube, up
+      probeRay({1, 0, 5}, {1, 0, 0}),               // 4 from inside the tube, out
+      probeRay({-5, 0.24, 5}, {1, 0, 0}),           // 5 grazing the tube top
+      probeRay({-5, 0.26, 5}, {1, 0, 0}),           // 6 just over the tube
+      probeRay({32, 0, 20}, {0, 0, -1}),            // 7 big torus, its front (+z now)
+      probeRay({32, 0, 0}, {0, 0, 1}),              // 8 big torus, its back
+      probeRay({50, 0, 10}, {-1, 0, 0}),            // 9 big torus, outer equator
+      probeRay({0, 20, 0}, {0, 0, 1}),              // 10 rounded box face
       probeRay(boxCentre + 5.0 * corner, -corner),  // 11 rounded box corner
       probeRay(boxCentre + 5.0 * edge, -edge),      // 12 rounded box edge
       probeRay(boxCentre, {1, 0, 0}),               // 13 from inside the rounded box
-      probeRay({0, 45, 5}, {0, -1, 0}),       // 14 down onto the blend's neck
-      probeRay({-5, 40, 5}, {1, 0, 0}),       // 15 blend, far side of one sphere
-      probeRay({20, 45, 5}, {0, -1, 0}),      // 16 the same neck without blending
+      probeRay({0, 45, 5}, {0, -1, 0}),             // 14 down onto the blend's neck
+      probeRay({-5, 40, 5}, {1, 0, 0}),             // 15 blend, far side of one sphere
+      probeRay({20, 45, 5}, {0, -1, 0}),            // 16 the same neck without blending
   };
   const auto hits = tracer.traceProbeRays(rays);
 
@@ -108,9 +108,9 @@ TEST_CASE("implicit probe: torus, rounded box and blend, from outside, inside an
   // x = -1 - sqrt(0.25^2 - 0.24^2) = -1.07, where the normal is (-0.07, 0.24)/0.25.
   const double grazingT = 5.0 - 1.0 - std::sqrt(0.0625 - double(0.24f) * double(0.24f));
   const glm::dvec3 grazingNormal = glm::normalize(glm::dvec3(grazingT - 4.0, double(0.24f), 0));
-  checkHit(rays[5], hits[5],
-           {grazingT, grazingNormal, sdfTTolerance(tol, -grazingNormal.x, grazingT),
-            kNormalTolerance});
+  checkHit(
+      rays[5], hits[5],
+      {grazingT, grazingNormal, sdfTTolerance(tol, -grazingNormal.x, grazingT), kNormalTolerance});
   checkMiss(rays[6], hits[6]);
   // Scaled by 2 about (30, 0, 10) and stood up (its axis along z): the tube's
   // top (1, 0.25, 0) lands at (32, 0, 10.5), its outer rim at x = 32.5.
@@ -131,9 +131,9 @@ TEST_CASE("implicit probe: torus, rounded box and blend, from outside, inside an
   // There it is the mean of the two distances, whose gradient along y is
   // y / 0.575: the blend's slope along the ray.
   const double neckY = std::sqrt(0.575 * 0.575 - 0.55 * 0.55);
-  checkHit(rays[14], hits[14],
-           {5.0 - neckY, {0, 1, 0}, sdfTTolerance(tol, neckY / 0.575, 5.0 - neckY),
-            kNormalTolerance});
+  checkHit(
+      rays[14], hits[14],
+      {5.0 - neckY, {0, 1, 0}, sdfTTolerance(tol, neckY / 0.575, 5.0 - neckY), kNormalTolerance});
   // 1.1 from the other sphere, beyond k: no blending on the far side.
   checkHit(rays[15], hits[15], {3.95, {-1, 0, 0}, sdfTTolerance(tol, 1, 3.95), kNormalTolerance});
   checkMiss(rays[16], hits[16]);

@@ -16,7 +16,8 @@ namespace shapes = scene::implicit;
 // A row of five spot-lit regions on a wall (an implicit plane, z = 0, facing
 // +z). In regions 0-3 a spot light 4 above the wall shines down on it past a
 // small blocker halfway (sphere, box, torus, Mandelbulb: one per family); in
-// region 4 it shines on a sphere (scaled, so world distances count). The cones (25 degrees) do not overlap.
+// region 4 it shines on a sphere (scaled, so world distances count). The cones (25 degrees) do not
+// overlap.
 constexpr uint32_t kWidth = 256, kHeight = 64;
 constexpr double kSpacing = 8.0;
 constexpr double kLightHeight = 4.0;
@@ -27,7 +28,9 @@ const glm::dvec3 kReceiverCentre(4 * kSpacing, 0, 1.5);
 constexpr double kReceiverRadius = 1.0;  // a sphere of radius 0.5 scaled by 2
 const glm::dvec3 kReceiverLight(4 * kSpacing, 0, 6);
 
-glm::dvec3 regionLight(int region) { return {region * kSpacing, 0, kLightHeight}; }
+glm::dvec3 regionLight(int region) {
+  return {region * kSpacing, 0, kLightHeight};
+}
 
 scene::Scene shadowRow() {
   scene::Scene s = test::implicitScene({});
@@ -37,9 +40,9 @@ scene::Scene shadowRow() {
   auto bulb = test::implicitObject("bulb", shapes::Mandelbulb{8.0f, 8},
                                    glm::scale(at(3), glm::vec3(0.25f)));
   s.implicits = {
-      test::implicitObject("wall", shapes::Plane{glm::vec2(22, 4)},
-                           glm::rotate(test::translate({16, 0, 0}), glm::radians(90.0f),
-                                       glm::vec3(1, 0, 0))),
+      test::implicitObject(
+          "wall", shapes::Plane{glm::vec2(22, 4)},
+          glm::rotate(test::translate({16, 0, 0}), glm::radians(90.0f), glm::vec3(1, 0, 0))),
       test::implicitObject("sphere", shapes::Sphere{0.3f}, at(0)),
       test::implicitObject("box", shapes::Box{glm::vec3(0.25f)},
                            glm::rotate(at(1), glm::radians(30.0f), glm::vec3(0, 1, 0))),
@@ -110,9 +113,10 @@ glm::ivec2 pixelOf(const scene::Camera& camera, glm::dvec3 p) {
 
 }  // namespace
 
-TEST_CASE("implicit shading: every family casts hard shadows; lit implicit surfaces match "
-          "the closed form",
-          "[render][gpu][implicit]") {
+TEST_CASE(
+    "implicit shading: every family casts hard shadows; lit implicit surfaces match "
+    "the closed form",
+    "[render][gpu][implicit]") {
   auto device = test::makeTestDevice();
   const scene::Scene s = shadowRow();
   render::PathTracer tracer(*device, s, kWidth, kHeight);
@@ -187,12 +191,12 @@ TEST_CASE("implicit shading: implicit emitters in the furnace keep every pixel a
   blend.blendRadius = 0.05f;
   s.implicits = {
       test::implicitObject("sphere", shapes::Sphere{0.15f}, test::translate({0.3f, 0, 0.5f})),
-      test::implicitObject("box", shapes::Box{glm::vec3(0.1f)},
-                           glm::rotate(test::translate({-0.3f, 0.2f, 0.5f}), 0.5f,
-                                       glm::vec3(1, 1, 0))),
-      test::implicitObject("torus", shapes::Torus{0.15f, 0.05f},
-                           glm::rotate(test::translate({0, -0.3f, 0.5f}), 1.0f,
-                                       glm::vec3(1, 0, 0))),
+      test::implicitObject(
+          "box", shapes::Box{glm::vec3(0.1f)},
+          glm::rotate(test::translate({-0.3f, 0.2f, 0.5f}), 0.5f, glm::vec3(1, 1, 0))),
+      test::implicitObject(
+          "torus", shapes::Torus{0.15f, 0.05f},
+          glm::rotate(test::translate({0, -0.3f, 0.5f}), 1.0f, glm::vec3(1, 0, 0))),
       test::implicitObject("blend", blend, test::translate({0, 0.3f, 0.4f})),
   };
   render::PathTracer tracer(*device, s, 16, 16);
