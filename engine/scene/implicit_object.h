@@ -77,7 +77,9 @@ using ImplicitShape =
 // evaluations without reaching the surface misses.
 struct SphereTracing {
   uint32_t maxSteps = 256;
-  float tolerance = 1e-4f;  // object-space distance that counts as on the surface
+  // Object-space distance that counts as on the surface; at least 1e-6 of
+  // the object's size is used (float resolution of its coordinates).
+  float tolerance = 1e-4f;
 };
 
 struct ImplicitObject {
