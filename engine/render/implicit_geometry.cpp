@@ -198,8 +198,8 @@ gpu::ImplicitData packImplicit(const scene::ImplicitObject& object, uint32_t ins
   // Below a few float ULPs of the object's coordinates a march can never
   // get within the tolerance and would end at its step limit, so the
   // tolerance does not go below 1e-6 of the object's size.
-  const float size = std::max(largestComponent(glm::abs(bounds.lo)),
-                              largestComponent(glm::abs(bounds.hi)));
+  const float size =
+      std::max(largestComponent(glm::abs(bounds.lo)), largestComponent(glm::abs(bounds.hi)));
   const float tolerance = std::max(object.sphereTracing.tolerance, 1e-6f * size);
   d.boundsMin = {bounds.lo.x, bounds.lo.y, bounds.lo.z, tolerance};
   d.boundsMax = {bounds.hi.x, bounds.hi.y, bounds.hi.z, 0.0f};

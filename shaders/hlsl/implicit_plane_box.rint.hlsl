@@ -7,7 +7,8 @@
 [shader("intersection")]
 void main() {
   ImplicitData object = loadImplicit(InstanceID() + PrimitiveIndex());
-  ObjectRay ray = objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
+  ObjectRay ray =
+      objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
   ImplicitHit hit;
   if (object.info.x == IMPLICIT_PLANE)
     hit = intersectPlane(ray.origin, ray.direction, object.shape.xy, ray.sMin, ray.sMax);

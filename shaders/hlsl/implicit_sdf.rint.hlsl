@@ -11,7 +11,8 @@ float implicitSdf(ImplicitData o, float3 p) { return sdfObjectDistance(o, p); }
 [shader("intersection")]
 void main() {
   ImplicitData object = loadImplicit(InstanceID() + PrimitiveIndex());
-  ObjectRay ray = objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
+  ObjectRay ray =
+      objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
   ImplicitHit hit = sphereTrace(object, ray);
   if (hit.s >= 0.0) {
     ImplicitAttributes attributes;

@@ -7,7 +7,8 @@
 [shader("intersection")]
 void main() {
   ImplicitData object = loadImplicit(InstanceID() + PrimitiveIndex());
-  ObjectRay ray = objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
+  ObjectRay ray =
+      objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
   ImplicitHit hit = intersectSphere(ray.origin, ray.direction, object.shape.x, ray.sMin, ray.sMax);
   if (hit.s >= 0.0) {
     ImplicitAttributes attributes;

@@ -66,7 +66,8 @@ float3 objectToWorldNormal(ImplicitData o, float3 n) {
                    n.z * o.worldToObject2.xyz);
 }
 
-ObjectRay objectRay(ImplicitData o, float3 worldOrigin, float3 worldDirection, float tMin, float tMax) {
+ObjectRay objectRay(ImplicitData o, float3 worldOrigin, float3 worldDirection, float tMin,
+                    float tMax) {
   float3 d = worldToObjectVector(o, worldDirection);
   float len = length(d);
   ObjectRay r;
@@ -157,7 +158,8 @@ ImplicitHit intersectSphere(float3 origin, float3 direction, float radius, float
 
 // The plane y = 0 within |x| <= halfExtents.x, |z| <= halfExtents.y. A ray
 // in the plane's direction never crosses it, so it misses.
-ImplicitHit intersectPlane(float3 origin, float3 direction, float2 halfExtents, float sMin, float sMax) {
+ImplicitHit intersectPlane(float3 origin, float3 direction, float2 halfExtents, float sMin,
+                           float sMax) {
   if (direction.y == 0.0) return implicitMiss();
   float s = -origin.y / direction.y;
   if (!(s >= sMin && s <= sMax)) return implicitMiss();
@@ -168,7 +170,8 @@ ImplicitHit intersectPlane(float3 origin, float3 direction, float2 halfExtents, 
 
 // The box |x| <= halfExtents: the entry face, or the exit face for a ray
 // that starts inside; the normal is the face's outward axis.
-ImplicitHit intersectBox(float3 origin, float3 direction, float3 halfExtents, float sMin, float sMax) {
+ImplicitHit intersectBox(float3 origin, float3 direction, float3 halfExtents, float sMin,
+                         float sMax) {
   SlabSpan span = intersectSlabs(origin, direction, -halfExtents, halfExtents);
   if (span.sEnter > span.sExit) return implicitMiss();
   if (span.sEnter >= sMin && span.sEnter <= sMax) {

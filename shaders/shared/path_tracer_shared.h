@@ -138,7 +138,7 @@ struct ImplicitData {
   // x IMPLICIT_* kind, y InstanceData index, z max sphere-tracing steps,
   // w blend primitive count
   uint4 info;
-  uint4 blendKinds;  // IMPLICIT_* kind of each blend primitive
+  uint4 blendKinds;                                    // IMPLICIT_* kind of each blend primitive
   float4 blendOffsets[IMPLICIT_MAX_BLEND_PRIMITIVES];  // xyz: where each primitive's origin lies
   float4 blendShapes[IMPLICIT_MAX_BLEND_PRIMITIVES];   // each primitive's parameters, as `shape`
 };

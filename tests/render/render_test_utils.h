@@ -30,8 +30,7 @@ inline CameraFrame cameraFrame(const scene::Camera& c) {
 }
 
 // Film position (pixels, (0,0) the top-left corner) whose ray sees world point p.
-inline glm::dvec2 projectToFilm(const scene::Camera& camera, glm::dvec3 p, uint32_t w,
-                                uint32_t h) {
+inline glm::dvec2 projectToFilm(const scene::Camera& camera, glm::dvec3 p, uint32_t w, uint32_t h) {
   const CameraFrame c = cameraFrame(camera);
   const glm::dvec3 d = p - c.position;
   const double aspect = double(w) / double(h);
