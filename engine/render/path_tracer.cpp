@@ -297,7 +297,8 @@ void PathTracer::createPipeline() {
   desc.maxRecursionDepth = 1;   // only the ray generation shader traces
   pipeline_ = device_.createRayTracingPipeline(desc);
 
-  // One table per integrator; they differ in the ray generation record only.
+  // One table per ray generation shader (path, Whitted, probe); they differ
+  // in the ray generation record only.
   auto makeTable = [&](const char* rayGen) {
     auto table = pipeline_->createShaderTable(std::string(rayGen) + " shader table");
     table->setRayGenerationShader(rayGen);

@@ -1,6 +1,7 @@
 #pragma once
 // The path tracer on top of the RHI: uploads a scene (one BLAS per mesh, one
-// TLAS instance per scene instance), builds the ray-tracing pipeline of the
+// TLAS instance per scene instance; implicit objects as in
+// implicit_geometry.h), builds the ray-tracing pipeline of the
 // shading core, and accumulates frames of 1-16 samples per pixel into a
 // linear HDR running mean.
 #include <glm/glm.hpp>
