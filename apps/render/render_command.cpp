@@ -76,8 +76,8 @@ int runRender(const RenderOptions& o) {
   const auto& adapter = device->adapter();
   fmt::print("device: {} ({}, {}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              adapter.apiVersion, device->backendName());
-  fmt::print("scene: {} ({} triangles), {}x{}, {} spp, seed {}\n", scene.name, scene.triangleCount(),
-             width, height, o.spp, o.seed);
+  fmt::print("scene: {} ({} triangles, {} implicit objects), {}x{}, {} spp, seed {}\n", scene.name,
+             scene.triangleCount(), scene.implicits.size(), width, height, o.spp, o.seed);
   if (o.clamp > 0.0f)
     fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n", o.clamp);
   std::fflush(stdout);  // before the progress lines on stderr

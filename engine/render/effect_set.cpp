@@ -36,11 +36,13 @@ uint32_t deriveEffects(const scene::Scene& scene) {
   uint32_t effects = 0;
   if (!scene.pointLights.empty()) effects |= PT_EFFECT_DELTA_LIGHTS;
   // Materials of meshes that are drawn, not every material the file lists.
-  for (const auto& instance : scene.instances) {
-    const auto& material = scene.materials.at(scene.meshes.at(instance.mesh).material);
+  auto use = [&](uint32_t materialIndex) {
+    const auto& material = scene.materials.at(materialIndex);
     effects |= materialEffects(material);
     if (material.isEmissive()) effects |= PT_EFFECT_AREA_LIGHTS;
-  }
+  };
+  for (const auto& instance : scene.instances) use(scene.meshes.at(instance.mesh).material);
+  for (const auto& object : scene.implicits) use(object.material);
   return effects;
 }
 

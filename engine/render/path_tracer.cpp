@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
 #include "render/effect_set.h"
+#include "render/implicit_geometry.h"
 #include "util/error.h"
 
 namespace penumbra::render {
@@ -29,7 +31,8 @@ template <class T>
 rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& data,
                                     rhi::BufferUsage extra, const char* name) {
   rhi::BufferDesc desc;
-  desc.byteSize = std::max<uint64_t>(data.size() * sizeof(T), 16);
+  // At least one element: an empty structured buffer has no valid view.
+  desc.byteSize = std::max<uint64_t>(data.size(), 1) * sizeof(T);
   desc.usage = rhi::BufferUsage::StorageBuffer | extra;
   desc.debugName = name;
   return device.createBuffer(desc);
@@ -67,6 +70,9 @@ struct PathTracer::SceneBuffers {
   rhi::BufferHandle normals, tangents, texcoords;
   std::vector<rhi::rt::AccelStructHandle> bottomLevels;
   rhi::rt::AccelStructHandle topLevel;
+  rhi::BufferHandle implicits, implicitAabbs;
+  std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
+  std::vector<ImplicitFamily> implicitFamilies;                  // hit group 1 + i is family i's
 };
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
@@ -164,6 +170,10 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     }
     instances.push_back(data);
   }
+  for (const auto& object : scene.implicits) {
+    const bool emits = scene.materials[object.material].isEmissive();
+    instances.push_back({0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION});
+  }
   double totalPower = 0;
   for (double p : power) totalPower += p;
   double cumulative = 0;
@@ -200,11 +210,14 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 
   auto* cmd = commandList_.get();
   cmd->open();
-  cmd->writeBuffer(s.vertices.get(), vertices.data(), vertices.size() * sizeof(gpu::float4));
-  cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
-  cmd->writeBuffer(s.normals.get(), normals.data(), normals.size() * sizeof(gpu::float4));
-  cmd->writeBuffer(s.tangents.get(), tangents.data(), tangents.size() * sizeof(gpu::float4));
-  cmd->writeBuffer(s.texcoords.get(), texcoords.data(), texcoords.size() * sizeof(gpu::float4));
+  if (!vertices.empty()) {
+    cmd->writeBuffer(s.vertices.get(), vertices.data(), vertices.size() * sizeof(gpu::float4));
+    cmd->writeBuffer(s.normals.get(), normals.data(), normals.size() * sizeof(gpu::float4));
+    cmd->writeBuffer(s.tangents.get(), tangents.data(), tangents.size() * sizeof(gpu::float4));
+    cmd->writeBuffer(s.texcoords.get(), texcoords.data(), texcoords.size() * sizeof(gpu::float4));
+  }
+  if (!indices.empty())
+    cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
   cmd->writeBuffer(s.instances.get(), instances.data(), instances.size() * sizeof(gpu::InstanceData));
   cmd->writeBuffer(s.materials.get(), materials.data(), materials.size() * sizeof(gpu::MaterialData));
   if (!emissive.empty())
@@ -241,6 +254,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     d.bottomLevelAddress = s.bottomLevels[scene.instances[i].mesh]->deviceAddress();
     tlasInstances.push_back(d);
   }
+  uploadImplicits(scene, tlasInstances);
   rhi::rt::AccelStructDesc tlas;
   tlas.isTopLevel = true;
   tlas.topLevelMaxInstances = uint32_t(tlasInstances.size());
@@ -250,6 +264,51 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
+}
+
+// Records the open command list's BLAS builds; appends one TLAS instance per
+// implicit family present (implicit_geometry.h).
+void PathTracer::uploadImplicits(const scene::Scene& scene,
+                                 std::vector<rhi::rt::InstanceDesc>& tlasInstances) {
+  auto& s = *scene_;
+  const ImplicitLayout layout = layoutImplicits(scene.implicits, uint32_t(scene.instances.size()));
+  s.implicits = makeStorageBuffer(device_, layout.data, rhi::BufferUsage::None, "implicit objects");
+  s.implicitAabbs = makeStorageBuffer(device_, layout.aabbs,
+                                      rhi::BufferUsage::AccelStructBuildInput, "implicit AABBs");
+  // The full pipeline holds every family's hit group, in enum order, whether
+  // the scene uses it or not; a specialized one only the families present.
+  if (pipelineEffects_ == uint32_t(PT_EFFECTS_ALL))
+    for (uint32_t f = 0; f < kImplicitFamilyCount; ++f) s.implicitFamilies.push_back(ImplicitFamily(f));
+  else
+    for (const auto& range : layout.families) s.implicitFamilies.push_back(range.family);
+  if (layout.data.empty()) return;
+  auto* cmd = commandList_.get();
+  cmd->writeBuffer(s.implicits.get(), layout.data.data(),
+                   layout.data.size() * sizeof(gpu::ImplicitData));
+  cmd->writeBuffer(s.implicitAabbs.get(), layout.aabbs.data(),
+                   layout.aabbs.size() * sizeof(layout.aabbs[0]));
+  for (const auto& range : layout.families) {
+    rhi::rt::AccelStructDesc blas;
+    blas.debugName = std::string("BLAS ") + implicitHitGroupName(range.family);
+    rhi::rt::GeometryDesc geo;
+    geo.type = rhi::rt::GeometryType::AABBs;
+    geo.flags = rhi::rt::GeometryFlags::Opaque;
+    geo.aabbs.buffer = s.implicitAabbs.get();
+    geo.aabbs.offset = uint64_t(range.firstObject) * sizeof(layout.aabbs[0]);
+    geo.aabbs.count = range.objectCount;
+    geo.aabbs.stride = sizeof(layout.aabbs[0]);
+    blas.bottomLevelGeometries.push_back(geo);
+    s.implicitBottomLevels.push_back(device_.createAccelStruct(blas));
+    cmd->buildBottomLevelAccelStruct(s.implicitBottomLevels.back().get());
+
+    rhi::rt::InstanceDesc d;  // identity: each object's transform is in its ImplicitData
+    d.instanceID = range.firstObject;
+    d.instanceMask = 0xff;
+    const auto slot = std::find(s.implicitFamilies.begin(), s.implicitFamilies.end(), range.family);
+    d.instanceContributionToHitGroupIndex = 1 + uint32_t(slot - s.implicitFamilies.begin());
+    d.bottomLevelAddress = s.implicitBottomLevels.back()->deviceAddress();
+    tlasInstances.push_back(d);
+  }
 }
 
 void PathTracer::createPipeline() {
@@ -263,31 +322,54 @@ void PathTracer::createPipeline() {
   rhi::RayTracingPipelineDesc desc;
   desc.debugName = fmt::format("path tracer (effects {:#x})", pipelineEffects_);
   desc.shaders = {rayGenVariant("path_trace.rgen"), rayGenVariant("whitted.rgen"),
-                  shaders::shaderDesc("path_trace.rmiss"), shaders::shaderDesc("shadow.rmiss"),
-                  shaders::shaderDesc("triangle.rchit")};
+                  shaders::shaderDesc("probe.rgen"), shaders::shaderDesc("path_trace.rmiss"),
+                  shaders::shaderDesc("shadow.rmiss"), shaders::shaderDesc("triangle.rchit")};
+  // Hit group 0 is the triangles'; then one per implicit family the scene
+  // uses, in the order of the TLAS instances' hit-group offsets: a pipeline
+  // holds only the intersection shaders of the geometry its scene contains.
   desc.hitGroups = {{"triangles", "triangle.rchit", "", "", false}};
-  desc.maxPayloadBytes = 68;  // SurfaceHit (surface_hit.hlsli)
-  desc.maxRecursionDepth = 1; // only the ray generation shader traces
+  if (!scene_->implicitFamilies.empty())
+    desc.shaders.push_back(shaders::shaderDesc("implicit.rchit"));
+  for (ImplicitFamily family : scene_->implicitFamilies) {
+    desc.shaders.push_back(shaders::shaderDesc(implicitIntersectionShader(family)));
+    desc.hitGroups.push_back({implicitHitGroupName(family), "implicit.rchit", "",
+                              implicitIntersectionShader(family), true});
+  }
+  desc.maxPayloadBytes = 68;    // SurfaceHit (surface_hit.hlsli)
+  desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
+  desc.maxRecursionDepth = 1;   // only the ray generation shader traces
   const auto start = std::chrono::steady_clock::now();
   pipeline_ = device_.createRayTracingPipeline(desc);
   pipelineCreationSeconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  // One table per integrator; they differ in the ray generation record only.
+  // One table per ray generation shader (path, Whitted, probe); they differ
+  // in the ray generation record only.
   auto makeTable = [&](const char* rayGen) {
     auto table = pipeline_->createShaderTable(std::string(rayGen) + " shader table");
     table->setRayGenerationShader(rayGen);
     table->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
     table->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
-    table->addHitGroup("triangles");
+    for (const auto& group : desc.hitGroups) table->addHitGroup(group.exportName);
     return table;
   };
   pathTable_ = makeTable("path_trace.rgen");
   whittedTable_ = makeTable("whitted.rgen");
+  probeTable_ = makeTable("probe.rgen");
 
+  const std::vector<gpu::ProbeRay> noRays;
+  const std::vector<gpu::ProbeHit> noHits;
+  noProbeRays_ = makeStorageBuffer(device_, noRays, rhi::BufferUsage::None, "no probe rays");
+  noProbeHits_ = makeStorageBuffer(device_, noHits, rhi::BufferUsage::None, "no probe hits");
+  bindings_ = createBindings(noProbeRays_, noProbeHits_, "path tracer bindings");
+}
+
+rhi::BindingSetHandle PathTracer::createBindings(const rhi::BufferHandle& probeRays,
+                                                 const rhi::BufferHandle& probeHits,
+                                                 const char* name) {
   using Item = rhi::BindingSetItem;
   rhi::BindingSetDesc set;
-  set.debugName = "path tracer bindings";
+  set.debugName = name;
   set.items = {Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
                Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
                Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
@@ -298,9 +380,12 @@ void PathTracer::createPipeline() {
                Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
                Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
                Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
+               Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
+               Item::storageBuffer(PT_SLOT_PROBE_RAYS, probeRays),
                Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
-               Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
-  bindings_ = device_.createBindingSet(set, *pipeline_);
+               Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_),
+               Item::storageBuffer(PT_SLOT_PROBE_HITS, probeHits)};
+  return device_.createBindingSet(set, *pipeline_);
 }
 
 uint32_t frameFlags(const PathTracerSettings& s) {

@@ -1,10 +1,12 @@
 #pragma once
 // The path tracer on top of the RHI: uploads a scene (one BLAS per mesh, one
-// TLAS instance per scene instance), builds the ray-tracing pipeline of the
+// TLAS instance per scene instance; implicit objects as in
+// implicit_geometry.h), builds the ray-tracing pipeline of the
 // shading core, and accumulates frames of 1-16 samples per pixel into a
 // linear HDR running mean.
 #include <glm/glm.hpp>
 #include <memory>
+#include <vector>
 
 #include "image/image.h"
 #include "path_tracer_shared.h"
@@ -56,6 +58,23 @@ uint32_t frameFlags(const PathTracerSettings& settings);
 // The GPU form of a scene material (path_tracer_shared.h).
 gpu::MaterialData packMaterial(const scene::Material& material);
 
+// A world-space ray for PathTracer::traceProbeRays.
+struct ProbeRay {
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, 1.0f};  // hitT is measured in units of its length
+  float tMax = 1e30f;
+};
+
+// A closest hit as the integrators see it (shaders/shared/surface_hit.hlsli).
+struct SurfaceHit {
+  glm::vec3 position{0.0f};
+  float hitT = -1.0f;               // < 0: the ray missed everything
+  glm::vec3 geometricNormal{0.0f};  // unit, front side (counter-clockwise; outside of an implicit)
+  uint32_t instanceIndex = 0;       // scene.instances first, then scene.implicits in their order
+  uint32_t primitiveIndex = 0;      // triangle within the mesh; 0 for implicit objects
+  bool isHit() const { return hitT >= 0.0f; }
+};
+
 class PathTracer {
  public:
   static constexpr uint32_t kMaxSamplesPerFrame = 16;
@@ -72,6 +91,12 @@ class PathTracer {
   void resetAccumulation() { accumulatedSamples_ = 0; }
   uint32_t accumulatedSamples() const { return accumulatedSamples_; }
 
+  // Traces each ray (from tMin 0) through the production pipeline (the same
+  // acceleration structures, hit groups and closest-hit shaders as the
+  // integrators) and returns what its closest hit reported. For tests and
+  // picking; waits for the GPU.
+  std::vector<SurfaceHit> traceProbeRays(const std::vector<ProbeRay>& rays);
+
   // The running mean, linear RGB (alpha 1).
   image::Image readback();
   const rhi::TextureHandle& accumulation() const { return accumulation_; }
@@ -87,7 +112,11 @@ class PathTracer {
  private:
   struct SceneBuffers;
   void uploadScene(const scene::Scene& scene);
+  void uploadImplicits(const scene::Scene& scene,
+                       std::vector<rhi::rt::InstanceDesc>& tlasInstances);
   void createPipeline();
+  rhi::BindingSetHandle createBindings(const rhi::BufferHandle& probeRays,
+                                       const rhi::BufferHandle& probeHits, const char* name);
 
   rhi::IDevice& device_;
   uint32_t width_, height_;
@@ -103,7 +132,9 @@ class PathTracer {
   rhi::TextureHandle accumulation_;
   rhi::BufferHandle rayCounter_, rayCounterReadback_;
   rhi::RayTracingPipelineHandle pipeline_;
-  rhi::ShaderTableHandle pathTable_, whittedTable_;
+  rhi::ShaderTableHandle pathTable_, whittedTable_, probeTable_;
+  // Bound while rendering: the pipeline's layout has the probe's slots.
+  rhi::BufferHandle noProbeRays_, noProbeHits_;
   rhi::BindingSetHandle bindings_;
   rhi::CommandListHandle commandList_;
   rhi::TimerQueryHandle timer_;

@@ -29,7 +29,8 @@ void validate(const Scene& scene) {
   auto fail = [&](const std::string& what) {
     throw Error(fmt::format("scene '{}': {}", scene.name, what));
   };
-  if (scene.meshes.empty()) fail("has no meshes");
+  if (scene.meshes.empty() && scene.implicits.empty())
+    fail("has no geometry (neither meshes nor implicit objects)");
   for (const auto& mesh : scene.meshes) {
     if (mesh.material >= scene.materials.size())
       fail(fmt::format("mesh '{}' uses material {} of {}", mesh.name, mesh.material,
@@ -73,6 +74,13 @@ void validate(const Scene& scene) {
     if (!(m.ior >= 1.0f && m.ior <= 4.0f))
       fail(fmt::format("material '{}': ior {} is outside [1, 4]", m.name, m.ior));
     if (!(m.exponent >= 0.0f)) fail(fmt::format("material '{}': negative Phong exponent", m.name));
+  }
+  for (const auto& object : scene.implicits) {
+    try {
+      validateImplicit(object, scene.materials.size());
+    } catch (const Error& e) {
+      fail(e.what());
+    }
   }
   for (const auto& inst : scene.instances)
     if (inst.mesh >= scene.meshes.size())

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/implicit_object.h"
+
 namespace penumbra::scene {
 
 // Which shading model a material uses (docs/materials.md).
@@ -100,6 +102,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
+  std::vector<ImplicitObject> implicits;
   std::vector<PointLight> pointLights;
   glm::vec3 ambient{0.0f};           // Whitted's ambient term
   Camera camera;                     // the view rendered
@@ -112,8 +115,9 @@ struct Scene {
 // throws penumbra::Error listing the names there are.
 void selectCamera(Scene& scene, const std::string& name);
 
-// Checks indices, materials and instances refer to things that exist and that
-// positions are finite; throws penumbra::Error naming the scene and the part.
+// Checks indices, materials and instances refer to things that exist, that
+// positions are finite and implicit objects are well-formed
+// (validateImplicit); throws penumbra::Error naming the scene and the part.
 void validate(const Scene& scene);
 
 }  // namespace penumbra::scene

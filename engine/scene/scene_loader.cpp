@@ -14,6 +14,8 @@
 
 #include "scene/material_row.h"
 #include "scene/gltf_loader.h"
+#include "scene/implicit_json.h"
+#include "scene/json_reading.h"
 #include "util/embedded_files.h"
 #include "util/error.h"
 
@@ -21,29 +23,6 @@ namespace penumbra::scene {
 namespace {
 
 using nlohmann::json;
-
-glm::vec3 readVec3(const json& value, const std::string& where) {
-  if (!value.is_array() || value.size() != 3)
-    throw Error(fmt::format("{}: expected an array of 3 numbers", where));
-  glm::vec3 v;
-  for (int i = 0; i < 3; ++i) {
-    if (!value[i].is_number()) throw Error(fmt::format("{}: element {} is not a number", where, i));
-    v[i] = value[i].get<float>();
-  }
-  return v;
-}
-
-const json& require(const json& object, const char* key, const std::string& where) {
-  if (!object.is_object() || !object.contains(key))
-    throw Error(fmt::format("{}: missing \"{}\"", where, key));
-  return object.at(key);
-}
-
-float readFloat(const json& m, const char* key, float fallback, const std::string& where) {
-  if (!m.contains(key)) return fallback;
-  if (!m.at(key).is_number()) throw Error(fmt::format("{}: \"{}\" is not a number", where, key));
-  return m.at(key).get<float>();
-}
 
 Material parseMaterial(const json& m, const std::string& name, const std::string& where) {
   if (!m.is_object()) throw Error(where + ": must be an object");
@@ -242,9 +221,7 @@ Scene parseScene(std::string_view text, const std::string& source,
   }
   if (doc.contains("ambient")) scene.ambient = readVec3(doc.at("ambient"), at + " ambient");
 
-  static const json kEmptyArray = json::array();
-  const json& meshes =
-      hasGltf && !doc.contains("meshes") ? kEmptyArray : require(doc, "meshes", at);
+  const json meshes = doc.value("meshes", json::array());
   if (!meshes.is_array()) throw Error(at + ": \"meshes\" must be an array");
   for (const auto& m : meshes) {
     Mesh mesh;
@@ -268,6 +245,8 @@ Scene parseScene(std::string_view text, const std::string& source,
     scene.instances.push_back({uint32_t(scene.meshes.size()), glm::mat4(1.0f)});
     scene.meshes.push_back(std::move(mesh));
   }
+  if (doc.contains("implicits"))
+    scene.implicits = parseImplicits(doc.at("implicits"), materialIndex, scale, at);
   if (doc.contains("materialTest"))
     addMaterialRow(scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
   if (hasGltf) {

@@ -18,7 +18,13 @@
 //                   "innerConeDegrees": 25 } ],          // optional
 //     "ambient": [r,g,b],                               // optional, Whitted
 //     "meshes": [ { "name": "floor", "material": "white",
-//                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ] }
+//                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ],
+//     "implicits": [ { "name": "ball", "kind": "sphere", "material": "white",
+//                      "radius": 0.5,
+//                      "transform": { "translate": [x,y,z],
+//                                     "rotate": { "axis": [x,y,z], "degrees": 30 },
+//                                     "scale": 2 } }, ... ] }
+// "meshes" and "implicits" are each optional; a scene needs one of them.
 // Each quad is split into two counter-clockwise triangles (v0 v1 v2, v0 v2 v3);
 // each mesh becomes one instance with the identity transform.
 //     "materialTest": { "material": "base", "vary": "roughness", "count": 7,
@@ -37,6 +43,21 @@
 //   "materials" and "meshes" may be left out, and so may "camera": the view
 //   is then the first file's camera "NAME", or its default camera. Every
 //   file's cameras join Scene::cameras (for `--camera NAME`).
+//
+// Implicit objects (scene/implicit_object.h), shape parameters in object space:
+//   "sphere": radius; "plane": the plane y = 0 facing +y, infinite, or
+//   bounded by "halfExtents": [x, z]; "box": halfExtents [x,y,z];
+//   "torus": majorRadius, minorRadius (around the y axis);
+//   "roundedBox": halfExtents, cornerRadius; "mandelbulb": power (default 8),
+//   iterations (default 12); "blend": blendRadius and "primitives": 2-4 of
+//   { "kind": sphere|box|torus|roundedBox, shape keys, "offset": [x,y,z] }.
+// Torus, roundedBox, blend and mandelbulb are sphere traced: "maxSteps"
+// (default 256, >= 1) and "tolerance" (object-space distance, default 1e-4).
+// "transform" is optional: object to world = translate * rotate * scale
+// (then unitScale); "scale" is a number or [x,y,z], and only the analytic
+// kinds (sphere, plane, box) accept non-uniform scale. Unknown keys are errors.
+// Emissive materials work on implicit objects; they emit from the outside
+// (the +y side of a plane) and are found by BSDF sampling only, not by NEE.
 #include <string>
 #include <string_view>
 #include <vector>

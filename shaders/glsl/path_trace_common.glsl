@@ -25,6 +25,9 @@ layout(set = 0, binding = PT_SLOT_POINT_LIGHTS, std430) readonly buffer PointLig
 layout(set = 0, binding = PT_SLOT_NORMALS, std430) readonly buffer Normals { float4 gNormals[]; };
 layout(set = 0, binding = PT_SLOT_TANGENTS, std430) readonly buffer Tangents { float4 gTangents[]; };
 layout(set = 0, binding = PT_SLOT_TEXCOORDS, std430) readonly buffer TexCoords { float4 gTexCoords[]; };
+layout(set = 0, binding = PT_SLOT_IMPLICITS, std430) readonly buffer Implicits {
+  ImplicitData gImplicits[];
+};
 layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
 layout(set = 0, binding = PT_SLOT_RAY_COUNTER, std430) buffer RayCounter { uint gRayCount; };
 
@@ -32,3 +35,4 @@ InstanceData loadInstanceData(uint index) { return gInstances[index]; }
 MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
+ImplicitData loadImplicit(uint index) { return gImplicits[index]; }

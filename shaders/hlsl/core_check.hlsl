@@ -10,6 +10,16 @@
 #include "path_tracer_shared.h"
 #include "math.hlsli"
 #include "surface_hit.hlsli"
+// The implicit-surface core, so an HLSL error in it fails this build too
+// (the DXR intersection shaders include the same files).
+#include "implicit.hlsli"
+#include "probe.hlsli"
+#include "sdf.hlsli"
+float implicitSdf(ImplicitData o, float3 p) {
+  return o.info.x == IMPLICIT_MANDELBULB ? sdfMandelbulb(p, o.shape.x, uint(o.shape.y))
+                                         : sdfObjectDistance(o, p);
+}
+#include "sphere_tracing.hlsli"
 
 // Wrapped: glslang cannot copy a ConstantBuffer<FrameConstants> into a FrameConstants.
 struct FramePush {
@@ -21,17 +31,15 @@ struct FramePush {
 [[vk::binding(PENUMBRA_T(0), 0)]] StructuredBuffer<float4> gSphere : register(t0);
 [[vk::binding(PENUMBRA_U(0), 0)]] RWStructuredBuffer<float4> gOutput : register(u0);
 
-// Rays start inside the sphere (centred at the origin), so the hit is the far root.
+// Rays start inside the sphere (centred at the origin), so the hit is where
+// they leave it: the implicit core's sphere, as compiled by this front-end.
 SurfaceHit traceClosest(float3 origin, float3 direction) {
-  float radius = gSphere[0].z;
-  float b = dot(origin, direction);
-  float c = dot(origin, origin) - radius * radius;
-  float disc = b * b - c;
-  if (disc < 0.0) return surfaceMiss();
+  ImplicitHit leaving = intersectSphere(origin, direction, gSphere[0].z, 0.0, 1e30);
+  if (leaving.s < 0.0) return surfaceMiss();
   SurfaceHit h = surfaceMiss();
-  h.hitT = -b + sqrt(disc);
+  h.hitT = leaving.s;
   h.position = origin + h.hitT * direction;
-  h.geometricNormal = -normalize(h.position);  // the emitting side faces inwards
+  h.geometricNormal = -leaving.normal;  // the emitting side faces inwards
   h.shadingNormal = h.geometricNormal;
   h.instanceIndex = 0u;
   h.primitiveIndex = 0u;

@@ -26,6 +26,7 @@ StructuredBuffer<PointLight> gPointLights : PENUMBRA_REGISTER_T(PT_T_POINT_LIGHT
 StructuredBuffer<float4> gNormals : PENUMBRA_REGISTER_T(PT_T_NORMALS);
 StructuredBuffer<float4> gTangents : PENUMBRA_REGISTER_T(PT_T_TANGENTS);
 StructuredBuffer<float4> gTexCoords : PENUMBRA_REGISTER_T(PT_T_TEXCOORDS);
+StructuredBuffer<ImplicitData> gImplicits : PENUMBRA_REGISTER_T(PT_T_IMPLICITS);
 RWTexture2D<float4> gAccumulation : PENUMBRA_REGISTER_U(PT_U_ACCUMULATION);
 RWStructuredBuffer<uint> gRayCounter : PENUMBRA_REGISTER_U(PT_U_RAY_COUNTER);
 
@@ -33,5 +34,6 @@ InstanceData loadInstanceData(uint index) { return gInstances[index]; }
 MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
+ImplicitData loadImplicit(uint index) { return gImplicits[index]; }
 
 #endif

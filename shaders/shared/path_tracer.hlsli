@@ -81,11 +81,15 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
     MaterialData data = loadMaterial(instance.materialIndex);
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
-    // Emission: one-sided, from the counter-clockwise face.
+    // Emission: one-sided, from the front face (counter-clockwise; outside
+    // of an implicit surface).
     float cosLight = -dot(direction, hit.geometricNormal);
     if (instance.firstEmissiveTriangle != PT_NO_EMISSION && cosLight > 0.0) {
       float3 emitted = throughput * data.emission.xyz;
-      if (depth == 0u || previousDelta || !useNee || c.lights.x == 0u) {
+      // An emitter NEE never samples has light pdf 0: BSDF sampling is the
+      // only strategy that finds it, so its MIS weight is 1.
+      bool neeSamples = instance.firstEmissiveTriangle != PT_EMISSION_NOT_SAMPLED;
+      if (depth == 0u || previousDelta || !useNee || c.lights.x == 0u || !neeSamples) {
         radiance += clampContribution(emitted, clampLimit);
       } else if (useMis) {
         float lightPdf = areaToSolidAnglePdf(

@@ -5,6 +5,8 @@
 #define PENUMBRA_PATH_TRACER_SHARED_H
 
 #ifdef __cplusplus
+#include <cstddef>  // offsetof
+
 #include "shader_types.h"
 namespace penumbra::gpu {
 #endif
@@ -24,8 +26,11 @@ namespace penumbra::gpu {
 #define PT_T_NORMALS 7             // float4 vertex normals (object space; xyz 0: none), as PT_T_VERTICES
 #define PT_T_TANGENTS 8            // float4 vertex tangents (object space; w handedness; 0: none)
 #define PT_T_TEXCOORDS 9           // float4 per vertex: xy TEXCOORD_0 (0 without); zw reserved (0)
+#define PT_T_IMPLICITS 10          // ImplicitData by family: InstanceID() + PrimitiveIndex()
+#define PT_T_PROBE_RAYS 11         // ProbeRay: rays of PathTracer::traceProbeRays
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
+#define PT_U_PROBE_HITS 2          // ProbeHit per ProbeRay
 #define PT_SLOT_SCENE PENUMBRA_T(PT_T_SCENE)
 #define PT_SLOT_VERTICES PENUMBRA_T(PT_T_VERTICES)
 #define PT_SLOT_INDICES PENUMBRA_T(PT_T_INDICES)
@@ -36,8 +41,11 @@ namespace penumbra::gpu {
 #define PT_SLOT_NORMALS PENUMBRA_T(PT_T_NORMALS)
 #define PT_SLOT_TANGENTS PENUMBRA_T(PT_T_TANGENTS)
 #define PT_SLOT_TEXCOORDS PENUMBRA_T(PT_T_TEXCOORDS)
+#define PT_SLOT_IMPLICITS PENUMBRA_T(PT_T_IMPLICITS)
+#define PT_SLOT_PROBE_RAYS PENUMBRA_T(PT_T_PROBE_RAYS)
 #define PT_SLOT_ACCUMULATION PENUMBRA_U(PT_U_ACCUMULATION)
 #define PT_SLOT_RAY_COUNTER PENUMBRA_U(PT_U_RAY_COUNTER)
+#define PT_SLOT_PROBE_HITS PENUMBRA_U(PT_U_PROBE_HITS)
 
 // FrameConstants.sampling.w bits.
 #define PT_FLAG_NEE 1u               // next-event estimation on emissive triangles and point lights
@@ -58,6 +66,19 @@ namespace penumbra::gpu {
 #define MATERIAL_FLAG_LAMBERT_DIFFUSE 2u
 
 #define PT_NO_EMISSION 0xffffffffu
+// InstanceData.firstEmissiveTriangle of an emitter that next-event estimation
+// cannot sample (implicit surfaces): BSDF-sampled hits count it in full.
+#define PT_EMISSION_NOT_SAMPLED 0xfffffffeu
+
+// ImplicitData.info.x: the kind (= scene::ImplicitKind).
+#define IMPLICIT_SPHERE 0u
+#define IMPLICIT_PLANE 1u
+#define IMPLICIT_BOX 2u
+#define IMPLICIT_TORUS 3u
+#define IMPLICIT_ROUNDED_BOX 4u
+#define IMPLICIT_BLEND 5u
+#define IMPLICIT_MANDELBULB 6u
+#define IMPLICIT_MAX_BLEND_PRIMITIVES 4
 
 // Push constants (D3D12 root constants), 128 bytes: the most Vulkan guarantees.
 struct FrameConstants {
@@ -107,7 +128,47 @@ struct EmissiveTriangle {
   float4 radiance;  // rgb; w: cumulative probability up to and including this one
 };
 
+// An implicit surface (scene::ImplicitObject): its kind's parameters in its
+// own object space and the world-to-object transform its intersection shader
+// applies (the TLAS instances of implicit objects carry the identity).
+struct ImplicitData {
+  float4 worldToObject0;  // rows of the 3x4 affine world-to-object transform
+  float4 worldToObject1;
+  float4 worldToObject2;
+  // sphere: x radius; plane: xy half extents in x and z; box: xyz half
+  // extents; torus: x major, y minor radius; rounded box: xyz half extents,
+  // w corner radius; mandelbulb: x power, y iterations
+  float4 shape;
+  float4 boundsMin;  // xyz object-space box holding the surface; w sphere-tracing tolerance
+  float4 boundsMax;  // xyz; w blend radius
+  // x IMPLICIT_* kind, y InstanceData index, z max sphere-tracing steps,
+  // w blend primitive count
+  uint4 info;
+  uint4 blendKinds;                                    // IMPLICIT_* kind of each blend primitive
+  float4 blendOffsets[IMPLICIT_MAX_BLEND_PRIMITIVES];  // xyz: where each primitive's origin lies
+  float4 blendShapes[IMPLICIT_MAX_BLEND_PRIMITIVES];   // each primitive's parameters, as `shape`
+};
+
+// A world-space ray of PathTracer::traceProbeRays (tMin 0).
+struct ProbeRay {
+  float4 origin;     // xyz; w tMax
+  float4 direction;  // xyz (hitT is in units of its length)
+};
+
+// What the closest hit reported for one ProbeRay (SurfaceHit's fields).
+struct ProbeHit {
+  float4 position;  // xyz world position; w hitT (< 0: miss)
+  float4 normal;    // xyz geometric normal (front side)
+  uint4 ids;        // x instance index, y primitive index
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(ImplicitData) == 256);
+static_assert(offsetof(ImplicitData, info) == 96);
+static_assert(offsetof(ImplicitData, blendOffsets) == 128);
+static_assert(offsetof(ImplicitData, blendShapes) == 192);
+static_assert(sizeof(ProbeRay) == 32);
+static_assert(sizeof(ProbeHit) == 48);
 static_assert(sizeof(FrameConstants) == 128);
 static_assert(sizeof(PointLight) == 48);
 static_assert(sizeof(InstanceData) == 16);

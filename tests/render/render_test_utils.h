@@ -1,6 +1,7 @@
 #pragma once
-// Helpers of the renderer tests: render a scene on the test device, and the
-// camera rays the renderer traces for a pixel.
+// Helpers of the renderer tests: render a scene on the test device, the
+// camera rays the renderer traces for a pixel, and the pinhole camera of
+// shaders/shared/camera.hlsli in double precision.
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
@@ -41,6 +42,38 @@ inline std::vector<glm::vec2> pixelFootprint(uint32_t x, uint32_t y) {
   for (float fy : {0.0f, 0.5f, 1.0f})
     for (float fx : {0.0f, 0.5f, 1.0f}) points.push_back({float(x) + fx, float(y) + fy});
   return points;
+}
+
+struct CameraFrame {
+  glm::dvec3 position, right, up, forward;
+  double tanHalfFov;
+};
+
+inline CameraFrame cameraFrame(const scene::Camera& c) {
+  const glm::dvec3 f = glm::normalize(glm::dvec3(c.forward));
+  const glm::dvec3 r = glm::normalize(glm::cross(f, glm::dvec3(c.up)));
+  return {glm::dvec3(c.position), r, glm::cross(r, f), f,
+          std::tan(glm::radians(double(c.verticalFovDegrees)) * 0.5)};
+}
+
+// Film position (pixels, (0,0) the top-left corner) whose ray sees world point p.
+inline glm::dvec2 projectToFilm(const scene::Camera& camera, glm::dvec3 p, uint32_t w, uint32_t h) {
+  const CameraFrame c = cameraFrame(camera);
+  const glm::dvec3 d = p - c.position;
+  const double aspect = double(w) / double(h);
+  const double sx = glm::dot(d, c.right) / glm::dot(d, c.forward) / (c.tanHalfFov * aspect);
+  const double sy = glm::dot(d, c.up) / glm::dot(d, c.forward) / c.tanHalfFov;
+  return {(sx + 1.0) * 0.5 * w, (1.0 - sy) * 0.5 * h};
+}
+
+// Unit direction of the camera ray through a film position.
+inline glm::dvec3 cameraRayDirection(const scene::Camera& camera, glm::dvec2 film, uint32_t w,
+                                     uint32_t h) {
+  const CameraFrame c = cameraFrame(camera);
+  const double aspect = double(w) / double(h);
+  const double sx = (2.0 * film.x / w - 1.0) * c.tanHalfFov * aspect;
+  const double sy = (1.0 - 2.0 * film.y / h) * c.tanHalfFov;
+  return glm::normalize(c.forward + sx * c.right + sy * c.up);
 }
 
 }  // namespace penumbra::test

@@ -12,16 +12,8 @@ using namespace penumbra;
 namespace {
 constexpr uint32_t kSize = 64;
 
-// Pixel whose centre sees world point p, with the camera of the scene.
 glm::vec2 project(const scene::Camera& c, glm::vec3 p, uint32_t w, uint32_t h) {
-  glm::vec3 f = glm::normalize(c.forward);
-  glm::vec3 r = glm::normalize(glm::cross(f, c.up));
-  glm::vec3 u = glm::cross(r, f);
-  glm::vec3 d = p - c.position;
-  float t = std::tan(glm::radians(c.verticalFovDegrees) * 0.5f);
-  float sx = glm::dot(d, r) / glm::dot(d, f) / (t * float(w) / float(h));
-  float sy = glm::dot(d, u) / glm::dot(d, f) / t;
-  return {(sx + 1.0f) * 0.5f * w, (1.0f - sy) * 0.5f * h};
+  return glm::vec2(test::projectToFilm(c, p, w, h));
 }
 }  // namespace
 

@@ -32,7 +32,9 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
           "[rhi][root-signature]") {
   PipelineBindingLayout layout;
   for (const char* name :
-       {"path_trace.rgen", "whitted.rgen", "path_trace.rmiss", "shadow.rmiss", "triangle.rchit"})
+       {"path_trace.rgen", "whitted.rgen", "probe.rgen", "path_trace.rmiss", "shadow.rmiss",
+        "triangle.rchit", "implicit.rchit", "implicit_sphere.rint", "implicit_plane_box.rint",
+        "implicit_sdf.rint", "implicit_fractal.rint"})
     mergeBindingLayout(layout, shaders::shaderDesc(name).bindingLayout, name);
   const RootSignatureLayout rs = computeRootSignatureLayout(layout);
 
@@ -45,11 +47,11 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
   const auto& table = rs.tables[0];
   CHECK(table.space == 0);
   CHECK(table.rootParameterIndex == 1);
-  CHECK(table.descriptorCount == 12);
+  CHECK(table.descriptorCount == 15);
   CHECK(rs.parameterCount() == 2);
   CHECK(rs.dwordCost == 32 + 1);  // 128 bytes of root constants + one table
 
-  // t0..t9 are SRVs (TLAS + read-only structured buffers), u0/u1 UAVs, in slot order.
+  // t0..t11 are SRVs (TLAS + read-only structured buffers), u0..u2 UAVs, in slot order.
   const auto* scene = table.rangeForSlot(PT_SLOT_SCENE);
   REQUIRE(scene);
   CHECK(scene->type == DescriptorRangeType::SRV);
@@ -70,16 +72,31 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
   CHECK(texcoords->type == DescriptorRangeType::SRV);
   CHECK(texcoords->baseRegister == 9);
   CHECK(texcoords->offsetInTable == 9);
+  const auto* implicits = table.rangeForSlot(PT_SLOT_IMPLICITS);
+  REQUIRE(implicits);
+  CHECK(implicits->type == DescriptorRangeType::SRV);
+  CHECK(implicits->baseRegister == 10);
+  CHECK(implicits->offsetInTable == 10);
+  const auto* probeRays = table.rangeForSlot(PT_SLOT_PROBE_RAYS);
+  REQUIRE(probeRays);
+  CHECK(probeRays->type == DescriptorRangeType::SRV);
+  CHECK(probeRays->baseRegister == 11);
+  CHECK(probeRays->offsetInTable == 11);
   const auto* accumulation = table.rangeForSlot(PT_SLOT_ACCUMULATION);
   REQUIRE(accumulation);
   CHECK(accumulation->type == DescriptorRangeType::UAV);
   CHECK(accumulation->baseRegister == 0);
-  CHECK(accumulation->offsetInTable == 10);
+  CHECK(accumulation->offsetInTable == 12);
   const auto* counter = table.rangeForSlot(PT_SLOT_RAY_COUNTER);
   REQUIRE(counter);
   CHECK(counter->type == DescriptorRangeType::UAV);
   CHECK(counter->baseRegister == 1);
-  CHECK(counter->offsetInTable == 11);
+  CHECK(counter->offsetInTable == 13);
+  const auto* probeHits = table.rangeForSlot(PT_SLOT_PROBE_HITS);
+  REQUIRE(probeHits);
+  CHECK(probeHits->type == DescriptorRangeType::UAV);
+  CHECK(probeHits->baseRegister == 2);
+  CHECK(probeHits->offsetInTable == 14);
 }
 
 TEST_CASE("root signature: spaces become tables in space order, arrays take several descriptors",

@@ -1,5 +1,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+#include <iterator>
+#include <vector>
 
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
@@ -11,11 +13,16 @@ using namespace penumbra;
 using namespace penumbra::rhi;
 
 namespace {
+// Every shader a path tracer pipeline can hold (implicit hit groups included).
+const char* const kPathTracerShaders[] = {
+    "path_trace.rgen",   "whitted.rgen",         "probe.rgen",
+    "path_trace.rmiss",  "shadow.rmiss",         "triangle.rchit",
+    "implicit.rchit",    "implicit_sphere.rint", "implicit_plane_box.rint",
+    "implicit_sdf.rint", "implicit_fractal.rint"};
+
 PipelineBindingLayout reflectPathTracer() {
   PipelineBindingLayout layout;
-  for (const char* name :
-       {"path_trace.rgen", "whitted.rgen", "path_trace.rmiss", "shadow.rmiss", "triangle.rchit"})
-    reflectSpirv(shaders::find(name), name, layout);
+  for (const char* name : kPathTracerShaders) reflectSpirv(shaders::find(name), name, layout);
   return layout;
 }
 
@@ -30,7 +37,7 @@ const BindingLayoutItem& slot(const PipelineBindingLayout& layout, uint32_t s) {
 TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][reflection]") {
   auto layout = reflectPathTracer();
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 12);
+  REQUIRE(layout.spaces[0].items.size() == 15);
   REQUIRE(layout.pushConstantBytes == sizeof(gpu::FrameConstants));
 
   REQUIRE(slot(layout, PT_SLOT_SCENE).type == ResourceType::AccelStruct);
@@ -46,6 +53,9 @@ TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][refl
     REQUIRE_FALSE(slot(layout, s).writable);
     REQUIRE(slot(layout, s).structureStride == 16u);
   }
+  REQUIRE_FALSE(slot(layout, PT_SLOT_IMPLICITS).writable);
+  REQUIRE_FALSE(slot(layout, PT_SLOT_PROBE_RAYS).writable);
+  REQUIRE(slot(layout, PT_SLOT_PROBE_HITS).writable);
 }
 
 TEST_CASE("binding sets are checked against the reflected layout", "[rhi][reflection]") {
@@ -98,8 +108,9 @@ bool sameLayout(const PipelineBindingLayout& a, const PipelineBindingLayout& b) 
 }  // namespace
 
 TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR-V", "[rhi][reflection]") {
-  for (const char* name : {"path_trace.rgen", "path_trace.rmiss", "shadow.rmiss", "triangle.rchit",
-                           "tonemap.comp", "core_check.hlsl"}) {
+  std::vector<const char*> names(std::begin(kPathTracerShaders), std::end(kPathTracerShaders));
+  names.insert(names.end(), {"tonemap.comp", "core_check.hlsl"});
+  for (const char* name : names) {
     INFO(name);
     const ShaderDesc desc = shaders::shaderDesc(name);
     const ShaderReflection runtime = reflectSpirvModule(desc.spirv, name);
@@ -123,6 +134,9 @@ TEST_CASE("reflection records each storage buffer's structure stride for D3D12 v
   CHECK(slot(layout, PT_SLOT_INDICES).structureStride == 4);        // uint[]
   CHECK(slot(layout, PT_SLOT_INSTANCES).structureStride == sizeof(gpu::InstanceData));
   CHECK(slot(layout, PT_SLOT_EMISSIVE_TRIANGLES).structureStride == sizeof(gpu::EmissiveTriangle));
+  CHECK(slot(layout, PT_SLOT_IMPLICITS).structureStride == sizeof(gpu::ImplicitData));
+  CHECK(slot(layout, PT_SLOT_PROBE_RAYS).structureStride == sizeof(gpu::ProbeRay));
+  CHECK(slot(layout, PT_SLOT_PROBE_HITS).structureStride == sizeof(gpu::ProbeHit));
   CHECK(slot(layout, PT_SLOT_RAY_COUNTER).structureStride == 4);    // { uint gRayCount; }
   CHECK(slot(layout, PT_SLOT_SCENE).structureStride == 0);
 }

@@ -1,0 +1,22 @@
+// The Mandelbulb, sphere traced (DXR twin of glsl/implicit_fractal.rint).
+// InstanceID() is the family's first ImplicitData and PrimitiveIndex()
+// the object within it.
+#include "path_trace_common.hlsli"
+#include "implicit.hlsli"
+#include "sdf.hlsli"
+
+float implicitSdf(ImplicitData o, float3 p) { return sdfMandelbulb(p, o.shape.x, uint(o.shape.y)); }
+#include "sphere_tracing.hlsli"
+
+[shader("intersection")]
+void main() {
+  ImplicitData object = loadImplicit(InstanceID() + PrimitiveIndex());
+  ObjectRay ray =
+      objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
+  ImplicitHit hit = sphereTrace(object, ray);
+  if (hit.s >= 0.0) {
+    ImplicitAttributes attributes;
+    attributes.objectNormal = hit.normal;
+    ReportHit(hit.s * ray.tPerS, 0u, attributes);
+  }
+}
