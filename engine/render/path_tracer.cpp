@@ -105,7 +105,9 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   rayCounterReadback_ = device_.createBuffer(counter);
 
   uploadScene(scene);
-  createPipeline();
+  // The path-tracing pipeline now, so bad shaders fail at construction; the
+  // others when first used.
+  pipelineFor(RayGeneration::Path);
 }
 
 PathTracer::~PathTracer() = default;
@@ -311,18 +313,22 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
   }
 }
 
-void PathTracer::createPipeline() {
-  // The ray-generation shaders hold the shading code, so they are what the
-  // effect set specializes; their export names stay the plain ones.
-  auto rayGenVariant = [&](const char* name) {
-    rhi::ShaderDesc shader = shaders::shaderDesc(rayGenerationVariant(name, pipelineEffects_));
-    shader.exportName = name;
-    return shader;
-  };
+PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGeneration) {
+  RayGenerationPipeline& p = pipelines_[int(rayGeneration)];
+  if (p.pipeline) return p;
+  static const char* const kNames[] = {"path_trace.rgen", "whitted.rgen", "probe.rgen"};
+  const char* rayGen = kNames[int(rayGeneration)];
+  // The shading ray-generation shaders are what the effect set specializes;
+  // their export names stay the plain ones.
+  rhi::ShaderDesc rayGenShader =
+      rayGeneration == RayGeneration::Probe
+          ? shaders::shaderDesc(rayGen)
+          : shaders::shaderDesc(rayGenerationVariant(rayGen, pipelineEffects_));
+  rayGenShader.exportName = rayGen;
+
   rhi::RayTracingPipelineDesc desc;
-  desc.debugName = fmt::format("path tracer (effects {:#x})", pipelineEffects_);
-  desc.shaders = {rayGenVariant("path_trace.rgen"), rayGenVariant("whitted.rgen"),
-                  shaders::shaderDesc("probe.rgen"), shaders::shaderDesc("path_trace.rmiss"),
+  desc.debugName = fmt::format("{} (effects {:#x})", rayGen, pipelineEffects_);
+  desc.shaders = {rayGenShader, shaders::shaderDesc("path_trace.rmiss"),
                   shaders::shaderDesc("shadow.rmiss"), shaders::shaderDesc("triangle.rchit")};
   // Hit group 0 is the triangles'; then one per implicit family the scene
   // uses, in the order of the TLAS instances' hit-group offsets: a pipeline
@@ -339,53 +345,50 @@ void PathTracer::createPipeline() {
   desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
   desc.maxRecursionDepth = 1;   // only the ray generation shader traces
   const auto start = std::chrono::steady_clock::now();
-  pipeline_ = device_.createRayTracingPipeline(desc);
-  pipelineCreationSeconds_ =
+  p.pipeline = device_.createRayTracingPipeline(desc);
+  pipelineCreationSeconds_ +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  // One table per ray generation shader (path, Whitted, probe); they differ
-  // in the ray generation record only.
-  auto makeTable = [&](const char* rayGen) {
-    auto table = pipeline_->createShaderTable(std::string(rayGen) + " shader table");
-    table->setRayGenerationShader(rayGen);
-    table->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
-    table->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
-    for (const auto& group : desc.hitGroups) table->addHitGroup(group.exportName);
-    return table;
-  };
-  pathTable_ = makeTable("path_trace.rgen");
-  whittedTable_ = makeTable("whitted.rgen");
-  probeTable_ = makeTable("probe.rgen");
-
-  const std::vector<gpu::ProbeRay> noRays;
-  const std::vector<gpu::ProbeHit> noHits;
-  noProbeRays_ = makeStorageBuffer(device_, noRays, rhi::BufferUsage::None, "no probe rays");
-  noProbeHits_ = makeStorageBuffer(device_, noHits, rhi::BufferUsage::None, "no probe hits");
-  bindings_ = createBindings(noProbeRays_, noProbeHits_, "path tracer bindings");
+  p.table = p.pipeline->createShaderTable(std::string(rayGen) + " shader table");
+  p.table->setRayGenerationShader(rayGen);
+  p.table->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
+  p.table->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
+  for (const auto& group : desc.hitGroups) p.table->addHitGroup(group.exportName);
+  if (rayGeneration != RayGeneration::Probe)
+    p.bindings = createBindings(*p.pipeline, nullptr, nullptr, "path tracer bindings");
+  return p;
 }
 
-rhi::BindingSetHandle PathTracer::createBindings(const rhi::BufferHandle& probeRays,
+rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline& pipeline,
+                                                 const rhi::BufferHandle& probeRays,
                                                  const rhi::BufferHandle& probeHits,
                                                  const char* name) {
   using Item = rhi::BindingSetItem;
+  std::vector<Item> items = {
+      Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
+      Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
+      Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
+      Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
+      Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
+      Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
+      Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
+      Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
+      Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
+      Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
+      Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
+      Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
+      Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
+  if (probeRays) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_RAYS, probeRays));
+  if (probeHits) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_HITS, probeHits));
+  // Bind what this pipeline's shaders declare (each ray-generation shader
+  // declares its own outputs).
+  const auto& declared = pipeline.bindingLayout().spaces.at(0).items;
   rhi::BindingSetDesc set;
   set.debugName = name;
-  set.items = {Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
-               Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
-               Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
-               Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
-               Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
-               Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
-               Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
-               Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
-               Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
-               Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
-               Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
-               Item::storageBuffer(PT_SLOT_PROBE_RAYS, probeRays),
-               Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
-               Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_),
-               Item::storageBuffer(PT_SLOT_PROBE_HITS, probeHits)};
-  return device_.createBindingSet(set, *pipeline_);
+  for (const auto& item : items)
+    if (std::any_of(declared.begin(), declared.end(), [&](const auto& d) { return d.slot == item.slot; }))
+      set.items.push_back(item);
+  return device_.createBindingSet(set, pipeline);
 }
 
 uint32_t frameFlags(const PathTracerSettings& s) {
@@ -425,8 +428,9 @@ FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t 
   auto* cmd = commandList_.get();
   cmd->open();
   cmd->clearBufferUint(rayCounter_.get(), 0);
-  auto* table = settings.integrator == Integrator::Whitted ? whittedTable_.get() : pathTable_.get();
-  cmd->setRayTracingState({pipeline_.get(), table, {bindings_.get()}});
+  auto& p = pipelineFor(settings.integrator == Integrator::Whitted ? RayGeneration::Whitted
+                                                                   : RayGeneration::Path);
+  cmd->setRayTracingState({p.pipeline.get(), p.table.get(), {p.bindings.get()}});
   cmd->setPushConstants(&c, sizeof(c));
   cmd->beginTimerQuery(timer_.get());
   cmd->dispatchRays(width_, height_);

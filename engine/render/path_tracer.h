@@ -106,7 +106,7 @@ class PathTracer {
   // The PT_EFFECT_* bits the scene calls for, and those the pipeline holds.
   uint32_t sceneEffects() const { return sceneEffects_; }
   uint32_t pipelineEffects() const { return pipelineEffects_; }
-  // CPU time spent creating the ray-tracing pipeline (compiling its shaders).
+  // CPU time spent creating ray-tracing pipelines so far (compiling shaders).
   double pipelineCreationSeconds() const { return pipelineCreationSeconds_; }
 
  private:
@@ -114,8 +114,19 @@ class PathTracer {
   void uploadScene(const scene::Scene& scene);
   void uploadImplicits(const scene::Scene& scene,
                        std::vector<rhi::rt::InstanceDesc>& tlasInstances);
-  void createPipeline();
-  rhi::BindingSetHandle createBindings(const rhi::BufferHandle& probeRays,
+  // One pipeline per ray-generation shader, created on first use: drivers
+  // compile every hit and intersection shader into each ray-generation shader
+  // of a pipeline, so a pipeline holding all three costs three times as much
+  // to build as the one a render needs.
+  enum class RayGeneration { Path, Whitted, Probe };
+  struct RayGenerationPipeline {
+    rhi::RayTracingPipelineHandle pipeline;
+    rhi::ShaderTableHandle table;
+    rhi::BindingSetHandle bindings;  // for rendering; the probe binds its own
+  };
+  RayGenerationPipeline& pipelineFor(RayGeneration rayGeneration);
+  rhi::BindingSetHandle createBindings(const rhi::IRayTracingPipeline& pipeline,
+                                       const rhi::BufferHandle& probeRays,
                                        const rhi::BufferHandle& probeHits, const char* name);
 
   rhi::IDevice& device_;
@@ -131,11 +142,7 @@ class PathTracer {
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;
   rhi::BufferHandle rayCounter_, rayCounterReadback_;
-  rhi::RayTracingPipelineHandle pipeline_;
-  rhi::ShaderTableHandle pathTable_, whittedTable_, probeTable_;
-  // Bound while rendering: the pipeline's layout has the probe's slots.
-  rhi::BufferHandle noProbeRays_, noProbeHits_;
-  rhi::BindingSetHandle bindings_;
+  RayGenerationPipeline pipelines_[3];
   rhi::CommandListHandle commandList_;
   rhi::TimerQueryHandle timer_;
 };

@@ -34,12 +34,13 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   desc.memory = rhi::MemoryLocation::Readback;
   desc.debugName = "probe hits readback";
   auto readback = device_.createBuffer(desc);
-  auto bindings = createBindings(rayBuffer, hitBuffer, "probe bindings");
+  auto& probe = pipelineFor(RayGeneration::Probe);
+  auto bindings = createBindings(*probe.pipeline, rayBuffer, hitBuffer, "probe bindings");
 
   auto* cmd = commandList_.get();
   cmd->open();
   cmd->writeBuffer(rayBuffer.get(), packed.data(), packed.size() * sizeof(gpu::ProbeRay));
-  cmd->setRayTracingState({pipeline_.get(), probeTable_.get(), {bindings.get()}});
+  cmd->setRayTracingState({probe.pipeline.get(), probe.table.get(), {bindings.get()}});
   gpu::FrameConstants unused;  // the layout has push constants; probe.rgen reads none
   cmd->setPushConstants(&unused, sizeof(unused));
   cmd->dispatchRays(uint32_t(packed.size()), 1);
