@@ -15,6 +15,7 @@
 #include "scene/material_row.h"
 #include "scene/gltf_loader.h"
 #include "scene/implicit_json.h"
+#include "scene/scene_generators.h"
 #include "scene/json_reading.h"
 #include "util/embedded_files.h"
 #include "util/error.h"
@@ -247,6 +248,7 @@ Scene parseScene(std::string_view text, const std::string& source,
   }
   if (doc.contains("implicits"))
     scene.implicits = parseImplicits(doc.at("implicits"), materialIndex, scale, at);
+  if (doc.contains("generated")) addGenerated(scene, doc.at("generated"), materialIndex, scale, at);
   if (doc.contains("materialTest"))
     addMaterialRow(scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
   if (hasGltf) {

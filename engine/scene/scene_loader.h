@@ -27,6 +27,8 @@
 // "meshes" and "implicits" are each optional; a scene needs one of them.
 // Each quad is split into two counter-clockwise triangles (v0 v1 v2, v0 v2 v3);
 // each mesh becomes one instance with the identity transform.
+//     "generated": [ ... ]   procedural terrain, sphere grids and implicit-object
+//       grids (scene/scene_generators.h); optional.
 //     "materialTest": { "material": "base", "vary": "roughness", "count": 7,
 //                       "radius": 0.4, "first": [x,y,z], "last": [x,y,z] }
 //       a row of spheres from `first` to `last` (centres) sharing material

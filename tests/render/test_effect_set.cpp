@@ -130,16 +130,9 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
     scene::Scene scene;
     render::Integrator integrator;
   };
-  auto specular = disney();
-  specular.specular = 0.5f;
-  specular.metallic = 0.3f;
   auto glass = disney();
   glass.specTrans = 1.0f;
   glass.roughness = 0.2f;
-  auto coat = disney();
-  coat.clearcoat = 1.0f;
-  auto cloth = disney();
-  cloth.sheen = 1.0f;
   scene::Material mirror;
   mirror.model = scene::MaterialModel::Phong;
   mirror.reflectivity = 0.8f;
@@ -153,14 +146,14 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   everything.clearcoat = 0.5f;
   everything.sheen = 0.5f;
 
+  // Each distinct pipeline costs lavapipe seconds to compile, so the cases are
+  // chosen to cover: the area-light-only Lambert scene, an effect alone with
+  // the specular layer compiled out (glass), every effect at once (a bit the
+  // derivation forgot would drop its lobe and change the image), and both
+  // Whitted branches.
   std::vector<Case> cases = {
-      {"cornell box (area light, Lambert)", scene::loadScene("cornell-box"),
-       render::Integrator::Path},
-      {"diffuse sphere, point light", cornellWithSphere(disney(), true), render::Integrator::Path},
-      {"specular sphere", cornellWithSphere(specular), render::Integrator::Path},
+      {"cornell box (area light, Lambert)", scene::loadScene("cornell-box"), render::Integrator::Path},
       {"rough glass sphere", cornellWithSphere(glass), render::Integrator::Path},
-      {"clearcoat sphere", cornellWithSphere(coat), render::Integrator::Path},
-      {"sheen sphere", cornellWithSphere(cloth), render::Integrator::Path},
       {"every lobe, point light", cornellWithSphere(everything, true), render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},

@@ -1,0 +1,139 @@
+#include "scene/scene_generators.h"
+
+#include <fmt/format.h>
+
+#include "scene/json_reading.h"
+#include "scene/mesh_builders.h"
+#include "scene/terrain.h"
+#include "util/error.h"
+
+namespace penumbra::scene {
+namespace {
+
+using nlohmann::json;
+
+uint32_t materialOf(const json& entry, const char* key, const std::map<std::string, uint32_t>& index,
+                    const std::string& where) {
+  const json& name = require(entry, key, where);
+  if (!name.is_string()) throw Error(fmt::format("{}: \"{}\" must be a material name", where, key));
+  auto it = index.find(name.get<std::string>());
+  if (it == index.end())
+    throw Error(fmt::format("{}: unknown material '{}'", where, name.get<std::string>()));
+  return it->second;
+}
+
+uint32_t readCount(const json& entry, const char* key, uint32_t fallback, uint32_t max, const std::string& where) {
+  if (!entry.contains(key)) return fallback;
+  const json& v = entry.at(key);
+  if (!v.is_number_integer() || v.get<int64_t>() < 1 || v.get<int64_t>() > int64_t(max))
+    throw Error(fmt::format("{}: \"{}\" must be an integer in 1..{}", where, key, max));
+  return v.get<uint32_t>();
+}
+
+std::vector<uint32_t> readCounts(const json& entry, size_t n, uint32_t max, const std::string& where) {
+  const json& v = require(entry, "count", where);
+  if (!v.is_array() || v.size() != n)
+    throw Error(fmt::format("{}: \"count\" must be an array of {} integers", where, n));
+  std::vector<uint32_t> counts;
+  for (const auto& c : v) {
+    if (!c.is_number_integer() || c.get<int64_t>() < 1 || c.get<int64_t>() > int64_t(max))
+      throw Error(fmt::format("{}: each \"count\" must be an integer in 1..{}", where, max));
+    counts.push_back(c.get<uint32_t>());
+  }
+  return counts;
+}
+
+void addTerrain(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials, float scale,
+                const std::string& where) {
+  TerrainDesc desc;
+  desc.resolution = readCount(e, "resolution", desc.resolution, 46340, where);
+  if (desc.resolution < 2) throw Error(where + ": \"resolution\" must be at least 2");
+  desc.size = readFloat(e, "size", desc.size, where) * scale;
+  desc.height = readFloat(e, "height", desc.height, where) * scale;
+  desc.octaves = readCount(e, "octaves", desc.octaves, 16, where);
+  desc.seed = readCount(e, "seed", desc.seed, 1u << 30, where);
+  Mesh mesh = makeTerrain(desc, materialOf(e, "material", materials, where));
+  Instance instance;
+  instance.mesh = uint32_t(scene.meshes.size());
+  if (e.contains("translate"))
+    instance.transform[3] = glm::vec4(readVec3(e.at("translate"), where + " translate") * scale, 1.0f);
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back(instance);
+}
+
+void addSpheres(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials, float scale,
+                const std::string& where) {
+  const auto count = readCounts(e, 2, 1024, where);
+  const float spacing = readFloat(e, "spacing", 1.0f, where) * scale;
+  const float radius = readFloat(e, "radius", 0.4f, where) * scale;
+  const glm::vec3 origin = readVec3(require(e, "origin", where), where + " origin") * scale;
+  const uint32_t subdivisions = readCount(e, "subdivisions", 4, 9, where);
+  if (!(radius > 0.0f) || !(spacing > 0.0f)) throw Error(where + ": radius and spacing must be positive");
+  Mesh sphere = makeIcosphere(subdivisions, radius, false, materialOf(e, "material", materials, where));
+  sphere.name = fmt::format("generated icosphere ({} triangles)", sphere.triangleCount());
+  const uint32_t mesh = uint32_t(scene.meshes.size());
+  scene.meshes.push_back(std::move(sphere));
+  for (uint32_t z = 0; z < count[1]; ++z)
+    for (uint32_t x = 0; x < count[0]; ++x) {
+      Instance instance;
+      instance.mesh = mesh;
+      instance.transform[3] = glm::vec4(origin + spacing * glm::vec3(float(x), 0.0f, float(z)), 1.0f);
+      scene.instances.push_back(instance);
+    }
+}
+
+void addImplicitGrid(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials,
+                     float scale, const std::string& where) {
+  const auto count = readCounts(e, 3, 256, where);
+  const float spacing = readFloat(e, "spacing", 1.0f, where) * scale;
+  const float size = readFloat(e, "size", 0.3f, where) * scale;
+  const glm::vec3 origin = readVec3(require(e, "origin", where), where + " origin") * scale;
+  if (!(size > 0.0f) || !(spacing > 0.0f)) throw Error(where + ": size and spacing must be positive");
+  const json& names = require(e, "materials", where);
+  if (!names.is_array() || names.empty()) throw Error(where + ": \"materials\" must be a non-empty array");
+  std::vector<uint32_t> palette;
+  for (size_t i = 0; i < names.size(); ++i) {
+    json one = {{"m", names[i]}};
+    palette.push_back(materialOf(one, "m", materials, where));
+  }
+  uint32_t n = 0;
+  for (uint32_t y = 0; y < count[1]; ++y)
+    for (uint32_t z = 0; z < count[2]; ++z)
+      for (uint32_t x = 0; x < count[0]; ++x, ++n) {
+        ImplicitObject o;
+        o.name = fmt::format("grid object {}", n);
+        o.material = palette[n % palette.size()];
+        // Unit-size shapes scaled uniformly, so SDF kinds keep a true distance bound.
+        switch (n % 4) {
+          case 0: o.shape = implicit::Sphere{1.0f}; break;
+          case 1: o.shape = implicit::Box{glm::vec3(0.8f)}; break;
+          case 2: o.shape = implicit::Torus{0.8f, 0.25f}; break;
+          default: o.shape = implicit::RoundedBox{glm::vec3(0.75f), 0.2f}; break;
+        }
+        o.transform = glm::mat4(size);
+        o.transform[3] = glm::vec4(origin + spacing * glm::vec3(float(x), float(y), float(z)), 1.0f);
+        scene.implicits.push_back(std::move(o));
+      }
+}
+
+}  // namespace
+
+void addGenerated(Scene& scene, const json& generated, const std::map<std::string, uint32_t>& materialIndex,
+                  float scale, const std::string& at) {
+  if (!generated.is_array()) throw Error(at + ": \"generated\" must be an array");
+  for (size_t i = 0; i < generated.size(); ++i) {
+    const json& e = generated[i];
+    const std::string where = fmt::format("{} generated[{}]", at, i);
+    const std::string kind = require(e, "kind", where).get<std::string>();
+    if (kind == "terrain")
+      addTerrain(scene, e, materialIndex, scale, where);
+    else if (kind == "spheres")
+      addSpheres(scene, e, materialIndex, scale, where);
+    else if (kind == "implicitGrid")
+      addImplicitGrid(scene, e, materialIndex, scale, where);
+    else
+      throw Error(fmt::format("{}: unknown kind '{}' (terrain, spheres, implicitGrid)", where, kind));
+  }
+}
+
+}  // namespace penumbra::scene
