@@ -93,7 +93,16 @@
   X(vkCmdBuildAccelerationStructuresKHR)           \
   X(vkCreateRayTracingPipelinesKHR)                \
   X(vkGetRayTracingShaderGroupHandlesKHR)          \
-  X(vkCmdTraceRaysKHR)
+  X(vkCmdTraceRaysKHR)                             \
+  X(vkCmdCopyImage)                                \
+  X(vkCmdBlitImage)                                \
+  X(vkCreateSemaphore)                             \
+  X(vkDestroySemaphore)                            \
+  X(vkCreateSwapchainKHR)                          \
+  X(vkDestroySwapchainKHR)                         \
+  X(vkGetSwapchainImagesKHR)                       \
+  X(vkAcquireNextImageKHR)                         \
+  X(vkQueuePresentKHR)
 
 namespace penumbra::vk {
 #define PENUMBRA_VK_DECLARE(name) extern PFN_##name name;
@@ -107,6 +116,10 @@ PENUMBRA_VK_DEVICE_FUNCTIONS(PENUMBRA_VK_DECLARE)
 void loadLoader();
 // Fetches every instance- and device-level function through `instance`.
 void loadInstanceFunctions(VkInstance instance);
+// The loader's vkGetInstanceProcAddr (after loadLoader): window-system
+// functions whose prototypes need platform headers, and the viewer's UI
+// renderer, load through it.
+PFN_vkGetInstanceProcAddr instanceProcAddr();
 
 // Throws penumbra::Error("<what>: <VkResult name>") unless result is VK_SUCCESS.
 void check(VkResult result, const char* what);

@@ -70,7 +70,7 @@ struct PathTracer::SceneBuffers {
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
                        const PipelineOptions& options)
-    : device_(device), width_(width), height_(height), camera_(scene.camera) {
+    : device_(device), width_(width), height_(height), options_(options), camera_(scene.camera) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
   scene::validate(scene);
@@ -117,6 +117,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 
   std::vector<gpu::MaterialData> materials;
   for (const auto& m : scene.materials) materials.push_back(packMaterial(m));
+  materials_ = scene.materials;
+  for (const auto& inst : scene.instances) drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
   std::vector<gpu::PointLight> pointLights;
   for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l));
   pointLightCount_ = uint32_t(pointLights.size());
@@ -277,6 +279,42 @@ void PathTracer::createPipeline() {
                Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
                Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
   bindings_ = device_.createBindingSet(set, *pipeline_);
+}
+
+void PathTracer::setCamera(const scene::Camera& camera) {
+  camera_ = camera;
+  resetAccumulation();
+}
+
+bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) {
+  if (materials.size() != materials_.size())
+    throw Error(fmt::format("path tracer: updateMaterials got {} materials; the scene has {}",
+                            materials.size(), materials_.size()));
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].emission != materials_[i].emission)
+      throw Error(fmt::format("path tracer: material '{}' changes its emission; emitters are fixed "
+                              "when the scene is uploaded",
+                              materials[i].name));
+  materials_ = materials;
+  std::vector<gpu::MaterialData> packed;
+  for (const auto& m : materials_) packed.push_back(packMaterial(m));
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->writeBuffer(scene_->materials.get(), packed.data(), packed.size() * sizeof(gpu::MaterialData));
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  resetAccumulation();
+
+  // Emission is unchanged, so only the material bits can differ.
+  uint32_t effects = sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS);
+  for (uint32_t m : drawnMaterials_) effects |= deriveMaterialEffects(materials_[m]);
+  sceneEffects_ = effects;
+  const uint32_t wanted = options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
+  if (wanted == pipelineEffects_) return false;
+  pipelineEffects_ = wanted;
+  createPipeline();
+  return true;
 }
 
 uint32_t frameFlags(const PathTracerSettings& s) {

@@ -70,6 +70,15 @@ class PathTracer {
   FrameStats renderFrame(const PathTracerSettings& settings, uint32_t samples);
   // The next frame starts a new mean (camera or settings changed).
   void resetAccumulation() { accumulatedSamples_ = 0; }
+  // Moves the camera (the scene's until then) and resets the accumulation.
+  void setCamera(const scene::Camera& camera);
+  const scene::Camera& camera() const { return camera_; }
+  // Replaces the materials (same count and order as the scene's) and resets
+  // the accumulation. Rebuilds the pipeline when the effects they call for
+  // change (unless it holds all effects); returns whether it did. Emission
+  // cannot change here: emitters are sampled from a table built with the
+  // scene, so that needs a new PathTracer (penumbra::Error otherwise).
+  bool updateMaterials(const std::vector<scene::Material>& materials);
   uint32_t accumulatedSamples() const { return accumulatedSamples_; }
 
   // The running mean, linear RGB (alpha 1).
@@ -91,7 +100,10 @@ class PathTracer {
 
   rhi::IDevice& device_;
   uint32_t width_, height_;
+  PipelineOptions options_;
   scene::Camera camera_;
+  std::vector<scene::Material> materials_;
+  std::vector<uint32_t> drawnMaterials_;  // materials of meshes that have instances
   uint32_t accumulatedSamples_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
   uint32_t pointLightCount_ = 0;
