@@ -27,7 +27,12 @@
   X(vkCreateDevice)                            \
   X(vkCreateDebugUtilsMessengerEXT)            \
   X(vkDestroyDebugUtilsMessengerEXT)           \
-  X(vkSetDebugUtilsObjectNameEXT)
+  X(vkSetDebugUtilsObjectNameEXT)              \
+  X(vkDestroySurfaceKHR)                       \
+  X(vkGetPhysicalDeviceSurfaceSupportKHR)      \
+  X(vkGetPhysicalDeviceSurfaceCapabilitiesKHR) \
+  X(vkGetPhysicalDeviceSurfaceFormatsKHR)      \
+  X(vkGetPhysicalDeviceSurfacePresentModesKHR)
 
 #define PENUMBRA_VK_DEVICE_FUNCTIONS(X)            \
   X(vkDestroyDevice)                               \

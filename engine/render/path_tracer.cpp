@@ -79,13 +79,7 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   commandList_ = device_.createCommandList();
   timer_ = device_.createTimerQuery();
 
-  rhi::TextureDesc tex;
-  tex.width = width;
-  tex.height = height;
-  tex.format = rhi::Format::RGBA32_FLOAT;
-  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
-  tex.debugName = "accumulation";
-  accumulation_ = device_.createTexture(tex);
+  createAccumulation();
 
   rhi::BufferDesc counter;
   counter.byteSize = 4;
@@ -102,6 +96,29 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
 }
 
 PathTracer::~PathTracer() = default;
+
+void PathTracer::createAccumulation() {
+  rhi::TextureDesc tex;
+  tex.width = width_;
+  tex.height = height_;
+  tex.format = rhi::Format::RGBA32_FLOAT;
+  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+  tex.debugName = "accumulation";
+  accumulation_ = device_.createTexture(tex);
+}
+
+void PathTracer::resize(uint32_t width, uint32_t height) {
+  if (width == 0 || height == 0 || width > 16384 || height > 16384)
+    throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
+  if (width == width_ && height == height_) return;
+  // The binding set holds the old image; frames still reading it finish first.
+  device_.waitForIdle();
+  width_ = width;
+  height_ = height;
+  createAccumulation();
+  createBindings();
+  resetAccumulation();
+}
 
 void PathTracer::uploadScene(const scene::Scene& scene) {
   scene_ = std::make_unique<SceneBuffers>();
@@ -265,6 +282,10 @@ void PathTracer::createPipeline() {
   };
   pathTable_ = makeTable("path_trace.rgen");
   whittedTable_ = makeTable("whitted.rgen");
+  createBindings();
+}
+
+void PathTracer::createBindings() {
 
   using Item = rhi::BindingSetItem;
   rhi::BindingSetDesc set;

@@ -79,6 +79,9 @@ class PathTracer {
   // cannot change here: emitters are sampled from a table built with the
   // scene, so that needs a new PathTracer (penumbra::Error otherwise).
   bool updateMaterials(const std::vector<scene::Material>& materials);
+  // A new accumulation image of this size (the viewer's render scale); the
+  // scene and pipeline stay. Resets the accumulation.
+  void resize(uint32_t width, uint32_t height);
   uint32_t accumulatedSamples() const { return accumulatedSamples_; }
 
   // The running mean, linear RGB (alpha 1).
@@ -97,6 +100,8 @@ class PathTracer {
   struct SceneBuffers;
   void uploadScene(const scene::Scene& scene);
   void createPipeline();
+  void createAccumulation();
+  void createBindings();
 
   rhi::IDevice& device_;
   uint32_t width_, height_;
