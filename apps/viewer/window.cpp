@@ -18,6 +18,9 @@
 #endif
 #endif
 #include <GLFW/glfw3native.h>
+#undef None  // Xlib's macros, unused here
+#undef Bool
+#undef Status
 
 namespace penumbra::viewer {
 namespace {

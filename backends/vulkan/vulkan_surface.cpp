@@ -19,6 +19,7 @@
 #else
 #include <X11/Xlib.h>
 #include <vulkan/vulkan_xlib.h>
+#undef None  // Xlib's macro; rhi::WindowSystem::None is meant below
 struct wl_display;
 struct wl_surface;
 #include <vulkan/vulkan_wayland.h>
