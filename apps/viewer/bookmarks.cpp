@@ -13,8 +13,12 @@
 namespace penumbra::viewer {
 namespace {
 using nlohmann::json;
-json vec3(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
-glm::vec3 vec3(const json& j) { return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()}; }
+json vec3(glm::vec3 v) {
+  return json::array({v.x, v.y, v.z});
+}
+glm::vec3 vec3(const json& j) {
+  return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()};
+}
 }  // namespace
 
 std::string BookmarkStore::defaultPath() {

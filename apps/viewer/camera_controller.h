@@ -10,9 +10,9 @@
 namespace penumbra::viewer {
 
 struct CameraInput {
-  glm::vec3 move{0.0f};    // right, up, forward, each in [-1, 1] (D-A, E-Q, W-S)
-  glm::vec2 turn{0.0f};    // mouse movement while dragging, pixels (x right, y down)
-  float scrollSteps = 0;   // wheel notches, positive = faster
+  glm::vec3 move{0.0f};   // right, up, forward, each in [-1, 1] (D-A, E-Q, W-S)
+  glm::vec2 turn{0.0f};   // mouse movement while dragging, pixels (x right, y down)
+  float scrollSteps = 0;  // wheel notches, positive = faster
 };
 
 class CameraController {

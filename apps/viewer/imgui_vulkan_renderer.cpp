@@ -99,7 +99,8 @@ ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& 
   info.ImageCount = std::max(2u, swapchain_.imageCount());
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = &checkResult;
-  if (!ImGui_ImplVulkan_Init(&info, renderPass_)) throw Error("imgui vulkan: ImGui_ImplVulkan_Init failed");
+  if (!ImGui_ImplVulkan_Init(&info, renderPass_))
+    throw Error("imgui vulkan: ImGui_ImplVulkan_Init failed");
 
   auto upload = device_.createCommandList();
   upload->open();
@@ -118,10 +119,13 @@ ImGuiVulkanRenderer::~ImGuiVulkanRenderer() {
   fn_->destroyRenderPass(handles_.device, renderPass_, nullptr);
 }
 
-void ImGuiVulkanRenderer::newFrame() { ImGui_ImplVulkan_NewFrame(); }
+void ImGuiVulkanRenderer::newFrame() {
+  ImGui_ImplVulkan_NewFrame();
+}
 
 void ImGuiVulkanRenderer::swapchainResized() {
-  for (auto& [view, framebuffer] : framebuffers_) fn_->destroyFramebuffer(handles_.device, framebuffer, nullptr);
+  for (auto& [view, framebuffer] : framebuffers_)
+    fn_->destroyFramebuffer(handles_.device, framebuffer, nullptr);
   framebuffers_.clear();
 }
 

@@ -6,7 +6,9 @@
 namespace penumbra::viewer {
 
 RenderScaleController::RenderScaleController(float scale, bool automatic, double targetFrameSeconds)
-    : scale_(std::clamp(scale, kMinScale, kMaxScale)), automatic_(automatic), target_(targetFrameSeconds) {}
+    : scale_(std::clamp(scale, kMinScale, kMaxScale)),
+      automatic_(automatic),
+      target_(targetFrameSeconds) {}
 
 void RenderScaleController::setScale(float scale) {
   scale_ = std::clamp(scale, kMinScale, kMaxScale);

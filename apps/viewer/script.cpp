@@ -18,12 +18,15 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
     int numbers;  // numeric arguments; -1: free-form
     int words;    // free-form arguments
   };
-  static const Shape kShapes[] = {
-      {"wait-frames", Kind::WaitFrames, 1, 0}, {"wait-samples", Kind::WaitSamples, 1, 0},
-      {"move", Kind::Move, 3, 0},             {"turn", Kind::Turn, 2, 0},
-      {"reset-camera", Kind::ResetCamera, 0, 0}, {"set", Kind::Set, 0, 2},
-      {"scene", Kind::Scene, 0, 1},           {"screenshot", Kind::Screenshot, 0, 1},
-      {"quit", Kind::Quit, 0, 0}};
+  static const Shape kShapes[] = {{"wait-frames", Kind::WaitFrames, 1, 0},
+                                  {"wait-samples", Kind::WaitSamples, 1, 0},
+                                  {"move", Kind::Move, 3, 0},
+                                  {"turn", Kind::Turn, 2, 0},
+                                  {"reset-camera", Kind::ResetCamera, 0, 0},
+                                  {"set", Kind::Set, 0, 2},
+                                  {"scene", Kind::Scene, 0, 1},
+                                  {"screenshot", Kind::Screenshot, 0, 1},
+                                  {"quit", Kind::Quit, 0, 0}};
   std::vector<ScriptCommand> commands;
   std::istringstream lines(text);
   std::string line;
@@ -53,7 +56,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
       } catch (const std::exception&) {
         used = 0;
       }
-      if (used != args[i].size() || !std::isfinite(value)) fail(fmt::format("'{}' is not a number", args[i]));
+      if (used != args[i].size() || !std::isfinite(value))
+        fail(fmt::format("'{}' is not a number", args[i]));
       command.numbers.push_back(value);
     }
     if ((shape->kind == Kind::WaitFrames || shape->kind == Kind::WaitSamples) &&

@@ -16,7 +16,17 @@
 namespace penumbra::viewer {
 
 struct ScriptCommand {
-  enum class Kind { WaitFrames, WaitSamples, Move, Turn, ResetCamera, Set, Scene, Screenshot, Quit };
+  enum class Kind {
+    WaitFrames,
+    WaitSamples,
+    Move,
+    Turn,
+    ResetCamera,
+    Set,
+    Scene,
+    Screenshot,
+    Quit
+  };
   Kind kind;
   std::vector<std::string> args;  // as written; numbers already checked
   std::vector<float> numbers;     // move/turn: the values; wait-*: the count

@@ -70,13 +70,15 @@ Viewer::Viewer(const ViewerOptions& options)
   ImGui_ImplGlfw_InitForVulkan(window_.handle(), true);
   ui_ = std::make_unique<ImGuiVulkanRenderer>(*device_, *swapchain_);
   display_ = std::make_unique<render::DisplayPass>(*device_);
-  for (uint32_t i = 0; i < options_.framesInFlight; ++i) frameLists_.push_back(device_->createCommandList());
+  for (uint32_t i = 0; i < options_.framesInFlight; ++i)
+    frameLists_.push_back(device_->createCommandList());
 
   if (!options_.script.empty()) script_ = loadScript(options_.script);
   loadScene(options_.scene);
   const auto& adapter = device_->adapter();
-  fmt::print("device: {} ({}) via {}, {} window\n", adapter.name, rhi::adapterTypeName(adapter.type),
-             device_->backendName(), rhi::windowSystemName(swapchain.window.system));
+  fmt::print("device: {} ({}) via {}, {} window\n", adapter.name,
+             rhi::adapterTypeName(adapter.type), device_->backendName(),
+             rhi::windowSystemName(swapchain.window.system));
   std::fflush(stdout);
 }
 
@@ -107,7 +109,8 @@ void Viewer::createTracer() {
   render::PipelineOptions pipeline;
   pipeline.allEffects = settings_.allEffects;
   tracer_.reset();
-  tracer_ = std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height, pipeline);
+  tracer_ =
+      std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height, pipeline);
   tracer_->setCamera(camera_->camera());
 }
 
@@ -121,11 +124,17 @@ void Viewer::resizeRender() {
 
 void Viewer::applyEffect(SettingEffect effect) {
   if (settings_.vsync != swapchain_->desc().vsync) swapchain_->setVsync(settings_.vsync);
-  if (settings_.autoRenderScale != scale_.automatic()) scale_.setAutomatic(settings_.autoRenderScale);
+  if (settings_.autoRenderScale != scale_.automatic())
+    scale_.setAutomatic(settings_.autoRenderScale);
   switch (effect) {
-    case SettingEffect::None: break;
-    case SettingEffect::ResetAccumulation: tracer_->resetAccumulation(); break;
-    case SettingEffect::RebuildRenderer: createTracer(); break;
+    case SettingEffect::None:
+      break;
+    case SettingEffect::ResetAccumulation:
+      tracer_->resetAccumulation();
+      break;
+    case SettingEffect::RebuildRenderer:
+      createTracer();
+      break;
     case SettingEffect::Resize:
       scale_.setScale(settings_.renderScale);
       resizeRender();
@@ -182,10 +191,17 @@ bool Viewer::stepScript() {
           camera_->reset();
           tracer_->setCamera(camera_->camera());
           break;
-        case Kind::Set: applyEffect(applySetting(settings_, c.args[0], c.args[1])); break;
-        case Kind::Scene: loadScene(c.args[0]); break;
-        case Kind::Screenshot: takeScreenshot(c.args[0]); break;
-        case Kind::Quit: return false;
+        case Kind::Set:
+          applyEffect(applySetting(settings_, c.args[0], c.args[1]));
+          break;
+        case Kind::Scene:
+          loadScene(c.args[0]);
+          break;
+        case Kind::Screenshot:
+          takeScreenshot(c.args[0]);
+          break;
+        case Kind::Quit:
+          return false;
       }
     } catch (const Error& e) {
       throw Error(fmt::format("{}:{}: {}", options_.script, c.line, e.what()));
@@ -207,9 +223,10 @@ void Viewer::takeScreenshot(const std::string& path) {
   }
   const std::string record = std::filesystem::path(path).replace_extension(".json").string();
   const RenderSize size{tracer_->width(), tracer_->height()};
-  render::saveRenderJob(record, makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(), size,
-                                              tracer_->accumulatedSamples()));
-  statusLine_ = fmt::format("saved {} and {} ({} spp)", path, record, tracer_->accumulatedSamples());
+  render::saveRenderJob(record, makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(),
+                                              size, tracer_->accumulatedSamples()));
+  statusLine_ =
+      fmt::format("saved {} and {} ({} spp)", path, record, tracer_->accumulatedSamples());
   fmt::print("screenshot: {} ({}x{}, {} spp), settings {}\n", path, size.width, size.height,
              tracer_->accumulatedSamples(), record);
   std::fflush(stdout);
@@ -229,7 +246,8 @@ void Viewer::renderFrame() {
   }
   w = swapchain_->desc().width;
   h = swapchain_->desc().height;
-  if (!displayTexture_ || displayTexture_->desc().width != w || displayTexture_->desc().height != h) {
+  if (!displayTexture_ || displayTexture_->desc().width != w ||
+      displayTexture_->desc().height != h) {
     rhi::TextureDesc desc;
     desc.width = w;
     desc.height = h;

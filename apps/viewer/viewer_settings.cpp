@@ -11,7 +11,8 @@
 namespace penumbra::viewer {
 namespace {
 
-[[noreturn]] void badValue(const std::string& name, const std::string& value, const char* expected) {
+[[noreturn]] void badValue(const std::string& name, const std::string& value,
+                           const char* expected) {
   throw Error(fmt::format("setting '{}': '{}' is not {}", name, value, expected));
 }
 
@@ -55,10 +56,13 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
   using E = SettingEffect;
   auto& t = s.tracer;
   if (name == "spp-per-frame")
-    return assign(s.samplesPerFrame, parseUint(name, value, 1, render::PathTracer::kMaxSamplesPerFrame),
+    return assign(s.samplesPerFrame,
+                  parseUint(name, value, 1, render::PathTracer::kMaxSamplesPerFrame),
                   E::ResetAccumulation);
-  if (name == "max-depth") return assign(t.maxDepth, parseUint(name, value, 0, 1024), E::ResetAccumulation);
-  if (name == "seed") return assign(t.seed, parseUint(name, value, 0, UINT32_MAX), E::ResetAccumulation);
+  if (name == "max-depth")
+    return assign(t.maxDepth, parseUint(name, value, 0, 1024), E::ResetAccumulation);
+  if (name == "seed")
+    return assign(t.seed, parseUint(name, value, 0, UINT32_MAX), E::ResetAccumulation);
   if (name == "integrator") {
     auto v = render::parseIntegrator(value);
     if (!v) badValue(name, value, "path or whitted");
@@ -74,15 +78,19 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
     if (!v) badValue(name, value, "power or balance");
     return assign(t.misHeuristic, *v, E::ResetAccumulation);
   }
-  if (name == "russian-roulette") return assign(t.russianRoulette, parseBool(name, value), E::ResetAccumulation);
-  if (name == "clamp") return assign(t.radianceClamp, parseFloat(name, value, 0, 1e30f), E::ResetAccumulation);
-  if (name == "exposure") return assign(s.toneMapping.exposure, parseFloat(name, value, 0, 1e6f), E::None);
+  if (name == "russian-roulette")
+    return assign(t.russianRoulette, parseBool(name, value), E::ResetAccumulation);
+  if (name == "clamp")
+    return assign(t.radianceClamp, parseFloat(name, value, 0, 1e30f), E::ResetAccumulation);
+  if (name == "exposure")
+    return assign(s.toneMapping.exposure, parseFloat(name, value, 0, 1e6f), E::None);
   if (name == "tonemap") {
     auto v = render::parseToneMapOperator(value);
     if (!v) badValue(name, value, "clamp, reinhard or aces");
     return assign(s.toneMapping.toneOperator, *v, E::None);
   }
-  if (name == "all-effects") return assign(s.allEffects, parseBool(name, value), E::RebuildRenderer);
+  if (name == "all-effects")
+    return assign(s.allEffects, parseBool(name, value), E::RebuildRenderer);
   if (name == "render-scale") {
     // A fixed scale: the automatic one would move it again.
     s.autoRenderScale = false;

@@ -32,7 +32,8 @@ enum class SettingEffect {
 // "integrator", "strategy", "mis-heuristic", "russian-roulette", "clamp",
 // "seed", "exposure", "tonemap", "all-effects", "render-scale", "auto-scale",
 // "vsync"). Throws penumbra::Error naming the setting on a bad name or value.
-SettingEffect applySetting(ViewerSettings& settings, const std::string& name, const std::string& value);
+SettingEffect applySetting(ViewerSettings& settings, const std::string& name,
+                           const std::string& value);
 
 // The render resolution for a framebuffer of this size at this scale (>= 1x1).
 struct RenderSize {

@@ -68,7 +68,8 @@ void Viewer::drawCameraMenu() {
   const scene::Camera& c = camera_->camera();
   ImGui::Text("position %.3f %.3f %.3f", c.position.x, c.position.y, c.position.z);
   float speed = camera_->speed();
-  if (ImGui::DragFloat("speed (m/s)", &speed, 0.01f, 0.001f, 1000.0f, "%.3f", ImGuiSliderFlags_Logarithmic))
+  if (ImGui::DragFloat("speed (m/s)", &speed, 0.01f, 0.001f, 1000.0f, "%.3f",
+                       ImGuiSliderFlags_Logarithmic))
     camera_->setSpeed(speed);
   if (ImGui::Button("Reset to scene camera (Home)")) {
     camera_->reset();
@@ -79,7 +80,8 @@ void Viewer::drawCameraMenu() {
   ImGui::Separator();
   ImGui::InputText("##bookmark", bookmarkName_, sizeof(bookmarkName_));
   ImGui::SameLine();
-  if (ImGui::Button("Save bookmark")) bookmarks_.save(sceneName_, {bookmarkName_, camera_->camera()});
+  if (ImGui::Button("Save bookmark"))
+    bookmarks_.save(sceneName_, {bookmarkName_, camera_->camera()});
   for (const auto& b : bookmarks_.list(sceneName_)) {
     ImGui::PushID(b.name.c_str());
     if (ImGui::Button(b.name.c_str())) {
@@ -96,8 +98,9 @@ void Viewer::drawCameraMenu() {
 void Viewer::drawAlgorithmMenu() {
   auto& t = settings_.tracer;
   bool reset = false;
-  reset |= enumCombo("integrator", t.integrator, {render::Integrator::Path, render::Integrator::Whitted},
-                     &render::integratorName);
+  reset |=
+      enumCombo("integrator", t.integrator, {render::Integrator::Path, render::Integrator::Whitted},
+                &render::integratorName);
   int spp = int(settings_.samplesPerFrame);
   if (ImGui::SliderInt("spp per frame", &spp, 1, int(render::PathTracer::kMaxSamplesPerFrame))) {
     settings_.samplesPerFrame = uint32_t(spp);
@@ -113,7 +116,8 @@ void Viewer::drawAlgorithmMenu() {
     reset |= enumCombo("strategy", t.strategy, {S::Uniform, S::Cosine, S::Bsdf, S::Nee, S::Mis},
                        &render::strategyName);
     reset |= enumCombo("MIS heuristic", t.misHeuristic,
-                       {render::MisHeuristic::Power, render::MisHeuristic::Balance}, &render::misHeuristicName);
+                       {render::MisHeuristic::Power, render::MisHeuristic::Balance},
+                       &render::misHeuristicName);
     reset |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
     reset |= ImGui::DragFloat("clamp (0 = off)", &t.radianceClamp, 0.1f, 0.0f, 1e4f);
   }
@@ -129,7 +133,8 @@ void Viewer::drawAlgorithmMenu() {
   enumCombo("tone mapping", settings_.toneMapping.toneOperator, render::allToneMapOperators(),
             &render::toneMapOperatorName);
   if (ImGui::Checkbox("vsync", &settings_.vsync)) applyEffect(SettingEffect::None);
-  if (ImGui::Checkbox("auto render scale", &settings_.autoRenderScale)) applyEffect(SettingEffect::None);
+  if (ImGui::Checkbox("auto render scale", &settings_.autoRenderScale))
+    applyEffect(SettingEffect::None);
   ImGui::BeginDisabled(settings_.autoRenderScale);
   float scale = scale_.scale();
   if (ImGui::SliderFloat("render scale", &scale, RenderScaleController::kMinScale,
@@ -146,11 +151,13 @@ void Viewer::drawAlgorithmMenu() {
   for (const auto& name : render::effectNames(tracer_->pipelineEffects()))
     effects += (effects.empty() ? "" : ", ") + name;
   ImGui::TextWrapped("pipeline effects: %s", effects.empty() ? "none" : effects.c_str());
-  if (ImGui::Checkbox("all effects", &settings_.allEffects)) applyEffect(SettingEffect::RebuildRenderer);
+  if (ImGui::Checkbox("all effects", &settings_.allEffects))
+    applyEffect(SettingEffect::RebuildRenderer);
 }
 
 void Viewer::materialsChanged() {
-  if (tracer_->updateMaterials(scene_.materials)) statusLine_ = "pipeline rebuilt for the new effects";
+  if (tracer_->updateMaterials(scene_.materials))
+    statusLine_ = "pipeline rebuilt for the new effects";
 }
 
 void Viewer::drawMaterialMenu() {
@@ -159,7 +166,8 @@ void Viewer::drawMaterialMenu() {
   selectedMaterial_ = std::clamp(selectedMaterial_, 0, int(materials.size()) - 1);
   if (ImGui::BeginCombo("material", materials[size_t(selectedMaterial_)].name.c_str())) {
     for (int i = 0; i < int(materials.size()); ++i)
-      if (ImGui::Selectable(fmt::format("{}##{}", materials[size_t(i)].name, i).c_str(), i == selectedMaterial_))
+      if (ImGui::Selectable(fmt::format("{}##{}", materials[size_t(i)].name, i).c_str(),
+                            i == selectedMaterial_))
         selectedMaterial_ = i;
     ImGui::EndCombo();
   }
@@ -167,16 +175,22 @@ void Viewer::drawMaterialMenu() {
   bool changed = ImGui::ColorEdit3("base color", &m.baseColor.x);
   if (m.model == scene::MaterialModel::Phong) {
     changed |= ImGui::SliderFloat("ks", &m.ks, 0, 1);
-    changed |= ImGui::SliderFloat("exponent", &m.exponent, 1, 1000, "%.0f", ImGuiSliderFlags_Logarithmic);
+    changed |=
+        ImGui::SliderFloat("exponent", &m.exponent, 1, 1000, "%.0f", ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::SliderFloat("reflectivity", &m.reflectivity, 0, 1);
     changed |= ImGui::SliderFloat("transparency", &m.transparency, 0, 1);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
   } else {
-    for (auto [label, field] : {std::pair{"metallic", &m.metallic}, {"roughness", &m.roughness},
-                                {"anisotropic", &m.anisotropic}, {"specular", &m.specular},
-                                {"specular tint", &m.specularTint}, {"sheen", &m.sheen},
-                                {"sheen tint", &m.sheenTint}, {"clearcoat", &m.clearcoat},
-                                {"clearcoat gloss", &m.clearcoatGloss}, {"transmission", &m.specTrans},
+    for (auto [label, field] : {std::pair{"metallic", &m.metallic},
+                                {"roughness", &m.roughness},
+                                {"anisotropic", &m.anisotropic},
+                                {"specular", &m.specular},
+                                {"specular tint", &m.specularTint},
+                                {"sheen", &m.sheen},
+                                {"sheen tint", &m.sheenTint},
+                                {"clearcoat", &m.clearcoat},
+                                {"clearcoat gloss", &m.clearcoatGloss},
+                                {"transmission", &m.specTrans},
                                 {"subsurface", &m.subsurface}})
       changed |= ImGui::SliderFloat(label, field, 0, 1);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
@@ -203,8 +217,8 @@ void Viewer::drawMaterialMenu() {
     rowChanged |= ImGui::SliderFloat("row transmission", &specTrans, 0, 1);
     if (rowChanged) {
       vary_ = vary;
-      set_ = fmt::format("baseColor={},{},{},metallic={},roughness={},specTrans={}", color.x, color.y, color.z,
-                         metallic, roughness, specTrans);
+      set_ = fmt::format("baseColor={},{},{},metallic={},roughness={},specTrans={}", color.x,
+                         color.y, color.z, metallic, roughness, specTrans);
       scene::changeMaterialRow(scene_, vary_, set_);
       materialsChanged();
     }
@@ -213,20 +227,25 @@ void Viewer::drawMaterialMenu() {
 
 void Viewer::drawStats() {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 8, viewport->WorkPos.y + 8),
-                          ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowPos(
+      ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 8, viewport->WorkPos.y + 8),
+      ImGuiCond_Always, ImVec2(1, 0));
   ImGui::SetNextWindowBgAlpha(0.5f);
   ImGui::Begin("stats", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
   const auto& adapter = device_->adapter();
   ImGui::Text("%s (%s)", adapter.name.c_str(), device_->backendName());
-  ImGui::Text("render %ux%u (scale %.3f%s), window %ux%u", tracer_->width(), tracer_->height(), scale_.scale(),
-              scale_.automatic() ? " auto" : "", swapchain_->desc().width, swapchain_->desc().height);
+  ImGui::Text("render %ux%u (scale %.3f%s), window %ux%u", tracer_->width(), tracer_->height(),
+              scale_.scale(), scale_.automatic() ? " auto" : "", swapchain_->desc().width,
+              swapchain_->desc().height);
   ImGui::Text("accumulated %u spp", tracer_->accumulatedSamples());
-  ImGui::Text("GPU %.2f ms/frame, %.1f Mrays/s", lastStats_.gpuSeconds * 1e3,
-              lastStats_.gpuSeconds > 0 ? double(lastStats_.rays) / lastStats_.gpuSeconds * 1e-6 : 0.0);
-  ImGui::Text("frame %.1f ms (%.1f fps)", frameSeconds_ * 1e3, frameSeconds_ > 0 ? 1.0 / frameSeconds_ : 0.0);
+  ImGui::Text(
+      "GPU %.2f ms/frame, %.1f Mrays/s", lastStats_.gpuSeconds * 1e3,
+      lastStats_.gpuSeconds > 0 ? double(lastStats_.rays) / lastStats_.gpuSeconds * 1e-6 : 0.0);
+  ImGui::Text("frame %.1f ms (%.1f fps)", frameSeconds_ * 1e3,
+              frameSeconds_ > 0 ? 1.0 / frameSeconds_ : 0.0);
   ImGui::End();
 }
 

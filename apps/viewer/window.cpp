@@ -27,7 +27,9 @@ namespace {
 
 std::string gLastGlfwError;
 
-void onGlfwError(int, const char* description) { gLastGlfwError = description ? description : "?"; }
+void onGlfwError(int, const char* description) {
+  gLastGlfwError = description ? description : "?";
+}
 
 bool envSet(const char* name) {
   const char* value = std::getenv(name);
@@ -79,8 +81,12 @@ rhi::NativeWindow Window::nativeWindow() const {
   return native;
 }
 
-bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
-void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+bool Window::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
+void Window::requestClose() {
+  glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
 
 void Window::framebufferSize(uint32_t& width, uint32_t& height) const {
   int w = 0, h = 0;
@@ -89,6 +95,8 @@ void Window::framebufferSize(uint32_t& width, uint32_t& height) const {
   height = uint32_t(std::max(h, 0));
 }
 
-void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+void Window::setTitle(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
 
 }  // namespace penumbra::viewer

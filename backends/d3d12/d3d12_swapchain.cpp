@@ -18,8 +18,8 @@ D3D12Swapchain::D3D12Swapchain(D3D12Device& device, const rhi::SwapchainDesc& de
   ComPtr<IDXGIFactory5> factory5;
   if (SUCCEEDED(device_.factory()->QueryInterface(IID_PPV_ARGS(&factory5)))) {
     BOOL allowTearing = FALSE;
-    tearing_ = SUCCEEDED(factory5->CheckFeatureSupport(DXGI_FEATURE_PRESENT_ALLOW_TEARING, &allowTearing,
-                                                       sizeof(allowTearing))) &&
+    tearing_ = SUCCEEDED(factory5->CheckFeatureSupport(DXGI_FEATURE_PRESENT_ALLOW_TEARING,
+                                                       &allowTearing, sizeof(allowTearing))) &&
                allowTearing;
   }
 
@@ -81,7 +81,8 @@ rhi::ITexture* D3D12Swapchain::acquireNextImage() {
   RECT client{};
   // A minimised window has no client area to present to.
   if (GetClientRect(window_, &client) && (client.right == 0 || client.bottom == 0)) return nullptr;
-  if (uint32_t(client.right) != desc_.width || uint32_t(client.bottom) != desc_.height) return nullptr;
+  if (uint32_t(client.right) != desc_.width || uint32_t(client.bottom) != desc_.height)
+    return nullptr;
   device_.waitForFence(slotFence_[slot_]);
   imageIndex_ = swapchain_->GetCurrentBackBufferIndex();
   acquired_ = true;
@@ -92,7 +93,8 @@ bool D3D12Swapchain::present(rhi::ICommandList* commandList) {
   if (!acquired_) throw Error("d3d12: present without acquireNextImage");
   acquired_ = false;
   if (buffers_[imageIndex_]->state != rhi::ResourceState::Present)
-    throw Error("d3d12: present: the command list must leave the back buffer in ResourceState::Present");
+    throw Error(
+        "d3d12: present: the command list must leave the back buffer in ResourceState::Present");
   device_.submit(commandList);
   const UINT sync = desc_.vsync ? 1 : 0;
   const UINT flags = !desc_.vsync && tearing_ ? DXGI_PRESENT_ALLOW_TEARING : 0;

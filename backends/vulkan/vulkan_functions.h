@@ -6,7 +6,9 @@
 //
 // Every function is fetched with vkGetInstanceProcAddr, so device-level calls
 // go through the loader's trampolines and work for any number of devices.
+#ifndef VK_NO_PROTOTYPES
 #define VK_NO_PROTOTYPES
+#endif
 #include <vulkan/vulkan.h>
 
 #define PENUMBRA_VK_LOADER_FUNCTIONS(X) \

@@ -15,6 +15,7 @@
 #define WIN32_LEAN_AND_MEAN
 #endif
 #include <windows.h>
+// vulkan_win32.h uses HWND and HINSTANCE from windows.h.
 #include <vulkan/vulkan_win32.h>
 #else
 #include <X11/Xlib.h>
@@ -32,7 +33,8 @@ template <class Function>
 Function instanceFunction(VkInstance instance, const char* name) {
   auto function = reinterpret_cast<Function>(instanceProcAddr()(instance, name));
   if (!function)
-    throw Error(fmt::format("vulkan: the loader has no {} (its surface extension is not enabled)", name));
+    throw Error(
+        fmt::format("vulkan: the loader has no {} (its surface extension is not enabled)", name));
   return function;
 }
 
@@ -40,10 +42,14 @@ Function instanceFunction(VkInstance instance, const char* name) {
 
 std::vector<const char*> surfaceInstanceExtensions(rhi::WindowSystem system) {
   switch (system) {
-    case rhi::WindowSystem::None: return {};
-    case rhi::WindowSystem::Win32: return {"VK_KHR_surface", "VK_KHR_win32_surface"};
-    case rhi::WindowSystem::Xlib: return {"VK_KHR_surface", "VK_KHR_xlib_surface"};
-    case rhi::WindowSystem::Wayland: return {"VK_KHR_surface", "VK_KHR_wayland_surface"};
+    case rhi::WindowSystem::None:
+      return {};
+    case rhi::WindowSystem::Win32:
+      return {"VK_KHR_surface", "VK_KHR_win32_surface"};
+    case rhi::WindowSystem::Xlib:
+      return {"VK_KHR_surface", "VK_KHR_xlib_surface"};
+    case rhi::WindowSystem::Wayland:
+      return {"VK_KHR_surface", "VK_KHR_wayland_surface"};
   }
   return {};
 }
@@ -74,8 +80,8 @@ VulkanSurface::VulkanSurface(VkInstance instance, const rhi::NativeWindow& windo
       VkWaylandSurfaceCreateInfoKHR info{VK_STRUCTURE_TYPE_WAYLAND_SURFACE_CREATE_INFO_KHR};
       info.display = static_cast<wl_display*>(window.display);
       info.surface = static_cast<wl_surface*>(window.window);
-      result = instanceFunction<PFN_vkCreateWaylandSurfaceKHR>(instance, "vkCreateWaylandSurfaceKHR")(
-          instance, &info, nullptr, &surface_);
+      result = instanceFunction<PFN_vkCreateWaylandSurfaceKHR>(
+          instance, "vkCreateWaylandSurfaceKHR")(instance, &info, nullptr, &surface_);
       break;
     }
 #endif

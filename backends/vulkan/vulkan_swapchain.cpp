@@ -49,7 +49,8 @@ VulkanSwapchain::~VulkanSwapchain() {
 VkPresentModeKHR VulkanSwapchain::choosePresentMode() const {
   if (desc_.vsync) return VK_PRESENT_MODE_FIFO_KHR;  // always available
   uint32_t count = 0;
-  vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physicalDevice(), surface_->handle(), &count, nullptr);
+  vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physicalDevice(), surface_->handle(), &count,
+                                            nullptr);
   std::vector<VkPresentModeKHR> modes(count);
   vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physicalDevice(), surface_->handle(), &count,
                                             modes.data());
@@ -85,17 +86,20 @@ void VulkanSwapchain::create() {
   vkFormat_ = VK_FORMAT_UNDEFINED;
   for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
     for (const auto& f : formats)
-      if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) vkFormat_ = wanted;
+      if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
+        vkFormat_ = wanted;
     if (vkFormat_ != VK_FORMAT_UNDEFINED) break;
   }
   if (vkFormat_ == VK_FORMAT_UNDEFINED)
     throw Error("vulkan: the window offers neither B8G8R8A8_UNORM nor R8G8B8A8_UNORM");
-  format_ = vkFormat_ == VK_FORMAT_B8G8R8A8_UNORM ? rhi::Format::BGRA8_UNORM : rhi::Format::RGBA8_UNORM;
+  format_ =
+      vkFormat_ == VK_FORMAT_B8G8R8A8_UNORM ? rhi::Format::BGRA8_UNORM : rhi::Format::RGBA8_UNORM;
 
   VkExtent2D extent = caps.currentExtent;
   if (extent.width == UINT32_MAX) {  // the window takes the swapchain's size (Wayland)
     extent.width = std::clamp(desc_.width, caps.minImageExtent.width, caps.maxImageExtent.width);
-    extent.height = std::clamp(desc_.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+    extent.height =
+        std::clamp(desc_.height, caps.minImageExtent.height, caps.maxImageExtent.height);
   }
   desc_.width = extent.width;
   desc_.height = extent.height;
@@ -135,7 +139,8 @@ void VulkanSwapchain::create() {
 
   check(vkGetSwapchainImagesKHR(dev, swapchain_, &count, nullptr), "vkGetSwapchainImagesKHR");
   std::vector<VkImage> handles(count);
-  check(vkGetSwapchainImagesKHR(dev, swapchain_, &count, handles.data()), "vkGetSwapchainImagesKHR");
+  check(vkGetSwapchainImagesKHR(dev, swapchain_, &count, handles.data()),
+        "vkGetSwapchainImagesKHR");
   VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   for (uint32_t i = 0; i < count; ++i) {
     rhi::TextureDesc texture;
@@ -172,14 +177,16 @@ bool VulkanSwapchain::present(rhi::ICommandList* commandList) {
   if (!acquired_) throw Error("vulkan: present without acquireNextImage");
   acquired_ = false;
   if (images_[imageIndex_]->state != rhi::ResourceState::Present)
-    throw Error("vulkan: present: the command list must leave the back buffer in ResourceState::Present");
+    throw Error(
+        "vulkan: present: the command list must leave the back buffer in ResourceState::Present");
   VkSemaphore finished = renderFinished_[imageIndex_];
   device_.submit(commandList, imageAcquired_[slot_], finished);
   // An empty submission signals the slot's fence once everything before it
   // (this frame) has finished: frame pacing independent of the caller's lists.
   VkDevice dev = device_.handle();
   check(vkResetFences(dev, 1, &slotDone_[slot_]), "vkResetFences");
-  check(vkQueueSubmit(device_.queue(), 0, nullptr, slotDone_[slot_]), "vkQueueSubmit (frame fence)");
+  check(vkQueueSubmit(device_.queue(), 0, nullptr, slotDone_[slot_]),
+        "vkQueueSubmit (frame fence)");
 
   VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   info.waitSemaphoreCount = 1;

@@ -30,8 +30,8 @@ void DisplayPass::record(rhi::ICommandList& commandList, const rhi::TextureHandl
     uint32_t sourceWidth, sourceHeight, targetWidth, targetHeight;
     float exposure;
     uint32_t toneOperator;
-  } push{hdr->desc().width,   hdr->desc().height, target->desc().width, target->desc().height,
-         toneMapping.exposure, uint32_t(toneMapping.toneOperator)};
+  } push{hdr->desc().width,     hdr->desc().height,   target->desc().width,
+         target->desc().height, toneMapping.exposure, uint32_t(toneMapping.toneOperator)};
   commandList.setComputeState({pipeline_.get(), {bindings_.get()}});
   commandList.setPushConstants(&push, sizeof(push));
   commandList.dispatch((push.targetWidth + 7) / 8, (push.targetHeight + 7) / 8);

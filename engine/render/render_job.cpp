@@ -13,14 +13,17 @@ namespace {
 
 using nlohmann::json;
 
-json toJson(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
+json toJson(glm::vec3 v) {
+  return json::array({v.x, v.y, v.z});
+}
 
 template <class Enum>
 struct Named {
   Enum value;
   const char* name;
 };
-constexpr Named<Integrator> kIntegrators[] = {{Integrator::Path, "path"}, {Integrator::Whitted, "whitted"}};
+constexpr Named<Integrator> kIntegrators[] = {{Integrator::Path, "path"},
+                                              {Integrator::Whitted, "whitted"}};
 constexpr Named<SamplingStrategy> kStrategies[] = {{SamplingStrategy::Uniform, "uniform"},
                                                    {SamplingStrategy::Cosine, "cosine"},
                                                    {SamplingStrategy::Bsdf, "bsdf"},
@@ -82,12 +85,24 @@ class Reader {
 
 }  // namespace
 
-const char* integratorName(Integrator integrator) { return nameOf(kIntegrators, integrator); }
-const char* strategyName(SamplingStrategy strategy) { return nameOf(kStrategies, strategy); }
-const char* misHeuristicName(MisHeuristic heuristic) { return nameOf(kHeuristics, heuristic); }
-std::optional<Integrator> parseIntegrator(std::string_view name) { return parseName(kIntegrators, name); }
-std::optional<SamplingStrategy> parseStrategy(std::string_view name) { return parseName(kStrategies, name); }
-std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) { return parseName(kHeuristics, name); }
+const char* integratorName(Integrator integrator) {
+  return nameOf(kIntegrators, integrator);
+}
+const char* strategyName(SamplingStrategy strategy) {
+  return nameOf(kStrategies, strategy);
+}
+const char* misHeuristicName(MisHeuristic heuristic) {
+  return nameOf(kHeuristics, heuristic);
+}
+std::optional<Integrator> parseIntegrator(std::string_view name) {
+  return parseName(kIntegrators, name);
+}
+std::optional<SamplingStrategy> parseStrategy(std::string_view name) {
+  return parseName(kStrategies, name);
+}
+std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
+  return parseName(kHeuristics, name);
+}
 
 std::string renderJobToJson(const RenderJob& job) {
   json doc;
@@ -130,8 +145,8 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
     throw Error(fmt::format("{}: not valid JSON ({})", source, e.what()));
   }
   if (!doc.is_object() || doc.value("format", "") != "penumbra-render")
-    throw Error(fmt::format("{}: not a penumbra render settings file (\"format\": \"penumbra-render\")",
-                            source));
+    throw Error(fmt::format(
+        "{}: not a penumbra render settings file (\"format\": \"penumbra-render\")", source));
   if (doc.value("version", 0) != 1)
     throw Error(fmt::format("{}: unsupported version (this build reads version 1)", source));
   Reader r(doc, source);
@@ -149,7 +164,8 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
     camera.forward = r.vec3(c["forward"], "camera.forward");
     camera.up = r.vec3(c["up"], "camera.up");
     if (c.contains("verticalFovDegrees")) {
-      if (!c["verticalFovDegrees"].is_number()) r.fail("camera.verticalFovDegrees", "must be a number");
+      if (!c["verticalFovDegrees"].is_number())
+        r.fail("camera.verticalFovDegrees", "must be a number");
       camera.verticalFovDegrees = c["verticalFovDegrees"].get<float>();
     }
     job.camera = camera;

@@ -23,8 +23,8 @@
 namespace penumbra::render {
 
 struct RenderJob {
-  std::string scene = "cornell-box";  // built-in name or scene file path
-  std::string vary, set;              // material-test row (scene::changeMaterialRow)
+  std::string scene = "cornell-box";    // built-in name or scene file path
+  std::string vary, set;                // material-test row (scene::changeMaterialRow)
   std::optional<scene::Camera> camera;  // absent: the scene's camera
   uint32_t width = 512, height = 512;
   uint32_t spp = 64;

@@ -4,9 +4,12 @@ namespace penumbra::render {
 
 const char* toneMapOperatorName(ToneMapOperator op) {
   switch (op) {
-    case ToneMapOperator::Clamp: return "clamp";
-    case ToneMapOperator::Reinhard: return "reinhard";
-    case ToneMapOperator::AcesFitted: return "aces";
+    case ToneMapOperator::Clamp:
+      return "clamp";
+    case ToneMapOperator::Reinhard:
+      return "reinhard";
+    case ToneMapOperator::AcesFitted:
+      return "aces";
   }
   return "?";
 }
@@ -18,8 +21,8 @@ std::optional<ToneMapOperator> parseToneMapOperator(std::string_view name) {
 }
 
 const std::vector<ToneMapOperator>& allToneMapOperators() {
-  static const std::vector<ToneMapOperator> all = {ToneMapOperator::Clamp, ToneMapOperator::Reinhard,
-                                                   ToneMapOperator::AcesFitted};
+  static const std::vector<ToneMapOperator> all = {
+      ToneMapOperator::Clamp, ToneMapOperator::Reinhard, ToneMapOperator::AcesFitted};
   return all;
 }
 

@@ -42,7 +42,8 @@ TEST_CASE("path tracer: setCamera renders what a scene with that camera renders"
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("path tracer: updateMaterials matches a new tracer and rebuilds for new effects", "[render][gpu]") {
+TEST_CASE("path tracer: updateMaterials matches a new tracer and rebuilds for new effects",
+          "[render][gpu]") {
   auto device = test::makeTestDevice();
   auto scene = scene::loadScene("cornell-box");
   render::PathTracer tracer(*device, scene, kSize, kSize);

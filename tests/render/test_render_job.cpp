@@ -1,6 +1,7 @@
 // The render settings record (engine/render/render_job.h) that viewer
 // screenshots leave and `penumbra render --settings` reads.
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 
 #include "render/render_job.h"
 #include "util/error.h"
@@ -61,16 +62,18 @@ TEST_CASE("render job: floats survive the round trip bit for bit", "[render]") {
 }
 
 TEST_CASE("render job: malformed records name the file and the field", "[render]") {
-  REQUIRE_THROWS_WITH(render::renderJobFromJson(R"({"format":"penumbra-scene","version":1})", "a.json"),
-                      "a.json: not a penumbra render settings file (\"format\": \"penumbra-render\")");
   REQUIRE_THROWS_WITH(
-      render::renderJobFromJson(R"({"format":"penumbra-render","version":1,"strategy":"best"})", "b.json"),
+      render::renderJobFromJson(R"({"format":"penumbra-scene","version":1})", "a.json"),
+      "a.json: not a penumbra render settings file (\"format\": \"penumbra-render\")");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(R"({"format":"penumbra-render","version":1,"strategy":"best"})",
+                                "b.json"),
       "b.json: \"strategy\" 'best' is not a known value");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(
+                          R"({"format":"penumbra-render","version":1,"sppPerFrame":32})", "c.json"),
+                      "c.json: \"sppPerFrame\" must be 1..16");
   REQUIRE_THROWS_WITH(
-      render::renderJobFromJson(R"({"format":"penumbra-render","version":1,"sppPerFrame":32})", "c.json"),
-      "c.json: \"sppPerFrame\" must be 1..16");
-  REQUIRE_THROWS_WITH(
-      render::renderJobFromJson(R"({"format":"penumbra-render","version":1,"camera":{"position":[1,2]}})",
-                                "d.json"),
+      render::renderJobFromJson(
+          R"({"format":"penumbra-render","version":1,"camera":{"position":[1,2]}})", "d.json"),
       "d.json: \"camera.forward\" is missing");
 }

@@ -1,7 +1,9 @@
 // The tone curves of PNG output and the viewer's display (shaders/shared/tonemap.hlsli)
 // against their published formulas, evaluated here on the CPU.
 #include <catch2/catch_test_macros.hpp>
+#include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 
 #include "render/display_pass.h"
 #include "render/tonemapper.h"
@@ -19,12 +21,15 @@ double srgb(double x) {
 // Stephen Hill's ACES fit (BakingLab ACES.hlsl): input matrix, RRT+ODT
 // rational fit, output matrix.
 glm::dvec3 acesFitted(glm::dvec3 c) {
-  const double in[3][3] = {{0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
+  const double in[3][3] = {
+      {0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
   const double out[3][3] = {
       {1.60475, -0.53108, -0.07367}, {-0.10208, 1.10813, -0.00605}, {-0.00327, -0.07276, 1.07602}};
   glm::dvec3 v, r;
   for (int i = 0; i < 3; ++i) v[i] = in[i][0] * c.x + in[i][1] * c.y + in[i][2] * c.z;
-  for (int i = 0; i < 3; ++i) v[i] = (v[i] * (v[i] + 0.0245786) - 0.000090537) / (v[i] * (0.983729 * v[i] + 0.4329510) + 0.238081);
+  for (int i = 0; i < 3; ++i)
+    v[i] = (v[i] * (v[i] + 0.0245786) - 0.000090537) /
+           (v[i] * (0.983729 * v[i] + 0.4329510) + 0.238081);
   for (int i = 0; i < 3; ++i) r[i] = out[i][0] * v.x + out[i][1] * v.y + out[i][2] * v.z;
   return r;
 }
@@ -45,7 +50,9 @@ rhi::TextureHandle uniformHdr(rhi::IDevice& device, glm::vec3 value) {
   return texture;
 }
 
-int byte(double display) { return int(display * 255.0 + 0.5); }
+int byte(double display) {
+  return int(display * 255.0 + 0.5);
+}
 
 }  // namespace
 
@@ -77,7 +84,8 @@ TEST_CASE("tone mapping: clamp, Reinhard and ACES follow their formulas", "[rend
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("display pass: fills a target of another size with the tone-mapped image", "[render][gpu]") {
+TEST_CASE("display pass: fills a target of another size with the tone-mapped image",
+          "[render][gpu]") {
   auto device = test::makeTestDevice();
   // An 8x8 source shown at 6x3 (an uneven downscale): every target texel written.
   render::DisplayPass pass(*device);

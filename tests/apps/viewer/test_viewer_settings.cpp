@@ -1,6 +1,7 @@
 // The mapping from the viewer's settings (menus, scripts) to what the renderer
 // gets, and the record a screenshot leaves (apps/viewer/viewer_settings.h).
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 
 #include "render_scale.h"
 #include "script.h"
@@ -61,7 +62,8 @@ TEST_CASE("viewer settings: the screenshot record reproduces the frames rendered
   s.toneMapping.exposure = 2.0f;
   scene::Camera camera;
   camera.position = {0.1f, 0.2f, 0.3f};
-  const auto job = viewer::makeRenderJob(s, "material-test", "metallic", "roughness=0.3", camera, {160, 90}, 32);
+  const auto job =
+      viewer::makeRenderJob(s, "material-test", "metallic", "roughness=0.3", camera, {160, 90}, 32);
   CHECK(job.scene == "material-test");
   CHECK(job.vary == "metallic");
   CHECK(job.set == "roughness=0.3");
@@ -87,7 +89,8 @@ TEST_CASE("render scale: a slow device gets fewer pixels, a fast one goes back u
   viewer::RenderScaleController scale(1.0f, true, 1.0 / 30.0);
   // Frames four times too slow: time ~ pixels ~ scale^2, so the scale halves.
   bool changed = false;
-  for (int i = 0; i < viewer::RenderScaleController::kSettleFrames; ++i) changed = scale.update(4.0 / 30.0);
+  for (int i = 0; i < viewer::RenderScaleController::kSettleFrames; ++i)
+    changed = scale.update(4.0 / 30.0);
   REQUIRE(changed);
   CHECK(scale.scale() == 0.5f);
   // On target: stays put (each change restarts the accumulation).
@@ -121,7 +124,9 @@ TEST_CASE("viewer script: commands parse with their arguments, errors name the l
   CHECK(script[2].numbers[0] == 8.0f);
   CHECK(script[3].args[0] == "out.exr");
   CHECK(script[4].kind == Kind::Quit);
-  REQUIRE_THROWS_WITH(viewer::parseScript("move 1 2\n", "s"), "s:1: 'move' takes 3 argument(s), got 2");
+  REQUIRE_THROWS_WITH(viewer::parseScript("move 1 2\n", "s"),
+                      "s:1: 'move' takes 3 argument(s), got 2");
   REQUIRE_THROWS_WITH(viewer::parseScript("\nfly 1\n", "s"), "s:2: unknown command 'fly'");
-  REQUIRE_THROWS_WITH(viewer::parseScript("wait-frames 1.5\n", "s"), "s:1: 'wait-frames' needs a whole number >= 0");
+  REQUIRE_THROWS_WITH(viewer::parseScript("wait-frames 1.5\n", "s"),
+                      "s:1: 'wait-frames' needs a whole number >= 0");
 }
