@@ -33,6 +33,15 @@ void CameraController::move(glm::vec3 metres) {
   camera_.position += right() * metres.x + up * metres.y + forward * metres.z;
 }
 
+void CameraController::lookAt(glm::vec3 target) {
+  const glm::vec3 direction = target - camera_.position;
+  if (glm::length(direction) <= 0.0f) return;
+  const glm::vec3 forward = glm::normalize(direction);
+  // Straight along up the right vector (forward x up) would vanish.
+  if (glm::length(glm::cross(forward, glm::normalize(camera_.up))) < 1e-4f) return;
+  camera_.forward = forward;
+}
+
 void CameraController::turn(float yawDegrees, float pitchDegrees) {
   const glm::vec3 up = glm::normalize(camera_.up);
   glm::vec3 forward = glm::normalize(camera_.forward);

@@ -30,6 +30,8 @@ class CameraController {
   void move(glm::vec3 metres);
   // Turns right by `yawDegrees` and up by `pitchDegrees` (elevation clamped).
   void turn(float yawDegrees, float pitchDegrees);
+  // Turns to face `target` (focus on a picked point); position and up stay.
+  void lookAt(glm::vec3 target);
   void reset() { camera_ = home_; }
   void setCamera(const scene::Camera& camera) { camera_ = camera; }
   void setHome(const scene::Camera& home) { home_ = camera_ = home; }

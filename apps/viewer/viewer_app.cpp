@@ -10,6 +10,7 @@
 #include "backend_factory.h"
 #include "backends/imgui_impl_glfw.h"
 #include "image/image_io.h"
+#include "picking.h"
 #include "render/render_job.h"
 #include "render/tonemapper.h"
 #include "scene/material_row.h"
@@ -158,8 +159,28 @@ void Viewer::handleInput(float seconds) {
   if (!io.WantCaptureMouse) {
     if (io.MouseDown[0]) input.turn = {io.MouseDelta.x, io.MouseDelta.y};
     input.scrollSteps = io.MouseWheel;
+    if (ImGui::IsMouseDoubleClicked(0) && io.DisplaySize.x > 0 && io.DisplaySize.y > 0) {
+      const glm::vec2 pixel(io.MousePos.x / io.DisplaySize.x * float(tracer_->width()),
+                            io.MousePos.y / io.DisplaySize.y * float(tracer_->height()));
+      focusOn(pixel);
+    }
   }
   if (camera_->update(input, seconds)) tracer_->setCamera(camera_->camera());
+}
+
+void Viewer::focusOn(glm::vec2 renderPixel) {
+  const Ray ray = cameraRay(camera_->camera(), tracer_->width(), tracer_->height(), renderPixel);
+  const auto hit = pick(scene_, ray);
+  if (!hit) {
+    statusLine_ = "nothing under the cursor";
+    return;
+  }
+  camera_->lookAt(hit->position);
+  tracer_->setCamera(camera_->camera());
+  selectedMaterial_ = int(hit->material);
+  statusLine_ = fmt::format("focus: {} ({}), {:.3f} m away",
+                            scene_.meshes[scene_.instances[hit->instance].mesh].name,
+                            scene_.materials[hit->material].name, hit->distance);
 }
 
 bool Viewer::stepScript() {

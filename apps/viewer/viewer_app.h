@@ -49,6 +49,8 @@ class Viewer {
   void resizeRender();
   void applyEffect(SettingEffect effect);
   void handleInput(float seconds);
+  // Double-click: look at the surface under the cursor and select its material.
+  void focusOn(glm::vec2 renderPixel);
   bool stepScript();  // false once the script asked to quit
   void renderFrame();
   void drawUi();

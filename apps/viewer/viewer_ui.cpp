@@ -32,12 +32,12 @@ bool enumCombo(const char* label, T& value, const std::vector<T>& values, NameOf
 
 void Viewer::drawUi() {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("Penumbra");
   try {
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawSceneMenu();
     if (ImGui::CollapsingHeader("Camera")) drawCameraMenu();
-    if (ImGui::CollapsingHeader("Algorithm", ImGuiTreeNodeFlags_DefaultOpen)) drawAlgorithmMenu();
+    if (ImGui::CollapsingHeader("Algorithm")) drawAlgorithmMenu();
     if (ImGui::CollapsingHeader("Material")) drawMaterialMenu();
   } catch (const Error& e) {
     // A bad scene path or edit is reported in the window, not fatal.
@@ -76,7 +76,7 @@ void Viewer::drawCameraMenu() {
     tracer_->setCamera(camera_->camera());
   }
   ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel: speed");
-  ImGui::TextDisabled("Focus on click: needs PathTracer::traceProbeRays (not yet on main)");
+  ImGui::TextDisabled("double-click: look at that surface, select its material");
   ImGui::Separator();
   ImGui::InputText("##bookmark", bookmarkName_, sizeof(bookmarkName_));
   ImGui::SameLine();

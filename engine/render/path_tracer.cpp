@@ -116,7 +116,7 @@ void PathTracer::resize(uint32_t width, uint32_t height) {
   width_ = width;
   height_ = height;
   createAccumulation();
-  createBindings();
+  rebuildBindingSet();
   resetAccumulation();
 }
 
@@ -282,10 +282,10 @@ void PathTracer::createPipeline() {
   };
   pathTable_ = makeTable("path_trace.rgen");
   whittedTable_ = makeTable("whitted.rgen");
-  createBindings();
+  rebuildBindingSet();
 }
 
-void PathTracer::createBindings() {
+void PathTracer::rebuildBindingSet() {
 
   using Item = rhi::BindingSetItem;
   rhi::BindingSetDesc set;

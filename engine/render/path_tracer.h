@@ -101,7 +101,7 @@ class PathTracer {
   void uploadScene(const scene::Scene& scene);
   void createPipeline();
   void createAccumulation();
-  void createBindings();
+  void rebuildBindingSet();
 
   rhi::IDevice& device_;
   uint32_t width_, height_;

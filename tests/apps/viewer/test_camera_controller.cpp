@@ -83,3 +83,13 @@ TEST_CASE("camera controller: the wheel scales the speed by 1.25 per notch", "[v
   controller.update(scroll, 0.016f);
   CHECK(controller.speed() == Approx(1.0f));
 }
+
+TEST_CASE("camera controller: lookAt faces the target and keeps position and up", "[viewer]") {
+  viewer::CameraController controller(homeCamera(), 1.0f);
+  controller.lookAt({4.0f, 2.0f, 3.0f});  // 3 m along +x from (1, 2, 3)
+  CHECK(controller.camera().forward == glm::vec3(1, 0, 0));
+  CHECK(controller.camera().position == homeCamera().position);
+  // Straight up has no right vector: ignored.
+  controller.lookAt({1.0f, 10.0f, 3.0f});
+  CHECK(controller.camera().forward == glm::vec3(1, 0, 0));
+}
