@@ -25,6 +25,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
                                   {"reset-camera", Kind::ResetCamera, 0, 0},
                                   {"set", Kind::Set, 0, 2},
                                   {"scene", Kind::Scene, 0, 1},
+                                  {"window-size", Kind::WindowSize, 2, 0},
                                   {"screenshot", Kind::Screenshot, 0, 1},
                                   {"quit", Kind::Quit, 0, 0}};
   std::vector<ScriptCommand> commands;
@@ -60,7 +61,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
         fail(fmt::format("'{}' is not a number", args[i]));
       command.numbers.push_back(value);
     }
-    if ((shape->kind == Kind::WaitFrames || shape->kind == Kind::WaitSamples) &&
+    if ((shape->kind == Kind::WaitFrames || shape->kind == Kind::WaitSamples ||
+         shape->kind == Kind::WindowSize) &&
         (command.numbers[0] < 0 || command.numbers[0] != std::floor(command.numbers[0])))
       fail(fmt::format("'{}' needs a whole number >= 0", name));
     commands.push_back(std::move(command));

@@ -8,6 +8,7 @@
 //   reset-camera           back to the scene's camera
 //   set NAME VALUE         a setting, as in viewer_settings.h ("set spp-per-frame 4")
 //   scene NAME|PATH        load a built-in scene or a scene file
+//   window-size W H        resize the window (the swapchain follows)
 //   screenshot PATH        .exr (linear) or .png (as displayed), with PATH's .json beside it
 //   quit                   close the viewer (exit status 0)
 #include <string>
@@ -24,6 +25,7 @@ struct ScriptCommand {
     ResetCamera,
     Set,
     Scene,
+    WindowSize,
     Screenshot,
     Quit
   };

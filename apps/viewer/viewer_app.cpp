@@ -218,6 +218,9 @@ bool Viewer::stepScript() {
         case Kind::Scene:
           loadScene(c.args[0]);
           break;
+        case Kind::WindowSize:
+          glfwSetWindowSize(window_.handle(), int(c.numbers[0]), int(c.numbers[1]));
+          break;
         case Kind::Screenshot:
           takeScreenshot(c.args[0]);
           break;

@@ -29,6 +29,11 @@ wait-samples 16
 screenshot $work/shot.exr
 set tonemap aces
 screenshot $work/shot.png
+set render-scale 0.5
+window-size 120 80
+wait-frames 3
+wait-samples 4
+screenshot $work/resized.exr
 quit
 SCRIPT
 xvfb-run -a -s "-screen 0 640x480x24" "$viewer" --scene cornell-box --size 96x64 --render-scale 1 \
@@ -36,6 +41,8 @@ xvfb-run -a -s "-screen 0 640x480x24" "$viewer" --scene cornell-box --size 96x64
 grep -q "^device: .* X11 window$" "$work/log"
 grep -q "^screenshot: $work/shot.exr (96x64, 16 spp)" "$work/log"
 [ -s "$work/shot.exr" ] && [ -s "$work/shot.png" ]
+# Half the render scale of a 120x80 window (swapchain and image resized).
+grep -q "^screenshot: $work/resized.exr (60x40, [0-9]* spp)" "$work/log"
 grep -q '"spp": 16' "$work/shot.json"
 grep -q '"sppPerFrame": 4' "$work/shot.json"
 grep -q '"maxDepth": 6' "$work/shot.json"
