@@ -109,10 +109,16 @@ void Viewer::createTracer() {
   const RenderSize size = renderSize(std::max(w, 1u), std::max(h, 1u), scale_.scale());
   render::PipelineOptions pipeline;
   pipeline.allEffects = settings_.allEffects;
+  // Frames in flight still use the old tracer's resources.
+  device_->waitForIdle();
   tracer_.reset();
   tracer_ =
       std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height, pipeline);
   tracer_->setCamera(camera_->camera());
+  if (frameQueries_.empty())
+    for (size_t i = 0; i < frameLists_.size(); ++i)
+      frameQueries_.push_back(tracer_->createFrameQueries());
+  for (auto& queries : frameQueries_) queries.samples = 0;  // nothing of the new tracer's yet
 }
 
 void Viewer::resizeRender() {
@@ -280,17 +286,22 @@ void Viewer::renderFrame() {
     desc.debugName = "display";
     displayTexture_ = device_->createTexture(desc);
   }
-  if (maxSamples_ == 0 || tracer_->accumulatedSamples() < maxSamples_)
-    lastStats_ = tracer_->renderFrame(settings_.tracer, settings_.samplesPerFrame);
-
   rhi::ITexture* backBuffer = swapchain_->acquireNextImage();
   if (!backBuffer) {
     swapchain_->resize(w, h);
     ui_->swapchainResized();
     return;
   }
-  auto& list = *frameLists_[frameNumber_ % frameLists_.size()];
+  // One list per frame slot: open() waits for the slot's previous frame,
+  // whose statistics are then ready. Path tracing, display and UI go into
+  // the same list, so the CPU runs up to framesInFlight frames ahead.
+  const size_t slot = frameNumber_ % frameLists_.size();
+  auto& list = *frameLists_[slot];
   list.open();
+  if (frameQueries_[slot].samples > 0) lastStats_ = tracer_->frameStats(frameQueries_[slot]);
+  frameQueries_[slot].samples = 0;
+  if (maxSamples_ == 0 || tracer_->accumulatedSamples() < maxSamples_)
+    tracer_->recordFrame(list, settings_.tracer, settings_.samplesPerFrame, frameQueries_[slot]);
   display_->record(list, tracer_->accumulation(), displayTexture_, settings_.toneMapping);
   list.copyTexture(backBuffer, displayTexture_.get());
   list.setTextureState(backBuffer, rhi::ResourceState::RenderTarget);

@@ -69,6 +69,7 @@ class Viewer {
   std::unique_ptr<ImGuiVulkanRenderer> ui_;
   std::unique_ptr<render::DisplayPass> display_;
   std::vector<rhi::CommandListHandle> frameLists_;
+  std::vector<render::FrameQueries> frameQueries_;  // per frame slot
   rhi::TextureHandle displayTexture_;
   uint64_t frameNumber_ = 0;
 

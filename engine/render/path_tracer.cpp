@@ -77,7 +77,6 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   sceneEffects_ = deriveEffects(scene);
   pipelineEffects_ = options.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
   commandList_ = device_.createCommandList();
-  timer_ = device_.createTimerQuery();
 
   createAccumulation();
 
@@ -86,10 +85,7 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   counter.usage = rhi::BufferUsage::StorageBuffer;
   counter.debugName = "ray counter";
   rayCounter_ = device_.createBuffer(counter);
-  counter.memory = rhi::MemoryLocation::Readback;
-  counter.usage = rhi::BufferUsage::CopyDest;
-  counter.debugName = "ray counter readback";
-  rayCounterReadback_ = device_.createBuffer(counter);
+  ownFrame_ = createFrameQueries();
 
   uploadScene(scene);
   createPipeline();
@@ -354,6 +350,29 @@ uint32_t frameFlags(const PathTracerSettings& s) {
 }
 
 FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t samples) {
+  auto* cmd = commandList_.get();
+  cmd->open();
+  recordFrame(*cmd, settings, samples, ownFrame_);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  return frameStats(ownFrame_);
+}
+
+FrameQueries PathTracer::createFrameQueries() {
+  FrameQueries queries;
+  queries.timer = device_.createTimerQuery();
+  rhi::BufferDesc counter;
+  counter.byteSize = 4;
+  counter.memory = rhi::MemoryLocation::Readback;
+  counter.usage = rhi::BufferUsage::CopyDest;
+  counter.debugName = "ray counter readback";
+  queries.rays = device_.createBuffer(counter);
+  return queries;
+}
+
+void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& settings, uint32_t samples,
+                             FrameQueries& queries) {
   if (!(settings.radianceClamp >= 0.0f))
     throw Error("path tracer: the radiance clamp must be >= 0 (0 = off)");
   if (samples < 1 || samples > kMaxSamplesPerFrame)
@@ -372,25 +391,26 @@ FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t 
   c.lights = {emissiveTriangleCount_, pointLightCount_, 0, 0};
   c.shading = toFloat4(ambient_, settings.radianceClamp);
 
-  auto* cmd = commandList_.get();
-  cmd->open();
-  cmd->clearBufferUint(rayCounter_.get(), 0);
+  // One counter serves every frame: the queue runs the frames' clear,
+  // dispatch and copy in order, and each frame copies it to its own readback.
+  cmd.clearBufferUint(rayCounter_.get(), 0);
   auto* table = settings.integrator == Integrator::Whitted ? whittedTable_.get() : pathTable_.get();
-  cmd->setRayTracingState({pipeline_.get(), table, {bindings_.get()}});
-  cmd->setPushConstants(&c, sizeof(c));
-  cmd->beginTimerQuery(timer_.get());
-  cmd->dispatchRays(width_, height_);
-  cmd->endTimerQuery(timer_.get());
-  cmd->copyBuffer(rayCounterReadback_.get(), 0, rayCounter_.get(), 0, 4);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
-
+  cmd.setRayTracingState({pipeline_.get(), table, {bindings_.get()}});
+  cmd.setPushConstants(&c, sizeof(c));
+  cmd.beginTimerQuery(queries.timer.get());
+  cmd.dispatchRays(width_, height_);
+  cmd.endTimerQuery(queries.timer.get());
+  cmd.copyBuffer(queries.rays.get(), 0, rayCounter_.get(), 0, 4);
   accumulatedSamples_ += samples;
+  queries.samples = samples;
+}
+
+FrameStats PathTracer::frameStats(FrameQueries& queries) {
   FrameStats stats;
-  stats.gpuSeconds = device_.timerQuerySeconds(timer_.get());
-  std::memcpy(&stats.rays, rayCounterReadback_->mappedData(), 4);
-  stats.samples = samples;
+  if (queries.samples == 0) return stats;  // nothing recorded with them yet
+  stats.gpuSeconds = device_.timerQuerySeconds(queries.timer.get());
+  std::memcpy(&stats.rays, queries.rays->mappedData(), 4);
+  stats.samples = queries.samples;
   return stats;
 }
 

@@ -50,6 +50,14 @@ struct FrameStats {
   uint32_t samples = 0;   // samples per pixel in this frame
 };
 
+// Where a recorded frame's statistics land: one per frame in flight, read
+// once the GPU has finished that frame (PathTracer::recordFrame).
+struct FrameQueries {
+  rhi::TimerQueryHandle timer;
+  rhi::BufferHandle rays;  // readback of the ray counter
+  uint32_t samples = 0;
+};
+
 // FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);
 
@@ -68,6 +76,15 @@ class PathTracer {
 
   // Renders `samples` (1..16) more samples per pixel and waits for them.
   FrameStats renderFrame(const PathTracerSettings& settings, uint32_t samples);
+  // The same frame recorded into the caller's open command list, nothing
+  // submitted or waited for: the viewer renders, displays and presents in one
+  // list and keeps several frames in flight. `queries` must not be in flight.
+  void recordFrame(rhi::ICommandList& commandList, const PathTracerSettings& settings, uint32_t samples,
+                   FrameQueries& queries);
+  FrameQueries createFrameQueries();
+  // The statistics of the frame last recorded with `queries`; the GPU must
+  // have finished it (its command list's next open() waits for that).
+  FrameStats frameStats(FrameQueries& queries);
   // The next frame starts a new mean (camera or settings changed).
   void resetAccumulation() { accumulatedSamples_ = 0; }
   // Moves the camera (the scene's until then) and resets the accumulation.
@@ -118,12 +135,12 @@ class PathTracer {
   glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;
-  rhi::BufferHandle rayCounter_, rayCounterReadback_;
+  rhi::BufferHandle rayCounter_;
   rhi::RayTracingPipelineHandle pipeline_;
   rhi::ShaderTableHandle pathTable_, whittedTable_;
   rhi::BindingSetHandle bindings_;
   rhi::CommandListHandle commandList_;
-  rhi::TimerQueryHandle timer_;
+  FrameQueries ownFrame_;  // renderFrame's
 };
 
 // Renders `spp` samples per pixel in frames of up to 16 and returns the mean
