@@ -97,6 +97,7 @@ void Viewer::loadScene(const std::string& nameOrPath) {
   sceneName_ = nameOrPath;
   vary_ = scene_.materialRow ? scene_.materialRow->vary : "";
   set_.clear();
+  materialsEdited_ = false;
   selectedMaterial_ = 0;
   camera_ = std::make_unique<CameraController>(scene_.camera, speedForScene(scene_));
   std::snprintf(scenePath_, sizeof(scenePath_), "%s", nameOrPath.c_str());
@@ -257,6 +258,15 @@ void Viewer::takeScreenshot(const std::string& path) {
                                               size, tracer_->accumulatedSamples()));
   statusLine_ =
       fmt::format("saved {} and {} ({} spp)", path, record, tracer_->accumulatedSamples());
+  // The record holds the scene by name and the material-test row as
+  // --vary/--set; other material edits are not in it.
+  if (materialsEdited_) {
+    statusLine_ += "; material edits are not in the record";
+    log::warning(
+        "{}: material edits made in the viewer are not recorded; penumbra render "
+        "--settings renders the scene's own materials",
+        record);
+  }
   fmt::print("screenshot: {} ({}x{}, {} spp), settings {}\n", path, size.width, size.height,
              tracer_->accumulatedSamples(), record);
   std::fflush(stdout);

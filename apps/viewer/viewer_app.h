@@ -74,7 +74,8 @@ class Viewer {
   uint64_t frameNumber_ = 0;
 
   std::string sceneName_;
-  std::string vary_, set_;  // material-test row edits, as --vary/--set
+  std::string vary_, set_;        // material-test row edits, as --vary/--set
+  bool materialsEdited_ = false;  // by the Material menu, beyond vary_/set_
   scene::Scene scene_;
   std::unique_ptr<render::PathTracer> tracer_;
   ViewerSettings settings_;

@@ -196,7 +196,10 @@ void Viewer::drawMaterialMenu() {
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");
-  if (changed) materialsChanged();
+  if (changed) {
+    materialsEdited_ = true;
+    materialsChanged();
+  }
 
   if (scene_.materialRow) {
     ImGui::Separator();

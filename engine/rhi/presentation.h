@@ -44,9 +44,13 @@ struct SwapchainDesc {
 class ISwapchain {
  public:
   virtual ~ISwapchain() = default;
+  // The size is the back buffers' current one (after resize or what the
+  // window system chose). D3D12: DXGI_SWAP_CHAIN_DESC1. Vulkan: VkSwapchainCreateInfoKHR.
   virtual const SwapchainDesc& desc() const = 0;
   // RGBA8_UNORM or BGRA8_UNORM; values are written display-encoded (sRGB),
   // the swapchain does no encoding of its own.
+  // D3D12: always DXGI_FORMAT_R8G8B8A8_UNORM. Vulkan: B8G8R8A8_UNORM or
+  // R8G8B8A8_UNORM with SRGB_NONLINEAR, whichever the surface offers.
   virtual Format format() const = 0;
 
   // Waits for the frame slot to be free, then takes the next back buffer. The
@@ -68,6 +72,7 @@ class ISwapchain {
   // D3D12: Present sync interval 1, or 0 with ALLOW_TEARING where supported.
   // Vulkan: FIFO, or MAILBOX / IMMEDIATE where supported (recreates the swapchain).
   virtual void setVsync(bool vsync) = 0;
+  // D3D12: BufferCount. Vulkan: the count vkGetSwapchainImagesKHR returns.
   virtual uint32_t imageCount() const = 0;
 };
 using SwapchainHandle = std::shared_ptr<ISwapchain>;
