@@ -154,6 +154,10 @@ void Viewer::handleInput(float seconds) {
   const ImGuiIO& io = ImGui::GetIO();
   CameraInput input;
   GLFWwindow* w = window_.handle();
+  // F1 shows and hides the menus (on the key going down, not while held).
+  const bool f1 = glfwGetKey(w, GLFW_KEY_F1) == GLFW_PRESS;
+  if (f1 && !f1WasDown_) settings_.showUi = !settings_.showUi;
+  f1WasDown_ = f1;
   if (!io.WantCaptureKeyboard) {
     auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
     input.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
@@ -310,12 +314,12 @@ void Viewer::renderFrame() {
   list.open();
   if (frameQueries_[slot].samples > 0) lastStats_ = tracer_->frameStats(frameQueries_[slot]);
   frameQueries_[slot].samples = 0;
-  if (maxSamples_ == 0 || tracer_->accumulatedSamples() < maxSamples_)
+  if (settings_.maxSamples == 0 || tracer_->accumulatedSamples() < settings_.maxSamples)
     tracer_->recordFrame(list, settings_.tracer, settings_.samplesPerFrame, frameQueries_[slot]);
   display_->record(list, tracer_->accumulation(), displayTexture_, settings_.toneMapping);
   list.copyTexture(backBuffer, displayTexture_.get());
   list.setTextureState(backBuffer, rhi::ResourceState::RenderTarget);
-  ui_->render(list, *backBuffer);
+  if (settings_.showUi) ui_->render(list, *backBuffer);
   list.setTextureState(backBuffer, rhi::ResourceState::Present);
   list.close();
   if (!swapchain_->present(&list)) {

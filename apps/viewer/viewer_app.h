@@ -82,7 +82,6 @@ class Viewer {
   RenderScaleController scale_;
   std::unique_ptr<CameraController> camera_;
   BookmarkStore bookmarks_;
-  uint32_t maxSamples_ = 0;  // stop accumulating here; 0 = never stop
 
   // UI state.
   char scenePath_[512] = {};
@@ -92,8 +91,7 @@ class Viewer {
   render::FrameStats lastStats_;
   double frameSeconds_ = 0;
   std::chrono::steady_clock::time_point lastFrame_;
-  bool dragging_ = false;
-  double lastCursorX_ = 0, lastCursorY_ = 0;
+  bool f1WasDown_ = false;
 
   // Script state.
   std::vector<ScriptCommand> script_;

@@ -98,6 +98,9 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
   }
   if (name == "auto-scale") return assign(s.autoRenderScale, parseBool(name, value), E::None);
   if (name == "vsync") return assign(s.vsync, parseBool(name, value), E::None);
+  if (name == "max-samples")
+    return assign(s.maxSamples, parseUint(name, value, 0, 1u << 24), E::None);
+  if (name == "ui") return assign(s.showUi, parseBool(name, value), E::None);
   throw Error(fmt::format("unknown setting '{}'", name));
 }
 

@@ -18,6 +18,8 @@ struct ViewerSettings {
   float renderScale = 1.0f;
   bool autoRenderScale = true;
   bool vsync = true;
+  uint32_t maxSamples = 0;  // accumulation stops here; 0 = never
+  bool showUi = true;       // the menus and the stats overlay (F1)
 };
 
 // What a change calls for.
@@ -31,7 +33,7 @@ enum class SettingEffect {
 // Sets one setting by its script name ("spp-per-frame", "max-depth",
 // "integrator", "strategy", "mis-heuristic", "russian-roulette", "clamp",
 // "seed", "exposure", "tonemap", "all-effects", "render-scale", "auto-scale",
-// "vsync"). Throws penumbra::Error naming the setting on a bad name or value.
+// "vsync", "max-samples", "ui"). Throws penumbra::Error naming the setting on a bad name or value.
 SettingEffect applySetting(ViewerSettings& settings, const std::string& name,
                            const std::string& value);
 

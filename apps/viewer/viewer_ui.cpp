@@ -31,6 +31,7 @@ bool enumCombo(const char* label, T& value, const std::vector<T>& values, NameOf
 }  // namespace
 
 void Viewer::drawUi() {
+  if (!settings_.showUi) return;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("Penumbra");
@@ -143,8 +144,9 @@ void Viewer::drawAlgorithmMenu() {
     applyEffect(SettingEffect::Resize);
   }
   ImGui::EndDisabled();
-  int cap = int(maxSamples_);
-  if (ImGui::InputInt("stop at spp (0 = never)", &cap) && cap >= 0) maxSamples_ = uint32_t(cap);
+  int cap = int(settings_.maxSamples);
+  if (ImGui::InputInt("stop at spp (0 = never)", &cap) && cap >= 0)
+    settings_.maxSamples = uint32_t(cap);
 
   ImGui::Separator();
   std::string effects;

@@ -40,6 +40,10 @@ TEST_CASE("viewer settings: each script setting reaches the renderer's parameter
   CHECK(viewer::applySetting(s, "render-scale", "0.5") == SettingEffect::Resize);
   CHECK(s.renderScale == 0.5f);
   CHECK_FALSE(s.autoRenderScale);
+  CHECK(viewer::applySetting(s, "max-samples", "64") == SettingEffect::None);
+  CHECK(s.maxSamples == 64u);
+  CHECK(viewer::applySetting(s, "ui", "off") == SettingEffect::None);
+  CHECK_FALSE(s.showUi);
   // Setting a value it already has changes nothing.
   CHECK(viewer::applySetting(s, "seed", "7") == SettingEffect::None);
 }
