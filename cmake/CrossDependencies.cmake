@@ -1,6 +1,6 @@
 # Dependencies of the mingw-w64 cross build (cmake/toolchains/). Everything
 # the Windows binary needs is header-only except zlib, so:
-# - header-only libraries (glm, nlohmann-json, CLI11, fmt, stb, tinyexr, the
+# - header-only libraries (glm, nlohmann-json, CLI11, fmt, stb, tinygltf, tinyexr, the
 #   Vulkan headers, DirectX-Headers) come from the build machine's Debian
 #   packages through include directories that hold ONLY those libraries
 #   (symlinks under the build tree). Adding /usr/include itself would put
@@ -44,6 +44,9 @@ set_target_properties(fmt::fmt-header-only PROPERTIES INTERFACE_INCLUDE_DIRECTOR
 
 penumbra_cross_headers(${_farm}/stb stb)
 set(STB_INCLUDE_DIR ${_farm}/stb/stb)
+
+penumbra_cross_headers(${_farm}/tinygltf tiny_gltf.h)
+set(TINYGLTF_INCLUDE_DIR ${_farm}/tinygltf)
 
 penumbra_cross_headers(${_farm}/vulkan vulkan vk_video)
 set(Vulkan_INCLUDE_DIRS ${_farm}/vulkan)

@@ -22,6 +22,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene = "cornell-box";
+  std::string camera;
   std::string size = "512x512";
   uint32_t spp = 64;
   uint32_t sppPerFrame = 16;
@@ -83,6 +84,8 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   if (given("--exposure")) job.toneMapping.exposure = o.exposure;
   if (given("--tonemap")) job.toneMapping.toneOperator = o.toneOperator;
   if (given("--all-effects")) job.allEffects = o.allEffects;
+  // A scene camera named on the command line wins over the record's camera.
+  if (fromFile && cmd.count("--camera") > 0) job.camera.reset();
   return job;
 }
 
@@ -91,6 +94,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   const render::RenderJob job = makeJob(o, cmd);
   const uint32_t width = job.width, height = job.height;
   scene::Scene scene = scene::loadScene(job.scene);
+  if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
   if (!job.vary.empty() || !job.set.empty()) scene::changeMaterialRow(scene, job.vary, job.set);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
@@ -158,7 +162,12 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd = app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
-  cmd->add_option("--scene", o->scene, "Built-in scene name or scene file (.json)")->capture_default_str();
+  cmd->add_option("--scene", o->scene,
+                  "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)")
+      ->capture_default_str();
+  cmd->add_option("--camera", o->camera,
+                  "Render from the scene's camera of this name (glTF camera or node name; "
+                  "default: the first camera in node order)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 20))->capture_default_str();
   cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")

@@ -64,6 +64,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
 
 struct PathTracer::SceneBuffers {
   rhi::BufferHandle vertices, indices, instances, materials, emissive, pointLights;
+  rhi::BufferHandle normals, tangents, texcoords;
   std::vector<rhi::rt::AccelStructHandle> bottomLevels;
   rhi::rt::AccelStructHandle topLevel;
 };
@@ -121,10 +122,20 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   std::vector<gpu::float4> vertices;
   std::vector<uint32_t> indices;
   std::vector<uint32_t> firstVertex, firstIndex;
+  // Vertex attributes parallel to `vertices`; zero where a mesh has none,
+  // which the closest-hit shader reads as "none".
+  std::vector<gpu::float4> normals, tangents, texcoords;
   for (const auto& mesh : scene.meshes) {
     firstVertex.push_back(uint32_t(vertices.size()));
     firstIndex.push_back(uint32_t(indices.size()));
-    for (const auto& p : mesh.positions) vertices.push_back(toFloat4(p, 1.0f));
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+      vertices.push_back(toFloat4(mesh.positions[v], 1.0f));
+      normals.push_back(mesh.normals.empty() ? gpu::float4{} : toFloat4(mesh.normals[v]));
+      const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[v];
+      tangents.push_back({t.x, t.y, t.z, t.w});
+      texcoords.push_back(mesh.uv0.empty() ? gpu::float4{}
+                                           : gpu::float4{mesh.uv0[v].x, mesh.uv0[v].y, 0, 0});
+    }
     indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
 
@@ -149,12 +160,16 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
                            PT_NO_EMISSION};
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = uint32_t(emissive.size());
+      // A mirroring transform reverses the winding of the world-space corners;
+      // swapping two keeps the emitting side the mesh's front.
+      const bool mirrored = glm::determinant(glm::mat3(inst.transform)) < 0.0f;
       const double lum = 0.2126 * material.emission.x + 0.7152 * material.emission.y +
                          0.0722 * material.emission.z;
       for (size_t t = 0; t < mesh.indices.size(); t += 3) {
         glm::vec3 p[3];
         for (int k = 0; k < 3; ++k)
           p[k] = glm::vec3(inst.transform * glm::vec4(mesh.positions[mesh.indices[t + k]], 1.0f));
+        if (mirrored) std::swap(p[1], p[2]);
         const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
         gpu::EmissiveTriangle tri{toFloat4(p[0]), toFloat4(p[1], area), toFloat4(p[2]),
                                   toFloat4(material.emission)};
@@ -194,11 +209,17 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   s.materials = makeStorageBuffer(device_, materials, BufferUsage::None, "materials");
   s.emissive = makeStorageBuffer(device_, emissive, BufferUsage::None, "emissive triangles");
   s.pointLights = makeStorageBuffer(device_, pointLights, BufferUsage::None, "point lights");
+  s.normals = makeStorageBuffer(device_, normals, BufferUsage::None, "vertex normals");
+  s.tangents = makeStorageBuffer(device_, tangents, BufferUsage::None, "vertex tangents");
+  s.texcoords = makeStorageBuffer(device_, texcoords, BufferUsage::None, "vertex texcoords");
 
   auto* cmd = commandList_.get();
   cmd->open();
   cmd->writeBuffer(s.vertices.get(), vertices.data(), vertices.size() * sizeof(gpu::float4));
   cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
+  cmd->writeBuffer(s.normals.get(), normals.data(), normals.size() * sizeof(gpu::float4));
+  cmd->writeBuffer(s.tangents.get(), tangents.data(), tangents.size() * sizeof(gpu::float4));
+  cmd->writeBuffer(s.texcoords.get(), texcoords.data(), texcoords.size() * sizeof(gpu::float4));
   cmd->writeBuffer(s.instances.get(), instances.data(), instances.size() * sizeof(gpu::InstanceData));
   cmd->writeBuffer(s.materials.get(), materials.data(), materials.size() * sizeof(gpu::MaterialData));
   if (!emissive.empty())
@@ -260,7 +281,7 @@ void PathTracer::createPipeline() {
                   shaders::shaderDesc("path_trace.rmiss"), shaders::shaderDesc("shadow.rmiss"),
                   shaders::shaderDesc("triangle.rchit")};
   desc.hitGroups = {{"triangles", "triangle.rchit", "", "", false}};
-  desc.maxPayloadBytes = 36;  // SurfaceHit
+  desc.maxPayloadBytes = 68;  // SurfaceHit (surface_hit.hlsli)
   desc.maxRecursionDepth = 1; // only the ray generation shader traces
   const auto start = std::chrono::steady_clock::now();
   pipeline_ = device_.createRayTracingPipeline(desc);
@@ -293,6 +314,9 @@ void PathTracer::rebuildBindingSet() {
                Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
                Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
                Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
+               Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
+               Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
+               Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
                Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
                Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
   bindings_ = device_.createBindingSet(set, *pipeline_);

@@ -45,6 +45,37 @@ Mesh makeIcosphere(uint32_t subdivisions, float radius, bool inwardFacing, uint3
   return mesh;
 }
 
+Mesh makeQuad(glm::vec3 origin, glm::vec3 edgeU, glm::vec3 edgeV, uint32_t material) {
+  Mesh mesh;
+  mesh.name = "quad";
+  mesh.material = material;
+  mesh.positions = {origin, origin + edgeU, origin + edgeU + edgeV, origin + edgeV};
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  return mesh;
+}
+
+Mesh makeBox(glm::vec3 minCorner, glm::vec3 maxCorner, bool inwardFacing, uint32_t material) {
+  Mesh mesh;
+  mesh.name = "box";
+  mesh.material = material;
+  // Corner i takes maxCorner's x, y, z where bit 0, 1, 2 of i is set (exact
+  // coordinates, no minCorner + size rounding).
+  for (uint32_t i = 0; i < 8; ++i)
+    mesh.positions.push_back({(i & 1) ? maxCorner.x : minCorner.x,
+                              (i & 2) ? maxCorner.y : minCorner.y,
+                              (i & 4) ? maxCorner.z : minCorner.z});
+  // Faces -x, +x, -y, +y, -z, +z, each counter-clockwise seen from outside.
+  const uint32_t faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& f : faces) {
+    if (inwardFacing)
+      mesh.indices.insert(mesh.indices.end(), {f[0], f[2], f[1], f[0], f[3], f[2]});
+    else
+      mesh.indices.insert(mesh.indices.end(), {f[0], f[1], f[2], f[0], f[2], f[3]});
+  }
+  return mesh;
+}
+
 Scene makeFurnaceScene(float albedo, float emission, uint32_t subdivisions) {
   Scene scene;
   scene.name = "furnace";

@@ -44,6 +44,21 @@ void validate(const Scene& scene) {
     for (const auto& p : mesh.positions)
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         fail(fmt::format("mesh '{}' has a non-finite vertex position", mesh.name));
+    auto checkAttribute = [&](size_t count, bool finite, const char* what) {
+      if (count != 0 && count != mesh.positions.size())
+        fail(fmt::format("mesh '{}' has {} {} for {} vertices", mesh.name, count, what,
+                         mesh.positions.size()));
+      if (!finite) fail(fmt::format("mesh '{}' has non-finite {}", mesh.name, what));
+    };
+    auto finite = [](const auto& values) {
+      for (const auto& v : values)
+        for (int i = 0; i < v.length(); ++i)
+          if (!std::isfinite(v[i])) return false;
+      return true;
+    };
+    checkAttribute(mesh.normals.size(), finite(mesh.normals), "normals");
+    checkAttribute(mesh.tangents.size(), finite(mesh.tangents), "tangents");
+    checkAttribute(mesh.uv0.size(), finite(mesh.uv0), "texture coordinates");
   }
   for (const auto& m : scene.materials) {
     auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
@@ -67,6 +82,20 @@ void validate(const Scene& scene) {
     fail(fmt::format("camera vertical field of view {} is not in (0, 180)", c.verticalFovDegrees));
   if (glm::length(c.forward) == 0.0f || glm::length(glm::cross(c.forward, c.up)) == 0.0f)
     fail("camera forward and up must be non-zero and not parallel");
+}
+
+void selectCamera(Scene& scene, const std::string& name) {
+  std::string names;
+  for (const auto& c : scene.cameras) {
+    if (c.name == name || (!c.nodeName.empty() && c.nodeName == name)) {
+      scene.camera = c.camera;
+      return;
+    }
+    names +=
+        (names.empty() ? "" : ", ") + fmt::format("'{}'", c.name.empty() ? c.nodeName : c.name);
+  }
+  throw Error(fmt::format("scene '{}': no camera named '{}' ({})", scene.name, name,
+                          names.empty() ? "the scene names no cameras" : "cameras: " + names));
 }
 
 }  // namespace penumbra::scene

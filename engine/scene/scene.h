@@ -60,6 +60,11 @@ struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<uint32_t> indices;  // triangle list, counter-clockwise = front
   uint32_t material = 0;
+  // Optional per-vertex attributes: each is empty or has one entry per
+  // position. Without normals the renderer shades with the geometric normal.
+  std::vector<glm::vec3> normals;   // unit, object space
+  std::vector<glm::vec4> tangents;  // xyz unit, w = +-1: bitangent = cross(normal, xyz) * w
+  std::vector<glm::vec2> uv0;       // glTF convention: (0, 0) is the image's top-left corner
   uint32_t triangleCount() const { return uint32_t(indices.size() / 3); }
 };
 
@@ -83,17 +88,29 @@ struct MaterialRow {
   std::vector<uint32_t> materials;  // one per sphere, first to last
 };
 
+// A camera a scene file names (glTF cameras), selectable by name.
+struct NamedCamera {
+  std::string name;      // the camera's own name
+  std::string nodeName;  // the name of the node that places it (glTF), may be empty
+  Camera camera;
+};
+
 struct Scene {
   std::string name;
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<PointLight> pointLights;
-  glm::vec3 ambient{0.0f};  // Whitted's ambient term
-  Camera camera;
+  glm::vec3 ambient{0.0f};           // Whitted's ambient term
+  Camera camera;                     // the view rendered
+  std::vector<NamedCamera> cameras;  // alternatives for selectCamera
   std::optional<MaterialRow> materialRow;
   uint64_t triangleCount() const;
 };
+
+// Makes the camera named `name` (its own name or its node's) the scene's view;
+// throws penumbra::Error listing the names there are.
+void selectCamera(Scene& scene, const std::string& name);
 
 // Checks indices, materials and instances refer to things that exist and that
 // positions are finite; throws penumbra::Error naming the scene and the part.

@@ -3,12 +3,17 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "scene/material_row.h"
+#include "scene/gltf_loader.h"
 #include "util/embedded_files.h"
 #include "util/error.h"
 
@@ -94,9 +99,88 @@ MaterialRowDesc parseMaterialRow(const json& row, const Scene& scene,
   return desc;
 }
 
+glm::mat4 readTransform(const json& g, const std::string& where) {
+  if (g.contains("transform")) {
+    const json& m = g.at("transform");
+    if (!m.is_array() || m.size() != 16)
+      throw Error(where + ": \"transform\" must be an array of 16 numbers (column-major)");
+    glm::mat4 t;
+    for (int i = 0; i < 16; ++i) {
+      if (!m[size_t(i)].is_number()) throw Error(where + ": \"transform\" holds a non-number");
+      glm::value_ptr(t)[i] = m[size_t(i)].get<float>();
+    }
+    return t;
+  }
+  glm::mat4 t(1.0f);
+  if (g.contains("translation"))
+    t = glm::translate(t, readVec3(g.at("translation"), where + " translation"));
+  if (g.contains("rotation")) {
+    const json& r = g.at("rotation");
+    if (!r.is_array() || r.size() != 4 || !r[0].is_number() || !r[1].is_number() ||
+        !r[2].is_number() || !r[3].is_number())
+      throw Error(where + ": \"rotation\" must be a quaternion [x, y, z, w]");
+    const glm::quat q(r[3].get<float>(), r[0].get<float>(), r[1].get<float>(), r[2].get<float>());
+    if (!(glm::length(q) > 0.0f)) throw Error(where + ": \"rotation\" is a zero quaternion");
+    t = t * glm::mat4_cast(glm::normalize(q));
+  }
+  if (g.contains("scale")) t = glm::scale(t, readVec3(g.at("scale"), where + " scale"));
+  return t;
+}
+
+Camera transformCamera(const Camera& c, const glm::mat4& t) {
+  Camera r = c;
+  r.position = glm::vec3(t * glm::vec4(c.position, 1.0f));
+  r.forward = glm::normalize(glm::vec3(t * glm::vec4(c.forward, 0.0f)));
+  r.up = glm::normalize(glm::vec3(t * glm::vec4(c.up, 0.0f)));
+  return r;
+}
+
+// Appends `part` to `scene`, its instances and cameras moved by `t`.
+void merge(Scene& scene, const Scene& part, const glm::mat4& t) {
+  const uint32_t materialBase = uint32_t(scene.materials.size());
+  const uint32_t meshBase = uint32_t(scene.meshes.size());
+  scene.materials.insert(scene.materials.end(), part.materials.begin(), part.materials.end());
+  for (Mesh mesh : part.meshes) {
+    mesh.material += materialBase;
+    scene.meshes.push_back(std::move(mesh));
+  }
+  for (const auto& inst : part.instances)
+    scene.instances.push_back({inst.mesh + meshBase, t * inst.transform});
+  for (NamedCamera c : part.cameras) {
+    c.camera = transformCamera(c.camera, t);
+    scene.cameras.push_back(std::move(c));
+  }
+}
+
+// The "gltf" list; returns the view the first file suggests.
+std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::string& at,
+                                    const std::string& baseDirectory) {
+  if (!list.is_array()) throw Error(at + ": \"gltf\" must be an array");
+  std::optional<Camera> view;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const json& g = list[i];
+    const std::string where = fmt::format("{} gltf[{}]", at, i);
+    const json& file = require(g, "file", where);
+    if (!file.is_string()) throw Error(where + ": \"file\" must be a string");
+    std::filesystem::path path(file.get<std::string>());
+    if (path.is_relative() && !baseDirectory.empty())
+      path = std::filesystem::path(baseDirectory) / path;
+    const glm::mat4 t = readTransform(g, where);
+    Scene part = loadGltf(path.string());
+    if (g.contains("camera")) {
+      if (!g.at("camera").is_string()) throw Error(where + ": \"camera\" must be a string");
+      selectCamera(part, g.at("camera").get<std::string>());
+    }
+    if (!view) view = transformCamera(part.camera, t);
+    merge(scene, part, t);
+  }
+  return view;
+}
+
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::string& source) {
+Scene parseScene(std::string_view text, const std::string& source,
+                 const std::string& baseDirectory) {
   json doc;
   try {
     doc = json::parse(text);
@@ -114,14 +198,23 @@ Scene parseScene(std::string_view text, const std::string& source) {
   const float scale = doc.value("unitScale", 1.0f);
   const std::string at = "scene '" + source + "'";
 
-  const json& cam = require(doc, "camera", at);
-  scene.camera.position = readVec3(require(cam, "position", at + " camera"), at + " camera.position") * scale;
-  scene.camera.forward = glm::normalize(readVec3(require(cam, "forward", at + " camera"), at + " camera.forward"));
-  scene.camera.up = glm::normalize(readVec3(require(cam, "up", at + " camera"), at + " camera.up"));
-  scene.camera.verticalFovDegrees = require(cam, "verticalFovDegrees", at + " camera").get<float>();
+  const bool hasGltf = doc.contains("gltf");
+  if (!hasGltf || doc.contains("camera")) {
+    const json& cam = require(doc, "camera", at);
+    scene.camera.position =
+        readVec3(require(cam, "position", at + " camera"), at + " camera.position") * scale;
+    scene.camera.forward =
+        glm::normalize(readVec3(require(cam, "forward", at + " camera"), at + " camera.forward"));
+    scene.camera.up =
+        glm::normalize(readVec3(require(cam, "up", at + " camera"), at + " camera.up"));
+    scene.camera.verticalFovDegrees =
+        require(cam, "verticalFovDegrees", at + " camera").get<float>();
+  }
 
   std::map<std::string, uint32_t> materialIndex;
-  const json& materials = require(doc, "materials", at);
+  static const json kEmptyObject = json::object();
+  const json& materials =
+      hasGltf && !doc.contains("materials") ? kEmptyObject : require(doc, "materials", at);
   if (!materials.is_object()) throw Error(at + ": \"materials\" must be an object");
   for (const auto& [name, m] : materials.items()) {
     scene.materials.push_back(parseMaterial(m, name, at + " material '" + name + "'"));
@@ -149,7 +242,9 @@ Scene parseScene(std::string_view text, const std::string& source) {
   }
   if (doc.contains("ambient")) scene.ambient = readVec3(doc.at("ambient"), at + " ambient");
 
-  const json& meshes = require(doc, "meshes", at);
+  static const json kEmptyArray = json::array();
+  const json& meshes =
+      hasGltf && !doc.contains("meshes") ? kEmptyArray : require(doc, "meshes", at);
   if (!meshes.is_array()) throw Error(at + ": \"meshes\" must be an array");
   for (const auto& m : meshes) {
     Mesh mesh;
@@ -175,12 +270,17 @@ Scene parseScene(std::string_view text, const std::string& source) {
   }
   if (doc.contains("materialTest"))
     addMaterialRow(scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
+  if (hasGltf) {
+    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory);
+    if (!doc.contains("camera") && view) scene.camera = *view;
+  }
   validate(scene);
   return scene;
 }
 
 Scene loadScene(const std::string& nameOrPath) {
   if (auto builtIn = embedded::find(nameOrPath + ".json")) return parseScene(*builtIn, nameOrPath);
+  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) {
     std::string names;
@@ -193,7 +293,8 @@ Scene loadScene(const std::string& nameOrPath) {
   text << file.rdbuf();
   if (!file.good() && !file.eof())
     throw Error(fmt::format("scene '{}': cannot read the file", nameOrPath));
-  return parseScene(text.str(), nameOrPath);
+  return parseScene(text.str(), nameOrPath,
+                    std::filesystem::path(nameOrPath).parent_path().string());
 }
 
 std::vector<std::string> builtInSceneNames() {

@@ -25,6 +25,18 @@
 //                       "radius": 0.4, "first": [x,y,z], "last": [x,y,z] }
 //       a row of spheres from `first` to `last` (centres) sharing material
 //       "base", with `vary` from 0 to 1 (scene/material_row.h); optional.
+//
+// glTF files merge into the scene (engine/scene/gltf_loader.h):
+//     "gltf": [ { "file": "models/x.glb",        // relative to the scene file
+//                 "transform": [16 numbers],    // column-major 4x4, as glTF's "matrix"
+//                 "translation": [x,y,z], "rotation": [x,y,z,w], "scale": [x,y,z],
+//                 "camera": "NAME" } ]          // all optional but "file"
+//   "transform" and translation/rotation/scale are alternatives (T * R * S),
+//   applied on top of the file's own node transforms; glTF files are in
+//   metres, so "unitScale" does not apply to them. With a "gltf" list,
+//   "materials" and "meshes" may be left out, and so may "camera": the view
+//   is then the first file's camera "NAME", or its default camera. Every
+//   file's cameras join Scene::cameras (for `--camera NAME`).
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,9 +45,12 @@
 
 namespace penumbra::scene {
 
-// `nameOrPath`: a built-in scene name ("cornell-box") or a path to a .json file.
+// `nameOrPath`: a built-in scene name ("cornell-box"), a path to a .json
+// scene file, or a glTF file (.gltf, .glb) loaded as a scene on its own.
 Scene loadScene(const std::string& nameOrPath);
-Scene parseScene(std::string_view json, const std::string& source);
+// `baseDirectory`: where the "gltf" files' relative paths start.
+Scene parseScene(std::string_view json, const std::string& source,
+                 const std::string& baseDirectory = "");
 std::vector<std::string> builtInSceneNames();
 
 }  // namespace penumbra::scene

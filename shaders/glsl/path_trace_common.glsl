@@ -22,6 +22,9 @@ layout(set = 0, binding = PT_SLOT_EMISSIVE_TRIANGLES, std430) readonly buffer Em
 layout(set = 0, binding = PT_SLOT_POINT_LIGHTS, std430) readonly buffer PointLights {
   PointLight gPointLights[];
 };
+layout(set = 0, binding = PT_SLOT_NORMALS, std430) readonly buffer Normals { float4 gNormals[]; };
+layout(set = 0, binding = PT_SLOT_TANGENTS, std430) readonly buffer Tangents { float4 gTangents[]; };
+layout(set = 0, binding = PT_SLOT_TEXCOORDS, std430) readonly buffer TexCoords { float4 gTexCoords[]; };
 layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
 layout(set = 0, binding = PT_SLOT_RAY_COUNTER, std430) buffer RayCounter { uint gRayCount; };
 

@@ -28,10 +28,11 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   float c = dot(origin, origin) - radius * radius;
   float disc = b * b - c;
   if (disc < 0.0) return surfaceMiss();
-  SurfaceHit h;
+  SurfaceHit h = surfaceMiss();
   h.hitT = -b + sqrt(disc);
   h.position = origin + h.hitT * direction;
   h.geometricNormal = -normalize(h.position);  // the emitting side faces inwards
+  h.shadingNormal = h.geometricNormal;
   h.instanceIndex = 0u;
   h.primitiveIndex = 0u;
   return h;

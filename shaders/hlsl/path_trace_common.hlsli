@@ -23,6 +23,9 @@ StructuredBuffer<InstanceData> gInstances : PENUMBRA_REGISTER_T(PT_T_INSTANCES);
 StructuredBuffer<MaterialData> gMaterials : PENUMBRA_REGISTER_T(PT_T_MATERIALS);
 StructuredBuffer<EmissiveTriangle> gEmissiveTriangles : PENUMBRA_REGISTER_T(PT_T_EMISSIVE_TRIANGLES);
 StructuredBuffer<PointLight> gPointLights : PENUMBRA_REGISTER_T(PT_T_POINT_LIGHTS);
+StructuredBuffer<float4> gNormals : PENUMBRA_REGISTER_T(PT_T_NORMALS);
+StructuredBuffer<float4> gTangents : PENUMBRA_REGISTER_T(PT_T_TANGENTS);
+StructuredBuffer<float4> gTexCoords : PENUMBRA_REGISTER_T(PT_T_TEXCOORDS);
 RWTexture2D<float4> gAccumulation : PENUMBRA_REGISTER_U(PT_U_ACCUMULATION);
 RWStructuredBuffer<uint> gRayCounter : PENUMBRA_REGISTER_U(PT_U_RAY_COUNTER);
 

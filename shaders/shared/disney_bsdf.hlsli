@@ -5,7 +5,8 @@
 // Everything here works in the local shading frame: +z is the geometric
 // normal's front (outside) side, wo and wi point away from the surface. The
 // reflection lobes are two-sided (mirrored to wo's side); the glass lobe uses
-// the side of wo to tell entering (eta = ior) from leaving (eta = 1 / ior).
+// the side of wo to tell entering (eta = ior) from leaving (eta = 1 / ior),
+// except thin glass, which has air on both sides (eta = ior from either face).
 //
 // Lobes, weighted by metallic m, specTrans t, clearcoat c:
 //   diffuse   (1-m)(1-t)   Burley diffuse with retro-reflection, blended towards a
@@ -220,6 +221,12 @@ bool refractDirection(float3 wo, float3 wm, float eta, out float3 wt) {
 
 float3 reflectDirection(float3 wo, float3 wm) { return 2.0 * dot(wo, wm) * wm - wo; }
 
+// Relative index of refraction (transmitted side over wo's side) for wo on
+// `side` (+1 front, -1 back). A thin sheet has the same medium on both sides,
+// so light meets an air-to-glass boundary from either face (no total internal
+// reflection from the back).
+float disneyEta(DisneyMaterial m, float side) { return (side > 0.0 || m.thin) ? m.ior : 1.0 / m.ior; }
+
 // The part of the BSDF that can be evaluated (all non-delta lobes), and the
 // density disneySample gives wi.
 BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
@@ -230,7 +237,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
   float3 wo = float3(woIn.x, woIn.y, woIn.z * side);
   float3 wi = float3(wiIn.x, wiIn.y, wiIn.z * side);
   if (wo.z <= 0.0 || wi.z == 0.0) return r;
-  float eta = side > 0.0 ? m.ior : 1.0 / m.ior;
+  float eta = disneyEta(m, side);
   LobeWeights w = disneyLobeWeights(m, wo.z);
   Ggx g = disneyGgx(m);
 
@@ -334,7 +341,7 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
   float side = woIn.z < 0.0 ? -1.0 : 1.0;
   float3 wo = float3(woIn.x, woIn.y, woIn.z * side);
   if (wo.z <= 0.0) return s;
-  float eta = side > 0.0 ? m.ior : 1.0 / m.ior;
+  float eta = disneyEta(m, side);
   LobeWeights w = disneyLobeWeights(m, wo.z);
   Ggx g = disneyGgx(m);
   float3 wi = float3(0.0, 0.0, 1.0);

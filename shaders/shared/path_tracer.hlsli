@@ -46,6 +46,18 @@ float3 frameToLocal(Frame f, float3 v) {
   return float3(dot(v, f.tangent), dot(v, f.bitangent), dot(v, f.normal));
 }
 
+// The shading frame about unit n, oriented by the hit's vertex tangent where
+// it has one (anisotropic lobes follow the mesh's tangents).
+Frame shadingFrame(SurfaceHit hit, float3 n) {
+  float3 t = resolveShadingTangent(hit.shadingTangent, n);
+  if (dot(t, t) < 0.5) return frameFromNormal(n);
+  Frame f;
+  f.tangent = t;
+  f.bitangent = cross(n, t);
+  f.normal = n;
+  return f;
+}
+
 // Radiance arriving along (origin, direction).
 float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rng) {
   // Locals are not `const`: GLSL allows const only for constant expressions.
@@ -87,10 +99,13 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
     if (depth >= maxDepth) break;
 
     DisneyMaterial material = unpackDisney(data);
+    // The BSDF sees the shading frame; rays leave from the geometric surface,
+    // and every direction must be on the same geometric side as the shading
+    // frame says (shadingConsistent), so interpolated normals leak no light.
     float3 ng = hit.geometricNormal;
-    Frame frame = frameFromNormal(ng);
+    Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction));
     float3 wo = frameToLocal(frame, -direction);
-    if (wo.z == 0.0) break;  // exactly grazing: no side to scatter into
+    if (wo.z == 0.0 || dot(direction, ng) == 0.0) break;  // exactly grazing: no side to scatter into
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
     if (useNee && c.lights.x > 0u) {
@@ -103,10 +118,11 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
       float3 wi = toLight / max(distance, 1e-30);
       float cosAtLight = -dot(light.normal, wi);
       float3 wiLocal = frameToLocal(frame, wi);
-      if (cosAtLight > 0.0 && distance > 0.0 && wiLocal.z != 0.0) {
+      if (cosAtLight > 0.0 && distance > 0.0 && wiLocal.z != 0.0 &&
+          shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z)) {
         BsdfEval e = disneyEval(material, wo, wiLocal);
         if (maxComponent(e.f) > 0.0) {
-          float3 spawn = offsetRayOrigin(hit.position, wiLocal.z > 0.0 ? ng : -ng);
+          float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
           // End the shadow ray just off the light's surface, on the lit side.
           float3 target = offsetRayOrigin(light.position, light.normal);
           float3 shadowDir = target - spawn;
@@ -130,10 +146,12 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
         float distance;
         float3 incident = pointLightIncident(pl, hit.position, wi, distance);
         float3 wiLocal = frameToLocal(frame, wi);
-        if (maxComponent(incident) <= 0.0 || wiLocal.z == 0.0) continue;
+        if (maxComponent(incident) <= 0.0 || wiLocal.z == 0.0 ||
+            !shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z))
+          continue;
         BsdfEval e = disneyEval(material, wo, wiLocal);
         if (maxComponent(e.f) <= 0.0) continue;
-        float3 spawn = offsetRayOrigin(hit.position, wiLocal.z > 0.0 ? ng : -ng);
+        float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
         float3 toLight = pl.position.xyz - spawn;
         float shadowLength = length(toLight);
         if (traceVisibility(spawn, toLight / shadowLength, shadowLength))
@@ -175,18 +193,19 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
       }
     }
     if (s.lobe == BSDF_LOBE_NONE || !(maxComponent(s.weight) > 0.0)) break;
+    float3 wiWorld = normalize(frameToWorld(frame, s.wi));
+    if (!shadingConsistent(ng, -direction, wiWorld, wo.z, s.wi.z) || dot(wiWorld, ng) == 0.0) break;
     throughput *= s.weight;
     if (!isFiniteColor(throughput)) break;
     previousPdf = s.pdf;
     previousDelta = s.isDelta;
-    float3 wiWorld = normalize(frameToWorld(frame, s.wi));
 
     if (useRoulette && depth + 1u >= c.sampling.z) {
       float survive = min(maxComponent(throughput), 0.95);
       if (rngNext(rng) >= survive) break;
       throughput /= survive;
     }
-    origin = offsetRayOrigin(hit.position, s.wi.z > 0.0 ? ng : -ng);
+    origin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
     direction = wiWorld;
   }
   return radiance;

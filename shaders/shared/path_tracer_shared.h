@@ -21,6 +21,9 @@ namespace penumbra::gpu {
 #define PT_T_MATERIALS 4           // MaterialData
 #define PT_T_EMISSIVE_TRIANGLES 5  // EmissiveTriangle, world space
 #define PT_T_POINT_LIGHTS 6        // PointLight (delta lights)
+#define PT_T_NORMALS 7             // float4 vertex normals (object space; xyz 0: none), as PT_T_VERTICES
+#define PT_T_TANGENTS 8            // float4 vertex tangents (object space; w handedness; 0: none)
+#define PT_T_TEXCOORDS 9           // float4 per vertex: xy TEXCOORD_0 (0 without); zw reserved (0)
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
 #define PT_SLOT_SCENE PENUMBRA_T(PT_T_SCENE)
@@ -30,6 +33,9 @@ namespace penumbra::gpu {
 #define PT_SLOT_MATERIALS PENUMBRA_T(PT_T_MATERIALS)
 #define PT_SLOT_EMISSIVE_TRIANGLES PENUMBRA_T(PT_T_EMISSIVE_TRIANGLES)
 #define PT_SLOT_POINT_LIGHTS PENUMBRA_T(PT_T_POINT_LIGHTS)
+#define PT_SLOT_NORMALS PENUMBRA_T(PT_T_NORMALS)
+#define PT_SLOT_TANGENTS PENUMBRA_T(PT_T_TANGENTS)
+#define PT_SLOT_TEXCOORDS PENUMBRA_T(PT_T_TEXCOORDS)
 #define PT_SLOT_ACCUMULATION PENUMBRA_U(PT_U_ACCUMULATION)
 #define PT_SLOT_RAY_COUNTER PENUMBRA_U(PT_U_RAY_COUNTER)
 

@@ -3,12 +3,16 @@
 #ifndef PENUMBRA_SURFACE_HIT_HLSLI
 #define PENUMBRA_SURFACE_HIT_HLSLI
 
+// 68 bytes (RayTracingPipelineDesc::maxPayloadBytes in the path tracer).
 struct SurfaceHit {
   float3 position;
   float hitT;             // < 0: the ray missed everything
   float3 geometricNormal; // unit, front side by counter-clockwise winding
   uint instanceIndex;
   uint primitiveIndex;
+  float3 shadingNormal;   // unit, on geometricNormal's side (geometricNormal without vertex normals)
+  float2 uv;              // TEXCOORD_0 (zero without)
+  float3 shadingTangent;  // unit and orthogonal to shadingNormal, or zero without vertex tangents
 };
 
 SurfaceHit surfaceMiss() {
@@ -18,6 +22,9 @@ SurfaceHit surfaceMiss() {
   h.geometricNormal = float3(0.0, 0.0, 1.0);
   h.instanceIndex = 0u;
   h.primitiveIndex = 0u;
+  h.shadingNormal = float3(0.0, 0.0, 1.0);
+  h.uv = float2(0.0, 0.0);
+  h.shadingTangent = float3(0.0, 0.0, 0.0);
   return h;
 }
 
@@ -25,6 +32,50 @@ SurfaceHit surfaceMiss() {
 // barycentrics (b1, b2); the entry point supplies the object-to-world transform.
 float3 barycentricInterpolate(float3 p0, float3 p1, float3 p2, float2 b) {
   return p0 * (1.0 - b.x - b.y) + p1 * b.x + p2 * b.y;
+}
+
+float2 barycentricInterpolate2(float2 a0, float2 a1, float2 a2, float2 b) {
+  return a0 * (1.0 - b.x - b.y) + a1 * b.x + a2 * b.y;
+}
+
+// The interpolated world-space vertex normal as a shading normal: unit and on
+// ng's side (vertex normals that disagree with the winding are flipped rather
+// than shading the back of the surface), or ng where there is none (zero
+// vertex normals) or it is degenerate.
+float3 resolveShadingNormal(float3 n, float3 ng) {
+  float len = length(n);
+  if (!(len > 1e-8) || !(len < 1e30)) return ng;
+  n = n / len;
+  return dot(n, ng) < 0.0 ? -n : n;
+}
+
+// The interpolated world-space vertex tangent made orthogonal to the shading
+// normal (Gram-Schmidt), or zero when there is none.
+float3 resolveShadingTangent(float3 t, float3 n) {
+  float3 o = t - n * dot(n, t);
+  float len = length(o);
+  return len > 1e-8 && len < 1e30 ? o / len : float3(0.0, 0.0, 0.0);
+}
+
+// The normal to shade with for a viewer in direction `wo` (unit, away from
+// the surface): the shading normal, unless wo lies on the other side of it
+// than of the geometric surface; then the shading normal cannot describe what
+// the viewer sees and the geometric normal takes over (no black fringes, no
+// negative cosines).
+float3 shadingNormalFor(SurfaceHit hit, float3 wo) {
+  float sideG = dot(wo, hit.geometricNormal);
+  float sideS = dot(wo, hit.shadingNormal);
+  return sideG * sideS > 0.0 ? hit.shadingNormal : hit.geometricNormal;
+}
+
+// Whether wi continues on the side of the geometric surface that the shading
+// frame says it does (reflection vs transmission agree for both normals).
+// Samples that fail would carry light through the surface (light leaks) or
+// reflect from inside it; they are discarded.
+bool shadingConsistent(float3 ng, float3 wo, float3 wi, float woZ, float wiZ) {
+  bool geometricReflection = dot(wo, ng) * dot(wi, ng) > 0.0;
+  bool shadingReflection = woZ * wiZ > 0.0;
+  return geometricReflection == shadingReflection;
 }
 
 #endif

@@ -58,14 +58,18 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     MaterialData data = loadMaterial(instance.materialIndex);
     PhongMaterial p = unpackPhong(data);
 
-    float cosIn = -dot(ray.direction, hit.geometricNormal);
-    bool frontFace = cosIn > 0.0;
+    bool frontFace = dot(ray.direction, hit.geometricNormal) < 0.0;
     if (instance.firstEmissiveTriangle != PT_NO_EMISSION && frontFace)
       radiance += ray.weight * data.emission.xyz;
-    // Shade on the side the ray arrived from.
-    float3 n = frontFace ? hit.geometricNormal : -hit.geometricNormal;
+    // Shade on the side the ray arrived from: Phong terms and the mirror and
+    // refraction directions use the shading normal, rays leave from the
+    // geometric surface (ng).
     float3 toViewer = -ray.direction;
-    float3 spawnOut = offsetRayOrigin(hit.position, n);
+    float3 ns = shadingNormalFor(hit, toViewer);
+    float3 n = frontFace ? ns : -ns;
+    float3 ng = frontFace ? hit.geometricNormal : -hit.geometricNormal;
+    float cosIn = -dot(ray.direction, n);
+    float3 spawnOut = offsetRayOrigin(hit.position, ng);
 
     float opaque = max(0.0, 1.0 - p.reflectivity - p.transparency);
     float3 local = c.shading.xyz * p.kd;
@@ -74,7 +78,8 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
       float3 toLight;
       float distance;
       float3 incident = pointLightIncident(light, hit.position, toLight, distance);
-      if (maxComponent(incident) <= 0.0 || dot(n, toLight) <= 0.0) continue;
+      // Lights behind the geometric surface stay dark whatever the shading normal says.
+      if (maxComponent(incident) <= 0.0 || dot(n, toLight) <= 0.0 || dot(ng, toLight) <= 0.0) continue;
       float3 toLightFromSpawn = light.position.xyz - spawnOut;
       float shadowLength = length(toLightFromSpawn);
       if (traceVisibility(spawnOut, toLightFromSpawn / shadowLength, shadowLength))
@@ -84,6 +89,8 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
 
     if (ray.depth >= c.sampling.y) continue;
     float3 mirror = normalize(ray.direction + 2.0 * abs(cosIn) * n);
+    // A shading normal can bend the mirror ray into the surface; reflect about ng then.
+    if (dot(mirror, ng) <= 0.0) mirror = normalize(reflect(ray.direction, ng));
 #if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
     if (p.transparency > 0.0) {
       // Entering through the front face goes from air into the material.
@@ -91,11 +98,13 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
       float fr = fresnelDielectric(abs(cosIn), eta);
       float3 refracted;
       bool transmits = refractDirection(toViewer, n, eta, refracted);
+      // Refraction about the shading normal must still enter the surface.
+      if (transmits && dot(refracted, ng) >= 0.0) transmits = refractDirection(toViewer, ng, eta, refracted);
       if (!transmits) fr = 1.0;  // total internal reflection
       float3 reflectWeight = ray.weight * (p.transparency * fr);
       float3 refractWeight = ray.weight * (p.transparency * (1.0 - fr)) * p.kd;
       if (transmits && maxComponent(refractWeight) > kWhittedMinWeight && top < WHITTED_STACK_SIZE) {
-        stack[top] = whittedRay(offsetRayOrigin(hit.position, -n), normalize(refracted), refractWeight,
+        stack[top] = whittedRay(offsetRayOrigin(hit.position, -ng), normalize(refracted), refractWeight,
                                 ray.depth + 1u);
         top += 1;
       }

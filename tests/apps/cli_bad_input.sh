@@ -41,6 +41,10 @@ expect_error "device index out of range" "does not exist" render --device 99 --s
 expect_error "unknown subcommand" "subcommand" bogus
 expect_error "unknown --vary parameter" "--vary 'colour'" render --scene material-test --vary colour --out "$work/out.png"
 expect_error "--set on a scene without a row" "no material-test row" render --scene cornell-box --set metallic=1 --out "$work/out.png"
+gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
+expect_error "missing glTF file" "no such file" render --scene "$work/missing.glb" --out "$work/out.png"
+expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
+expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"
 # A machine without a Vulkan driver: point the loader at an empty driver list.
 VK_DRIVER_FILES="$work/none.json" VK_ICD_FILENAMES="$work/none.json" \
   expect_error "no device with ray tracing" "no Vulkan driver" render --size 8x8 --spp 1 --out "$work/out.png"

@@ -28,6 +28,13 @@ grep -qE "^images: max \|difference\| 0," "$work/bench"
 "$penumbra" render --scene material-test --vary metallic --set roughness=0.3,baseColor=0.9,0.6,0.2 \
   --size 48x16 --spp 2 --validation --out "$work/row.png" >/dev/null
 [ -s "$work/row.png" ]
+# A .glb straight from the command line, from a camera chosen by name.
+gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
+"$penumbra" render --scene "$gltf_data/cameras.gltf" --camera side --size 16x16 --spp 1 --validation \
+  --out "$work/gltf.png" | grep -q "^scene: cameras (1 triangles)"
+"$penumbra" render --scene "$gltf_data/triangle.glb" --size 16x16 --spp 1 --validation \
+  --out "$work/glb.png" >/dev/null
+[ -s "$work/glb.png" ]
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
 "$penumbra" render --help | grep -q -- "--spp"
 echo "render CLI ok"

@@ -45,11 +45,11 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
   const auto& table = rs.tables[0];
   CHECK(table.space == 0);
   CHECK(table.rootParameterIndex == 1);
-  CHECK(table.descriptorCount == 9);
+  CHECK(table.descriptorCount == 12);
   CHECK(rs.parameterCount() == 2);
   CHECK(rs.dwordCost == 32 + 1);  // 128 bytes of root constants + one table
 
-  // t0..t6 are SRVs (TLAS + read-only structured buffers), u0/u1 UAVs, in slot order.
+  // t0..t9 are SRVs (TLAS + read-only structured buffers), u0/u1 UAVs, in slot order.
   const auto* scene = table.rangeForSlot(PT_SLOT_SCENE);
   REQUIRE(scene);
   CHECK(scene->type == DescriptorRangeType::SRV);
@@ -65,16 +65,21 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
   CHECK(pointLights->type == DescriptorRangeType::SRV);
   CHECK(pointLights->baseRegister == 6);
   CHECK(pointLights->offsetInTable == 6);
+  const auto* texcoords = table.rangeForSlot(PT_SLOT_TEXCOORDS);
+  REQUIRE(texcoords);
+  CHECK(texcoords->type == DescriptorRangeType::SRV);
+  CHECK(texcoords->baseRegister == 9);
+  CHECK(texcoords->offsetInTable == 9);
   const auto* accumulation = table.rangeForSlot(PT_SLOT_ACCUMULATION);
   REQUIRE(accumulation);
   CHECK(accumulation->type == DescriptorRangeType::UAV);
   CHECK(accumulation->baseRegister == 0);
-  CHECK(accumulation->offsetInTable == 7);
+  CHECK(accumulation->offsetInTable == 10);
   const auto* counter = table.rangeForSlot(PT_SLOT_RAY_COUNTER);
   REQUIRE(counter);
   CHECK(counter->type == DescriptorRangeType::UAV);
   CHECK(counter->baseRegister == 1);
-  CHECK(counter->offsetInTable == 8);
+  CHECK(counter->offsetInTable == 11);
 }
 
 TEST_CASE("root signature: spaces become tables in space order, arrays take several descriptors",

@@ -1,0 +1,525 @@
+#!/usr/bin/env python3
+"""Writes the small hand-made glTF files the loader and renderer tests read.
+
+Run from anywhere: `python3 tests/data/gltf/make_gltf.py`; it rewrites the
+files next to itself. Every number the tests expect is derived by hand in the
+test that uses the file, not read back from here.
+"""
+import base64
+import json
+import math
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+FLOAT, UBYTE, USHORT, UINT, BYTE, SHORT = 5126, 5121, 5123, 5125, 5120, 5122
+FORMATS = {FLOAT: "f", UBYTE: "B", USHORT: "H", UINT: "I", BYTE: "b", SHORT: "h"}
+SIZES = {FLOAT: 4, UBYTE: 1, USHORT: 2, UINT: 4, BYTE: 1, SHORT: 2}
+COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
+
+
+class Builder:
+    """One glTF document with a single buffer that grows as views are added."""
+
+    def __init__(self):
+        self.doc = {"asset": {"version": "2.0", "generator": "penumbra tests/data/gltf/make_gltf.py"}}
+        self.data = bytearray()
+
+    def _list(self, key):
+        return self.doc.setdefault(key, [])
+
+    def view(self, raw, stride=None, align=4):
+        while len(self.data) % align:
+            self.data.append(0)
+        v = {"buffer": 0, "byteOffset": len(self.data), "byteLength": len(raw)}
+        if stride:
+            v["byteStride"] = stride
+        self.data += raw
+        self._list("bufferViews").append(v)
+        return len(self.doc["bufferViews"]) - 1
+
+    def accessor(self, values, ctype=FLOAT, atype="VEC3", normalized=False, view=None, offset=0,
+                 count=None, minmax=False):
+        """values: flat list; packs them into a new view unless `view` is given."""
+        n = COMPONENTS[atype]
+        if view is None:
+            view = self.view(struct.pack("<%d%s" % (len(values), FORMATS[ctype]), *values))
+        a = {"bufferView": view, "componentType": ctype, "type": atype,
+             "count": count if count is not None else len(values) // n}
+        if offset:
+            a["byteOffset"] = offset
+        if normalized:
+            a["normalized"] = True
+        if minmax:
+            a["min"] = [min(values[i::n]) for i in range(n)]
+            a["max"] = [max(values[i::n]) for i in range(n)]
+        self._list("accessors").append(a)
+        return len(self.doc["accessors"]) - 1
+
+    def add(self, key, item):
+        self._list(key).append(item)
+        return len(self.doc[key]) - 1
+
+    def finish_embedded(self):
+        uri = "data:application/octet-stream;base64," + base64.b64encode(bytes(self.data)).decode()
+        self.doc["buffers"] = [{"byteLength": len(self.data), "uri": uri}]
+        return self.doc
+
+    def write_gltf(self, name):
+        write_json(name, self.finish_embedded())
+
+    def write_external(self, name, bin_name):
+        self.doc["buffers"] = [{"byteLength": len(self.data), "uri": bin_name}]
+        write_json(name, self.doc)
+        with open(os.path.join(HERE, bin_name), "wb") as f:
+            f.write(self.data)
+
+    def write_glb(self, name):
+        self.doc["buffers"] = [{"byteLength": len(self.data)}]
+        text = json.dumps(self.doc, separators=(",", ":")).encode()
+        text += b" " * (-len(text) % 4)
+        binary = bytes(self.data) + b"\0" * (-len(self.data) % 4)
+        total = 12 + 8 + len(text) + 8 + len(binary)
+        out = struct.pack("<III", 0x46546C67, 2, total)
+        out += struct.pack("<II", len(text), 0x4E4F534A) + text
+        out += struct.pack("<II", len(binary), 0x004E4942) + binary
+        with open(os.path.join(HERE, name), "wb") as f:
+            f.write(out)
+
+
+def write_json(name, doc):
+    with open(os.path.join(HERE, name), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
+def write_text(name, text):
+    with open(os.path.join(HERE, name), "w") as f:
+        f.write(text)
+
+
+TRIANGLE = [0, 0, 0, 1, 0, 0, 0, 1, 0]
+
+
+def triangle_file():
+    """One triangle (0,0,0) (1,0,0) (0,1,0), indexed, one node."""
+    b = Builder()
+    pos = b.accessor(TRIANGLE, minmax=True)
+    idx = b.accessor([0, 1, 2], USHORT, "SCALAR")
+    b.add("meshes", {"name": "tri", "primitives": [{"attributes": {"POSITION": pos}, "indices": idx}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["scene"] = 0
+    return b
+
+
+def transforms():
+    """Instancing and node transforms: mesh 'tri' under a TRS parent, the same
+    mesh under a matrix node and a TRS node that mean the same transform, and a
+    two-primitive mesh."""
+    b = Builder()
+    pos = b.accessor(TRIANGLE, minmax=True)
+    nrm = b.accessor([0, 0, 1] * 3)
+    idx = b.accessor([0, 1, 2], USHORT, "SCALAR")
+    prim = {"attributes": {"POSITION": pos, "NORMAL": nrm}, "indices": idx}
+    b.add("meshes", {"name": "tri", "primitives": [prim]})
+    b.add("meshes", {"name": "pair", "primitives": [prim, dict(prim)]})
+    s, c = math.sin(math.pi / 4), math.cos(math.pi / 4)
+    # parent: translate (10,0,0), rotate 90 degrees about +z, scale 2.
+    b.add("nodes", {"name": "parent", "translation": [10, 0, 0], "rotation": [0, 0, s, c],
+                    "scale": [2, 2, 2], "children": [1]})
+    b.add("nodes", {"name": "child", "translation": [0, 0, 1], "mesh": 0})
+    # The parent's transform as a column-major matrix.
+    b.add("nodes", {"name": "matrix", "mesh": 0,
+                    "matrix": [0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 10, 0, 0, 1]})
+    b.add("nodes", {"name": "trs", "mesh": 0, "translation": [10, 0, 0], "rotation": [0, 0, s, c],
+                    "scale": [2, 2, 2]})
+    b.add("nodes", {"name": "pair", "mesh": 1, "translation": [0, 5, 0]})
+    b.doc["scenes"] = [{"nodes": [0, 2, 3, 4]}]
+    b.doc["scene"] = 0
+    b.write_gltf("transforms.gltf")
+
+
+def sparse():
+    """POSITION of 4 vertices with a sparse substitution of vertices 1 and 3,
+    and a TEXCOORD_0 with no buffer view (zeros) and one sparse value."""
+    b = Builder()
+    base = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]
+    view = b.view(struct.pack("<12f", *base))
+    sidx = b.view(struct.pack("<2H", 1, 3))
+    sval = b.view(struct.pack("<6f", 2, 0, 0, 0, 3, 0))
+    b.doc.setdefault("accessors", []).append({
+        "bufferView": view, "componentType": FLOAT, "type": "VEC3", "count": 4,
+        "min": [0, 0, 0], "max": [2, 3, 0],
+        "sparse": {"count": 2, "indices": {"bufferView": sidx, "componentType": USHORT},
+                   "values": {"bufferView": sval}}})
+    uidx = b.view(struct.pack("<B", 2), align=1)
+    uval = b.view(struct.pack("<2f", 0.25, 0.75))
+    b.doc["accessors"].append({
+        "componentType": FLOAT, "type": "VEC2", "count": 4,
+        "sparse": {"count": 1, "indices": {"bufferView": uidx, "componentType": UBYTE},
+                   "values": {"bufferView": uval}}})
+    idx = b.accessor([0, 1, 2, 0, 2, 3], UBYTE, "SCALAR")
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": idx}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("sparse.gltf")
+
+
+def attributes():
+    """Normalized integer attributes and byte strides. Primitive 0: positions
+    and normals interleaved (stride 24), TEXCOORD_0 as normalized unsigned
+    bytes in a view of stride 4 (2 bytes padding each). Primitive 1:
+    TEXCOORD_0 as normalized unsigned shorts, TANGENT as normalized signed
+    shorts, NORMAL as normalized signed bytes (stride 4)."""
+    b = Builder()
+    inter = []
+    for p in ([0, 0, 0], [1, 0, 0], [0, 1, 0]):
+        inter += p + [0, 0, 1]
+    v = b.view(struct.pack("<18f", *inter), stride=24)
+    pos = b.accessor(None or [], FLOAT, "VEC3", view=v, count=3)
+    b.doc["accessors"][pos]["min"] = [0, 0, 0]
+    b.doc["accessors"][pos]["max"] = [1, 1, 0]
+    nrm = b.accessor([], FLOAT, "VEC3", view=v, offset=12, count=3)
+    uv8 = b.view(struct.pack("<12B", 0, 255, 9, 9, 255, 0, 9, 9, 128, 51, 9, 9), stride=4)
+    uvb = b.accessor([], UBYTE, "VEC2", normalized=True, view=uv8, count=3)
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": pos, "NORMAL": nrm, "TEXCOORD_0": uvb}}]})
+
+    uvs = b.accessor([0, 65535, 32768, 0, 65535, 13107], USHORT, "VEC2", normalized=True)
+    tan = b.accessor([32767, 0, 0, -32768, 0, 32767, 0, -32767, 0, 0, -32768, -32768], SHORT, "VEC4",
+                     normalized=True)
+    n8 = b.view(struct.pack("<12b", 0, 0, 127, 0, 0, 0, 127, 0, -128, 0, 0, 0), stride=4)
+    nb = b.accessor([], BYTE, "VEC3", normalized=True, view=n8, count=3)
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": pos, "NORMAL": nb, "TEXCOORD_0": uvs,
+                                                    "TANGENT": tan}}]})
+    b.add("nodes", {"mesh": 0})
+    b.add("nodes", {"mesh": 1})
+    b.doc["scenes"] = [{"nodes": [0, 1]}]
+    b.write_gltf("attributes.gltf")
+
+
+def generated():
+    """Primitive 0: a folded pair of triangles without NORMAL (flat normals).
+    Primitive 1: a quad in the xy plane with +z normals and the usual UV
+    layout (v down), no TANGENT. Primitive 2: the same with u mirrored.
+    Primitive 3: the quad with normals tilted to (0.6, 0, 0.8)."""
+    b = Builder()
+    fold = b.accessor([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1], minmax=True)
+    fidx = b.accessor([0, 1, 2, 1, 3, 2], USHORT, "SCALAR")
+    quad = b.accessor([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], minmax=True)
+    up = b.accessor([0, 0, 1] * 4)
+    tilted = b.accessor([0.6, 0, 0.8] * 4)
+    uv = b.accessor([0, 1, 1, 1, 1, 0, 0, 0], atype="VEC2")
+    mirrored = b.accessor([1, 1, 0, 1, 0, 0, 1, 0], atype="VEC2")
+    qidx = b.accessor([0, 1, 2, 0, 2, 3], USHORT, "SCALAR")
+    b.add("meshes", {"primitives": [
+        {"attributes": {"POSITION": fold, "TEXCOORD_0": uv}, "indices": fidx},
+        {"attributes": {"POSITION": quad, "NORMAL": up, "TEXCOORD_0": uv}, "indices": qidx},
+        {"attributes": {"POSITION": quad, "NORMAL": up, "TEXCOORD_0": mirrored}, "indices": qidx},
+        {"attributes": {"POSITION": quad, "NORMAL": tilted, "TEXCOORD_0": uv}, "indices": qidx}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("generated.gltf")
+
+
+def containers():
+    """The same triangle as .glb, as .gltf with an external .bin, and embedded."""
+    triangle_file().write_glb("triangle.glb")
+    triangle_file().write_external("external.gltf", "external.bin")
+    triangle_file().write_gltf("embedded.gltf")
+
+
+def materials():
+    """One primitive per material; each material exercises one extension."""
+    b = Builder()
+    pos = b.accessor(TRIANGLE, minmax=True)
+    mats = [
+        {"name": "base", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1, 1],
+                                                  "metallicFactor": 0.3, "roughnessFactor": 0.7}},
+        {"name": "emissive", "emissiveFactor": [1, 0.5, 0.25],
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
+        {"name": "glass", "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.9},
+                                         "KHR_materials_ior": {"ior": 1.33}}},
+        {"name": "volume", "extensions": {
+            "KHR_materials_transmission": {"transmissionFactor": 1},
+            "KHR_materials_volume": {"thicknessFactor": 0.5, "attenuationDistance": 2,
+                                     "attenuationColor": [1, 0.5, 0.5]}}},
+        {"name": "coat", "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.8,
+                                                                    "clearcoatRoughnessFactor": 0.2}}},
+        {"name": "specular", "extensions": {"KHR_materials_specular": {
+            "specularFactor": 0.5, "specularColorFactor": [0.8, 0.8, 0.8]}}},
+        {"name": "sheen", "extensions": {"KHR_materials_sheen": {
+            "sheenColorFactor": [0.2, 0.6, 0.4], "sheenRoughnessFactor": 0.5}}},
+        {"name": "mask", "alphaMode": "MASK", "alphaCutoff": 0.5,
+         "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 0.2]}},
+        {"name": "defaults"},
+    ]
+    b.doc["materials"] = mats
+    prims = [{"attributes": {"POSITION": pos}, "material": i} for i in range(len(mats))]
+    prims.append({"attributes": {"POSITION": pos}})  # no material: glTF's default
+    b.add("meshes", {"primitives": prims})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["extensionsUsed"] = sorted({k for m in mats for k in m.get("extensions", {})})
+    b.write_gltf("materials.gltf")
+
+
+def cameras():
+    """Cameras: node 1 'front' (camera 1 'second', 5 m along +z), node 2 'side'
+    (camera 0 'first', at (5,0,0) turned 90 degrees about +y), node 3 an
+    orthographic camera."""
+    b = triangle_file()
+    b.doc["cameras"] = [
+        {"name": "first", "type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}},
+        {"name": "second", "type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1,
+                                                                  "aspectRatio": 1.5}},
+        {"name": "ortho", "type": "orthographic",
+         "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}},
+    ]
+    s, c = math.sin(math.pi / 4), math.cos(math.pi / 4)
+    b.add("nodes", {"name": "front", "camera": 1, "translation": [0, 0, 5]})
+    b.add("nodes", {"name": "side", "camera": 0, "translation": [5, 0, 0], "rotation": [0, s, 0, c]})
+    b.add("nodes", {"name": "flat", "camera": 2})
+    # Scene order differs from node order: the default view follows node order.
+    b.doc["scenes"] = [{"nodes": [3, 2, 0, 1]}]
+    b.write_gltf("cameras.gltf")
+
+
+def extensions():
+    b = triangle_file()
+    b.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
+    b.doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    b.write_gltf("extension_required.gltf")
+    b = triangle_file()
+    b.doc["extensionsUsed"] = ["KHR_materials_unlit", "KHR_materials_clearcoat"]
+    b.write_gltf("extension_optional.gltf")
+
+
+def invalid():
+    """Files that must fail with one clear error each."""
+    good = json.dumps(triangle_file().finish_embedded(), indent=1)
+    write_text("invalid_truncated.gltf", good[: len(good) // 2])
+
+    b = triangle_file()
+    b.doc["accessors"][0]["count"] = 4  # 48 bytes from a 36-byte view
+    b.write_gltf("invalid_accessor_range.gltf")
+
+    b = triangle_file()
+    b.finish_embedded()
+    b.doc["bufferViews"][1]["byteOffset"] = 64  # past the end of the 42-byte buffer
+    write_json("invalid_short_buffer.gltf", b.doc)
+
+    b = triangle_file()
+    b.doc["buffers"] = [{"byteLength": len(b.data), "uri": "missing.bin"}]
+    write_json("invalid_missing_buffer.gltf", b.doc)
+
+    b = triangle_file()
+    b.doc["images"] = [{"uri": "missing.png"}]
+    b.doc["textures"] = [{"source": 0}]
+    b.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.write_gltf("invalid_missing_image.gltf")
+
+    b = Builder()
+    pos = b.accessor(TRIANGLE, minmax=True)
+    idx = b.accessor([0, 1, 7], USHORT, "SCALAR")
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": pos}, "indices": idx}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("invalid_index.gltf")
+
+    b = triangle_file()
+    b.doc["nodes"] = [{"mesh": 0, "children": [1]}, {"name": "loop", "children": [0]}]
+    b.write_gltf("invalid_cycle.gltf")
+
+    b = Builder()
+    pos = b.accessor([0, 0, 0, 1, float("nan"), 0, 0, 1, 0])
+    b.doc["accessors"][pos]["min"] = [0, 0, 0]
+    b.doc["accessors"][pos]["max"] = [1, 1, 0]
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": pos}}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("invalid_nan.gltf")
+
+    b = triangle_file()
+    b.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9
+    b.write_gltf("invalid_accessor_index.gltf")
+
+
+def quad(b, corners, normal):
+    """A quad (two triangles v0 v1 v2, v0 v2 v3) with one normal."""
+    pos = b.accessor([c for p in corners for c in p], minmax=True)
+    nrm = b.accessor(list(normal) * 4)
+    idx = b.accessor([0, 1, 2, 0, 2, 3], USHORT, "SCALAR")
+    return {"attributes": {"POSITION": pos, "NORMAL": nrm}, "indices": idx}
+
+
+def emissive_quad():
+    """A 1 m square light facing down 1 m above a grey floor (albedo 0.5),
+    emitting radiance 2.5 x 4 = 10, and a camera looking at the floor under
+    the light's centre from the side with a narrow field of view."""
+    b = Builder()
+    b.doc["materials"] = [
+        {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1],
+                                                   "metallicFactor": 0, "roughnessFactor": 1},
+         "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
+        {"name": "light", "emissiveFactor": [2.5, 2.5, 2.5],
+         "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
+    ]
+    b.doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "KHR_materials_specular"]
+    floor = quad(b, [(-20, 0, 20), (20, 0, 20), (20, 0, -20), (-20, 0, -20)], (0, 1, 0))
+    floor["material"] = 0
+    # Counter-clockwise seen from below: the emitting face points down.
+    light = quad(b, [(-0.5, 1, -0.5), (0.5, 1, -0.5), (0.5, 1, 0.5), (-0.5, 1, 0.5)], (0, -1, 0))
+    light["material"] = 1
+    b.add("meshes", {"name": "floor", "primitives": [floor]})
+    b.add("meshes", {"name": "light", "primitives": [light]})
+    b.add("nodes", {"mesh": 0})
+    b.add("nodes", {"mesh": 1})
+    b.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.02, "znear": 0.01}}]
+    # At (0, 0.5, 2) looking at the origin: rotated about +x by -atan(0.5 / 2).
+    a = -math.atan2(0.5, 2) / 2
+    b.add("nodes", {"name": "view", "camera": 0, "translation": [0, 0.5, 2],
+                    "rotation": [math.sin(a), 0, 0, math.cos(a)]})
+    b.doc["scenes"] = [{"nodes": [0, 1, 2]}]
+    b.write_gltf("emissive_quad.gltf")
+
+
+def spheres():
+    """A UV sphere of radius 1 (12 x 8 segments), with smooth normals
+    (sphere_smooth.gltf) and without normals (sphere_flat.gltf: flat)."""
+    rows, cols = 8, 12
+    pos, nrm = [], []
+    for r in range(rows + 1):
+        theta = math.pi * r / rows
+        for c in range(cols + 1):
+            phi = 2 * math.pi * c / cols
+            p = (math.sin(theta) * math.cos(phi), math.cos(theta), -math.sin(theta) * math.sin(phi))
+            pos += p
+            nrm += p
+    idx = []
+    for r in range(rows):
+        for c in range(cols):
+            a, b_, d, e = r * (cols + 1) + c, r * (cols + 1) + c + 1, (r + 1) * (cols + 1) + c, (r + 1) * (cols + 1) + c + 1
+            # Counter-clockwise seen from outside.
+            idx += [a, d, e, a, e, b_]
+    for name, with_normals in (("sphere_smooth.gltf", True), ("sphere_flat.gltf", False)):
+        b = Builder()
+        attrs = {"POSITION": b.accessor(pos, minmax=True)}
+        if with_normals:
+            attrs["NORMAL"] = b.accessor(nrm)
+        i = b.accessor(idx, USHORT, "SCALAR")
+        b.doc["materials"] = [{"name": "grey", "pbrMetallicRoughness": {
+            "baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0, "roughnessFactor": 1}}]
+        b.add("meshes", {"primitives": [{"attributes": attrs, "indices": i, "material": 0}]})
+        b.add("nodes", {"mesh": 0})
+        b.doc["scenes"] = [{"nodes": [0]}]
+        b.write_gltf(name)
+
+
+def leak():
+    """A 2 m floor (y = 0, front +y) in two strips whose vertex normals lean
+    away from the geometric normal: (0.8, 0.6, 0), 53 degrees off but above
+    the horizon, and (0.8, -0.6, 0), below it."""
+    b = Builder()
+    b.doc["materials"] = [{"name": "white", "pbrMetallicRoughness": {
+        "baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0, "roughnessFactor": 0.5}}]
+    left = quad(b, [(-1, 0, 1), (0, 0, 1), (0, 0, -1), (-1, 0, -1)], (0.8, 0.6, 0))
+    right = quad(b, [(0, 0, 1), (1, 0, 1), (1, 0, -1), (0, 0, -1)], (0.8, -0.6, 0))
+    left["material"] = right["material"] = 0
+    b.add("meshes", {"primitives": [left, right]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("leak.gltf")
+
+
+def modes():
+    """A unit square as POINTS, LINES, TRIANGLE_STRIP (corners in zigzag
+    order) and TRIANGLE_FAN (corners in counter-clockwise order)."""
+    b = Builder()
+    zigzag = b.accessor([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], minmax=True)
+    cyclic = b.accessor([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], minmax=True)
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": zigzag}, "mode": 0},
+                                    {"attributes": {"POSITION": zigzag}, "mode": 1},
+                                    {"attributes": {"POSITION": zigzag}, "mode": 5},
+                                    {"attributes": {"POSITION": cyclic}, "mode": 6}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("modes.gltf")
+
+
+def png_rgba(width, height, pixels):
+    """A PNG of 8-bit RGBA pixels (rows top first), without filters."""
+    import zlib
+    raw = b"".join(b"\0" + bytes(pixels[y * width * 4:(y + 1) * width * 4]) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def textured():
+    """A triangle whose material has a base-colour texture (a 2 x 2 PNG in a data URI)."""
+    b = triangle_file()
+    png = png_rgba(2, 2, [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255])
+    b.doc["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}]
+    b.doc["textures"] = [{"source": 0}]
+    b.doc["materials"] = [{"name": "painted",
+                           "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                                    "baseColorFactor": [0.5, 0.5, 0.5, 1]}}]
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.write_gltf("textured.gltf")
+
+
+def scene_files():
+    """Penumbra scene files that reference the glTF files above."""
+    # Near the camera, so the shadow terminator (where faceted geometry
+    # shadows itself whatever the normals) stays at the silhouette.
+    light = {"type": "point", "position": [1.5, 1.5, 4], "intensity": [20, 20, 20]}
+    camera = {"position": [0, 0, 4], "forward": [0, 0, -1], "up": [0, 1, 0],
+              "verticalFovDegrees": 35}
+    for name, model in (("sphere_smooth.json", "sphere_smooth.gltf"),
+                        ("sphere_flat.json", "sphere_flat.gltf")):
+        write_json(name, {"format": "penumbra-scene", "version": 1, "name": name[:-5],
+                          "camera": camera, "lights": [light], "gltf": [{"file": model}]})
+    camera_above = {"position": [0, 2, 2], "forward": [0, -1, -1], "up": [0, 1, 0],
+                    "verticalFovDegrees": 60}
+    for name, y in (("leak_below.json", -1), ("leak_above.json", 1)):
+        write_json(name, {"format": "penumbra-scene", "version": 1, "name": name[:-5],
+                          "camera": camera_above,
+                          "lights": [{"type": "point", "position": [0, y, 0], "intensity": [10, 10, 10]}],
+                          "gltf": [{"file": "leak.gltf"}]})
+    # The light and floor mirrored in x (symmetric, so the view is unchanged):
+    # the emitter's front face must survive the mirroring transform.
+    write_json("emissive_mirrored.json", {
+        "format": "penumbra-scene", "version": 1, "name": "emissive_mirrored",
+        "gltf": [{"file": "emissive_quad.gltf", "scale": [-1, 1, 1]}]})
+    write_json("merged.json", {
+        "format": "penumbra-scene", "version": 1, "name": "merged",
+        "materials": {"white": {"model": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+        "meshes": [{"name": "floor", "material": "white",
+                    "quads": [[[-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]]]}],
+        "gltf": [{"file": "cameras.gltf", "translation": [0, 0, -3], "camera": "side"},
+                 {"file": "transforms.gltf",
+                  "transform": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 100, 0, 1]}]})
+
+
+if __name__ == "__main__":
+    transforms()
+    sparse()
+    attributes()
+    generated()
+    containers()
+    materials()
+    cameras()
+    extensions()
+    invalid()
+    emissive_quad()
+    spheres()
+    leak()
+    modes()
+    textured()
+    scene_files()

@@ -1,0 +1,388 @@
+// The glTF loader against hand-made files (tests/data/gltf/make_gltf.py).
+// Expected numbers are worked out by hand in the comments, from the values
+// the generator writes and the glTF 2.0 specification.
+#include <algorithm>
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+#include <cmath>
+
+#include "scene/gltf_loader.h"
+#include "test_data.h"
+#include "util/error.h"
+
+using namespace penumbra;
+using Catch::Approx;
+using Catch::Matchers::ContainsSubstring;
+
+namespace {
+
+std::string gltf(const std::string& name) {
+  return test::dataPath("gltf/" + name);
+}
+
+glm::vec3 world(const scene::Scene& s, const scene::Instance& inst, uint32_t vertex) {
+  return glm::vec3(inst.transform * glm::vec4(s.meshes[inst.mesh].positions.at(vertex), 1.0f));
+}
+
+void requireNear(glm::vec3 a, glm::vec3 b, float eps = 1e-5f) {
+  INFO("got (" << a.x << ", " << a.y << ", " << a.z << "), expected (" << b.x << ", " << b.y << ", "
+               << b.z << ")");
+  REQUIRE(glm::length(a - b) <= eps);
+}
+
+const scene::Material& materialNamed(const scene::Scene& s, const std::string& name) {
+  for (const auto& m : s.materials)
+    if (m.name == name) return m;
+  FAIL("no material " << name);
+  throw 0;
+}
+
+bool hasWarning(const scene::GltfImport& r, const std::string& part) {
+  return std::any_of(r.warnings.begin(), r.warnings.end(),
+                     [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_CASE("glTF node transforms compose into world positions", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("transforms.gltf"));
+  // Nodes 'child' (under 'parent'), 'matrix' and 'trs' use mesh 'tri'; 'pair'
+  // uses the two-primitive mesh: 3 + 2 instances of 1 + 2 meshes.
+  REQUIRE(s.meshes.size() == 3u);
+  REQUIRE(s.instances.size() == 5u);
+
+  // Scene roots are visited in order, children after their parent: the first
+  // instance is 'child'. parent = T(10,0,0) Rz(90) S(2); child = T(0,0,1).
+  // (1,0,0) -> child (1,0,1) -> S (2,0,2) -> Rz (0,2,2) -> T (10,2,2)
+  // (0,1,0) -> (0,1,1) -> (0,2,2) -> (-2,0,2) -> (8,0,2)
+  // (0,0,0) -> (0,0,1) -> (0,0,2) -> (0,0,2) -> (10,0,2)
+  const auto& child = s.instances[0];
+  requireNear(world(s, child, 0), {10, 0, 2});
+  requireNear(world(s, child, 1), {10, 2, 2});
+  requireNear(world(s, child, 2), {8, 0, 2});
+
+  // 'matrix' holds the parent's transform as a column-major matrix, 'trs' as
+  // TRS: both map (1,0,0) -> (10,2,0) and (0,1,0) -> (8,0,0).
+  const auto& matrix = s.instances[1];
+  const auto& trs = s.instances[2];
+  for (const auto* inst : {&matrix, &trs}) {
+    requireNear(world(s, *inst, 0), {10, 0, 0});
+    requireNear(world(s, *inst, 1), {10, 2, 0});
+    requireNear(world(s, *inst, 2), {8, 0, 0});
+  }
+}
+
+TEST_CASE("glTF meshes are stored once and instanced per node and primitive", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("transforms.gltf"));
+  // 'child', 'matrix' and 'trs' share one scene mesh (one BLAS).
+  REQUIRE(s.instances[0].mesh == s.instances[1].mesh);
+  REQUIRE(s.instances[1].mesh == s.instances[2].mesh);
+  // 'pair' has two primitives: two meshes, each instanced at T(0,5,0).
+  REQUIRE(s.instances[3].mesh != s.instances[4].mesh);
+  REQUIRE(s.instances[3].mesh != s.instances[0].mesh);
+  for (int i : {3, 4}) requireNear(world(s, s.instances[size_t(i)], 1), {1, 5, 0});
+  // The NORMAL attribute is kept as given, in object space.
+  for (const auto& n : s.meshes[s.instances[0].mesh].normals) requireNear(n, {0, 0, 1});
+}
+
+TEST_CASE("glTF sparse accessors substitute their values", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("sparse.gltf"));
+  REQUIRE(s.meshes.size() == 1u);
+  const auto& m = s.meshes[0];
+  // Base (0,0,0) (1,0,0) (1,1,0) (0,1,0); vertices 1 and 3 replaced by (2,0,0), (0,3,0).
+  // No NORMAL, so the quad is unwelded into 6 flat-shaded vertices in index
+  // order 0 1 2 0 2 3.
+  REQUIRE(m.positions.size() == 6u);
+  requireNear(m.positions[0], {0, 0, 0});
+  requireNear(m.positions[1], {2, 0, 0});
+  requireNear(m.positions[2], {1, 1, 0});
+  requireNear(m.positions[5], {0, 3, 0});
+  // TEXCOORD_0 has no buffer view (zeros) and one sparse value, (0.25, 0.75) at vertex 2.
+  REQUIRE(m.uv0.size() == 6u);
+  REQUIRE(m.uv0[0] == glm::vec2(0.0f));
+  REQUIRE(m.uv0[1] == glm::vec2(0.0f));
+  REQUIRE(m.uv0[2] == glm::vec2(0.25f, 0.75f));
+  REQUIRE(m.uv0[4] == glm::vec2(0.25f, 0.75f));
+  REQUIRE(m.uv0[5] == glm::vec2(0.0f));
+}
+
+TEST_CASE("glTF normalized integer attributes and byte strides", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("attributes.gltf"));
+  REQUIRE(s.meshes.size() == 2u);
+  const auto& a = s.meshes[0];
+  // Interleaved position/normal at stride 24.
+  requireNear(a.positions[1], {1, 0, 0});
+  requireNear(a.positions[2], {0, 1, 0});
+  for (const auto& n : a.normals) requireNear(n, {0, 0, 1});
+  // Unsigned bytes / 255 at stride 4: (0,255) (255,0) (128,51).
+  REQUIRE(a.uv0[0].x == 0.0f);
+  REQUIRE(a.uv0[0].y == 1.0f);
+  REQUIRE(a.uv0[1].x == 1.0f);
+  REQUIRE(a.uv0[2].x == Approx(128.0 / 255.0).epsilon(1e-6));
+  REQUIRE(a.uv0[2].y == Approx(0.2).epsilon(1e-6));
+
+  const auto& b = s.meshes[1];
+  // Unsigned shorts / 65535: 32768 -> 0.500007..., 13107 -> 0.2.
+  REQUIRE(b.uv0[0] == glm::vec2(0.0f, 1.0f));
+  REQUIRE(b.uv0[1].x == Approx(32768.0 / 65535.0).epsilon(1e-6));
+  REQUIRE(b.uv0[2].y == Approx(0.2).epsilon(1e-6));
+  // Signed bytes: max(c / 127, -1), so both 127 and -128 are unit: (0,0,1) (0,0,1) (-1,0,0).
+  requireNear(b.normals[0], {0, 0, 1});
+  requireNear(b.normals[1], {0, 0, 1});
+  requireNear(b.normals[2], {-1, 0, 0});
+  // Signed shorts: max(c / 32767, -1): (1,0,0,-1) (1,0,0,-1 from -32768) ... w keeps its sign.
+  requireNear(glm::vec3(b.tangents[0]), {1, 0, 0});
+  REQUIRE(b.tangents[0].w == -1.0f);
+  requireNear(glm::vec3(b.tangents[1]), {0, 1, 0});
+  REQUIRE(b.tangents[1].w == -1.0f);
+  requireNear(glm::vec3(b.tangents[2]), {0, 0, -1});
+  REQUIRE(b.tangents[2].w == -1.0f);
+}
+
+TEST_CASE("glTF primitives without normals are flat-shaded", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("generated.gltf"));
+  const auto& fold = s.meshes[0];
+  // Two triangles sharing an edge become 6 vertices.
+  REQUIRE(fold.positions.size() == 6u);
+  REQUIRE(fold.normals.size() == 6u);
+  // Triangle (0,0,0) (1,0,0) (0,1,0): +z.
+  for (int i = 0; i < 3; ++i) requireNear(fold.normals[size_t(i)], {0, 0, 1});
+  // Triangle (1,0,0) (1,1,1) (0,1,0): (0,1,1) x (-1,1,0) = (-1,-1,1), over sqrt 3.
+  const float k = 1.0f / std::sqrt(3.0f);
+  for (int i = 3; i < 6; ++i) requireNear(fold.normals[size_t(i)], {-k, -k, k});
+  // UVs follow their vertices: vertex 3 of the file (uv (0,0)) is the second
+  // triangle's second corner.
+  REQUIRE(fold.uv0[4] == glm::vec2(0.0f, 0.0f));
+}
+
+TEST_CASE("glTF tangents are generated from UVs", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("generated.gltf"));
+  REQUIRE(s.meshes.size() == 4u);
+  // Quad in the xy plane, normal +z, u along +x and v down (along -y): the
+  // tangent is +x and cross(n, t) = +y points to decreasing v: w = +1.
+  for (const auto& t : s.meshes[1].tangents) {
+    requireNear(glm::vec3(t), {1, 0, 0});
+    REQUIRE(t.w == 1.0f);
+  }
+  // u mirrored (along -x): tangent -x, cross(n, t) = -y but the image's up is
+  // still +y: left-handed, w = -1.
+  for (const auto& t : s.meshes[2].tangents) {
+    requireNear(glm::vec3(t), {-1, 0, 0});
+    REQUIRE(t.w == -1.0f);
+  }
+  // Normals tilted to n = (0.6, 0, 0.8): Gram-Schmidt of +x gives
+  // (1,0,0) - 0.6 n = (0.64, 0, -0.48) -> (0.8, 0, -0.6), orthogonal to n;
+  // cross(n, t) = (0, 1, 0): w = +1.
+  const auto& tilted = s.meshes[3];
+  for (size_t i = 0; i < tilted.tangents.size(); ++i) {
+    requireNear(glm::vec3(tilted.tangents[i]), {0.8f, 0, -0.6f});
+    REQUIRE(std::abs(glm::dot(glm::vec3(tilted.tangents[i]), tilted.normals[i])) < 1e-6f);
+    REQUIRE(tilted.tangents[i].w == 1.0f);
+  }
+  // The flat-shaded fold has UVs too: its generated tangents are unit and
+  // orthogonal to the face normals.
+  for (size_t i = 0; i < s.meshes[0].tangents.size(); ++i) {
+    const glm::vec3 t(s.meshes[0].tangents[i]);
+    REQUIRE(glm::length(t) == Approx(1.0f));
+    REQUIRE(std::abs(glm::dot(t, s.meshes[0].normals[i])) < 1e-6f);
+  }
+}
+
+TEST_CASE("glTF strips and fans become triangle lists; points and lines are skipped", "[gltf]") {
+  const auto r = scene::importGltf(gltf("modes.gltf"));
+  // Strip corners v0 (0,0,0), v1 (1,0,0), v2 (0,1,0), v3 (1,1,0); flat
+  // normals unweld the corners in triangle order.
+  REQUIRE(r.scene.meshes.size() == 2u);
+  REQUIRE(hasWarning(r, "primitive 0: mode 0 is not made of triangles"));
+  REQUIRE(hasWarning(r, "primitive 1: mode 1 is not made of triangles"));
+  // Strip: (v0 v1 v2), then (v1 v3 v2): every other triangle reversed, so
+  // both keep the first one's counter-clockwise winding (+z).
+  const auto& strip = r.scene.meshes[0];
+  REQUIRE(strip.triangleCount() == 2u);
+  requireNear(strip.positions[3], {1, 0, 0});
+  requireNear(strip.positions[4], {1, 1, 0});
+  requireNear(strip.positions[5], {0, 1, 0});
+  // Fan corners v0 (0,0,0), v1 (1,0,0), v2 (1,1,0), v3 (0,1,0):
+  // triangles (v1 v2 v0), (v2 v3 v0).
+  const auto& fan = r.scene.meshes[1];
+  REQUIRE(fan.triangleCount() == 2u);
+  requireNear(fan.positions[0], {1, 0, 0});
+  requireNear(fan.positions[2], {0, 0, 0});
+  requireNear(fan.positions[3], {1, 1, 0});
+  requireNear(fan.positions[4], {0, 1, 0});
+  for (const auto* m : {&strip, &fan})
+    for (const auto& n : m->normals) requireNear(n, {0, 0, 1});
+}
+
+TEST_CASE("glTF textures are decoded but not applied yet, with a warning", "[gltf]") {
+  const auto r = scene::importGltf(gltf("textured.gltf"));
+  REQUIRE(hasWarning(r, "textures are not supported yet; 1 textured material(s)"));
+  // The factor still applies.
+  REQUIRE(r.scene.materials[0].baseColor == glm::vec3(0.5f));
+}
+
+TEST_CASE("glTF .glb, external and embedded buffers load the same triangle", "[gltf]") {
+  for (const char* name : {"triangle.glb", "external.gltf", "embedded.gltf"}) {
+    INFO(name);
+    const auto s = scene::loadGltf(gltf(name));
+    REQUIRE(s.meshes.size() == 1u);
+    REQUIRE(s.instances.size() == 1u);
+    const auto& m = s.meshes[0];
+    REQUIRE(m.triangleCount() == 1u);
+    // Flat normal of (0,0,0) (1,0,0) (0,1,0) is +z.
+    requireNear(world(s, s.instances[0], 1), {1, 0, 0});
+    requireNear(world(s, s.instances[0], 2), {0, 1, 0});
+    requireNear(m.normals[0], {0, 0, 1});
+  }
+}
+
+TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[gltf]") {
+  const auto r = scene::importGltf(gltf("materials.gltf"));
+  const auto& s = r.scene;
+  for (const auto& m : s.materials) REQUIRE(m.model == scene::MaterialModel::Lambert);
+
+  const auto& base = materialNamed(s, "base");
+  REQUIRE(base.baseColor == glm::vec3(0.5f, 0.25f, 1.0f));
+  REQUIRE(base.metallic == Approx(0.3f));
+  REQUIRE(base.roughness == Approx(0.7f));
+  // ior 1.5: F0 = (0.5 / 2.5)^2 = 0.04 = 0.08 * specular.
+  REQUIRE(base.specular == Approx(0.5f));
+  REQUIRE(base.specTrans == 0.0f);
+
+  // emissiveFactor (1, 0.5, 0.25) x emissiveStrength 4.
+  REQUIRE(materialNamed(s, "emissive").emission == glm::vec3(4.0f, 2.0f, 1.0f));
+
+  // transmission 0.9, ior 1.33: F0 = (0.33 / 2.33)^2 = 0.0200593, specular = F0 / 0.08;
+  // no volume: thin-walled.
+  const auto& glass = materialNamed(s, "glass");
+  REQUIRE(glass.specTrans == Approx(0.9f));
+  REQUIRE(glass.ior == Approx(1.33f));
+  REQUIRE(glass.specular == Approx(0.0200593 / 0.08).epsilon(1e-4));
+  REQUIRE(glass.thin);
+
+  // A volume with thickness > 0 refracts (not thin); attenuation is not simulated.
+  const auto& volume = materialNamed(s, "volume");
+  REQUIRE(volume.specTrans == 1.0f);
+  REQUIRE_FALSE(volume.thin);
+  REQUIRE(hasWarning(r, "volume attenuation"));
+
+  // clearcoat 0.8; roughness 0.2 -> alpha 0.04 = lerp(0.1, 0.001, g): g = 0.06 / 0.099.
+  const auto& coat = materialNamed(s, "coat");
+  REQUIRE(coat.clearcoat == Approx(0.8f));
+  REQUIRE(coat.clearcoatGloss == Approx(0.06 / 0.099).epsilon(1e-5));
+
+  // F0 = 0.04 x max(specularColor) 0.8 x specularFactor 0.5 = 0.016 -> specular 0.2.
+  REQUIRE(materialNamed(s, "specular").specular == Approx(0.2f));
+
+  // Sheen strength is the colour's largest channel, untinted.
+  const auto& sheen = materialNamed(s, "sheen");
+  REQUIRE(sheen.sheen == Approx(0.6f));
+  REQUIRE(sheen.sheenTint == 0.0f);
+
+  // Unset factors take glTF's defaults: white, metallic 1, roughness 1.
+  const auto& defaults = materialNamed(s, "defaults");
+  REQUIRE(defaults.baseColor == glm::vec3(1.0f));
+  REQUIRE(defaults.metallic == 1.0f);
+  REQUIRE(defaults.roughness == 1.0f);
+  REQUIRE(defaults.emission == glm::vec3(0.0f));
+
+  // 10 primitives: 'mask' (alpha 0.2 < cutoff 0.5) is cut away; the one
+  // without a material gets glTF's default material.
+  REQUIRE(s.meshes.size() == 9u);
+  const auto& last = s.materials[s.meshes.back().material];
+  REQUIRE(last.baseColor == glm::vec3(1.0f));
+  REQUIRE(last.metallic == 1.0f);
+  for (const auto& mesh : s.meshes) REQUIRE(s.materials[mesh.material].name != "mask");
+}
+
+TEST_CASE("glTF emissive primitives are emitters", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("emissive_quad.gltf"));
+  size_t emissive = 0;
+  for (const auto& m : s.meshes)
+    if (s.materials[m.material].isEmissive()) {
+      ++emissive;
+      REQUIRE(s.materials[m.material].emission == glm::vec3(10.0f));
+    }
+  REQUIRE(emissive == 1u);
+}
+
+TEST_CASE("glTF cameras: the first in node order is the view, others by name", "[gltf]") {
+  const auto r = scene::importGltf(gltf("cameras.gltf"));
+  auto s = r.scene;
+  // Node 1 'front' (camera 'second') precedes node 2 'side' although the
+  // scene lists node 2 first; the orthographic camera is skipped with a warning.
+  REQUIRE(s.cameras.size() == 2u);
+  REQUIRE(hasWarning(r, "orthographic"));
+  requireNear(s.camera.position, {0, 0, 5});
+  requireNear(s.camera.forward, {0, 0, -1});
+  requireNear(s.camera.up, {0, 1, 0});
+  // yfov 0.8 rad in degrees.
+  REQUIRE(s.camera.verticalFovDegrees == Approx(0.8 * 180.0 / 3.14159265358979));
+
+  // By node name: 'side' at (5,0,0) turned 90 degrees about +y: -z -> -x.
+  scene::selectCamera(s, "side");
+  requireNear(s.camera.position, {5, 0, 0});
+  requireNear(s.camera.forward, {-1, 0, 0});
+  REQUIRE(s.camera.verticalFovDegrees == Approx(0.5 * 180.0 / 3.14159265358979));
+  // By camera name.
+  scene::selectCamera(s, "second");
+  requireNear(s.camera.position, {0, 0, 5});
+  REQUIRE_THROWS_WITH(scene::selectCamera(s, "nope"),
+                      ContainsSubstring("no camera named 'nope'") && ContainsSubstring("'second'"));
+}
+
+TEST_CASE("glTF without cameras frames the scene", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("embedded.gltf"));
+  REQUIRE(s.cameras.empty());
+  // Bounds (0,0,0)..(1,1,0): the view looks down -z at their centre.
+  requireNear(s.camera.forward, {0, 0, -1});
+  REQUIRE(s.camera.position.x == Approx(0.5f));
+  REQUIRE(s.camera.position.y == Approx(0.5f));
+  REQUIRE(s.camera.position.z > 1.0f);
+}
+
+TEST_CASE("glTF extensions: required unsupported fails, optional warns", "[gltf]") {
+  REQUIRE_THROWS_WITH(scene::importGltf(gltf("extension_required.gltf")),
+                      ContainsSubstring("extension_required.gltf") &&
+                          ContainsSubstring("requires extension KHR_draco_mesh_compression"));
+  const auto r = scene::importGltf(gltf("extension_optional.gltf"));
+  REQUIRE(r.warnings.size() == 1u);
+  REQUIRE_THAT(r.warnings[0], ContainsSubstring("KHR_materials_unlit") &&
+                                  ContainsSubstring("extension_optional.gltf"));
+  REQUIRE(r.warnings[0].find('\n') == std::string::npos);
+  // Supported extensions in extensionsUsed are silent.
+  REQUIRE_FALSE(hasWarning(scene::importGltf(gltf("materials.gltf")), "KHR_materials_sheen"));
+}
+
+TEST_CASE("bad glTF input gives one clear error naming the file and the part", "[gltf]") {
+  struct Case {
+    const char* file;
+    const char* part;
+  };
+  const Case cases[] = {
+      {"invalid_truncated.gltf", "parse error at line"},
+      {"invalid_accessor_range.gltf", "accessor 0"},
+      {"invalid_short_buffer.gltf", "buffer view 1"},
+      {"invalid_missing_buffer.gltf", "missing.bin"},
+      {"invalid_missing_image.gltf", "missing.png"},
+      {"invalid_index.gltf", "index 7"},
+      {"invalid_cycle.gltf", "cyclic"},
+      {"invalid_nan.gltf", "not a finite number"},
+      {"invalid_accessor_index.gltf", "accessor 9"},
+      {"no_such_file.gltf", "no such file"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.file);
+    try {
+      scene::importGltf(gltf(c.file));
+      FAIL("no error");
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      INFO(message);
+      REQUIRE(message.find(c.file) != std::string::npos);
+      REQUIRE(message.find(c.part) != std::string::npos);
+      REQUIRE(message.find('\n') == std::string::npos);
+    }
+  }
+}
