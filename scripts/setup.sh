@@ -24,6 +24,11 @@ BASE_PACKAGES=(
   libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-dev libstb-dev
   libtinyexr-dev libfmt-dev libboost-dev
   clang-format
+  # The viewer: GLFW (its native-window header needs Xrandr's), Dear ImGui
+  # (core library + backend sources), and a virtual X server for its tests.
+  libglfw3-dev libxrandr-dev libimgui-dev xvfb xauth
+  # The viewer's on-screen test: xwd captures the window, netpbm compares it.
+  x11-apps netpbm
   # The Windows cross build (scripts/build-windows-cross.sh): compiler, and
   # zlib for tinyexr; DirectX-Headers come from backports below.
   g++-mingw-w64-x86-64-posix libz-mingw-w64-dev

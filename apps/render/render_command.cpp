@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <regex>
+#include <tuple>
 
 #include "backend_factory.h"
 #include "commands.h"
@@ -10,6 +11,7 @@
 #include "progress.h"
 #include "render/effect_set.h"
 #include "render/path_tracer.h"
+#include "render/render_job.h"
 #include "render/tonemapper.h"
 #include "scene/material_row.h"
 #include "scene/scene_loader.h"
@@ -40,6 +42,8 @@ struct RenderOptions {
   bool allEffects = false;
   bool printEffects = false;
   float exposure = 1.0f;
+  render::ToneMapOperator toneOperator = render::ToneMapOperator::Clamp;
+  std::string settingsFile;
 };
 
 }  // namespace
@@ -57,12 +61,41 @@ std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text) {
 
 namespace {
 
-int runRender(const RenderOptions& o) {
-  auto [width, height] = parseImageSize(o.size);
+// The job the options describe: a --settings file (a viewer screenshot's
+// record) with the options given explicitly on top, or the options alone.
+render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
+  const bool fromFile = !o.settingsFile.empty();
+  render::RenderJob job = fromFile ? render::loadRenderJob(o.settingsFile) : render::RenderJob{};
+  auto given = [&](const char* flag) { return !fromFile || cmd.count(flag) > 0; };
+  if (given("--scene")) job.scene = o.scene;
+  if (given("--vary")) job.vary = o.vary;
+  if (given("--set")) job.set = o.set;
+  if (given("--size")) std::tie(job.width, job.height) = parseImageSize(o.size);
+  if (given("--spp")) job.spp = o.spp;
+  if (given("--spp-per-frame")) job.sppPerFrame = o.sppPerFrame;
+  auto& s = job.settings;
+  if (given("--seed")) s.seed = o.seed;
+  if (given("--max-depth")) s.maxDepth = o.maxDepth;
+  if (given("--integrator")) s.integrator = o.integrator;
+  if (given("--strategy")) s.strategy = o.strategy;
+  if (given("--mis-heuristic")) s.misHeuristic = o.heuristic;
+  if (given("--clamp")) s.radianceClamp = o.clamp;
+  if (given("--no-russian-roulette")) s.russianRoulette = !o.noRoulette;
+  if (given("--exposure")) job.toneMapping.exposure = o.exposure;
+  if (given("--tonemap")) job.toneMapping.toneOperator = o.toneOperator;
+  if (given("--all-effects")) job.allEffects = o.allEffects;
+  // A scene camera named on the command line wins over the record's camera.
+  if (fromFile && cmd.count("--camera") > 0) job.camera.reset();
+  return job;
+}
+
+int runRender(const RenderOptions& o, const CLI::App& cmd) {
   // Everything that can fail on bad input fails before any rendering starts.
-  scene::Scene scene = scene::loadScene(o.scene);
+  const render::RenderJob job = makeJob(o, cmd);
+  const uint32_t width = job.width, height = job.height;
+  scene::Scene scene = scene::loadScene(job.scene);
   if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
-  if (!o.vary.empty() || !o.set.empty()) scene::changeMaterialRow(scene, o.vary, o.set);
+  if (!job.vary.empty() || !job.set.empty()) scene::changeMaterialRow(scene, job.vary, job.set);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
     return 0;
@@ -77,33 +110,28 @@ int runRender(const RenderOptions& o) {
   fmt::print("device: {} ({}, {}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              adapter.apiVersion, device->backendName());
   fmt::print("scene: {} ({} triangles, {} implicit objects), {}x{}, {} spp, seed {}\n", scene.name,
-             scene.triangleCount(), scene.implicits.size(), width, height, o.spp, o.seed);
-  if (o.clamp > 0.0f)
-    fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n", o.clamp);
+             scene.triangleCount(), scene.implicits.size(), width, height, job.spp, job.settings.seed);
+  if (job.settings.radianceClamp > 0.0f)
+    fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n",
+               job.settings.radianceClamp);
   std::fflush(stdout);  // before the progress lines on stderr
 
   render::PipelineOptions pipeline;
-  pipeline.allEffects = o.allEffects;
+  pipeline.allEffects = job.allEffects;
   render::PathTracer tracer(*device, scene, width, height, pipeline);
+  if (job.camera) tracer.setCamera(*job.camera);
   std::string effects;
   for (const auto& name : render::effectNames(tracer.pipelineEffects()))
     effects += (effects.empty() ? "" : ", ") + name;
   fmt::print("pipeline effects: {}{}\n", effects.empty() ? "none" : effects,
-             o.allEffects ? " (--all-effects)" : "");
-  render::PathTracerSettings settings;
-  settings.seed = o.seed;
-  settings.maxDepth = o.maxDepth;
-  settings.integrator = o.integrator;
-  settings.strategy = o.strategy;
-  settings.misHeuristic = o.heuristic;
-  settings.radianceClamp = o.clamp;
-  settings.russianRoulette = !o.noRoulette;
+             job.allEffects ? " (--all-effects)" : "");
+  const render::PathTracerSettings& settings = job.settings;
 
-  Progress progress(o.spp);
+  Progress progress(job.spp);
   double gpuSeconds = 0;
   uint64_t rays = 0;
-  while (tracer.accumulatedSamples() < o.spp) {
-    const uint32_t n = std::min(o.sppPerFrame, o.spp - tracer.accumulatedSamples());
+  while (tracer.accumulatedSamples() < job.spp) {
+    const uint32_t n = std::min(job.sppPerFrame, job.spp - tracer.accumulatedSamples());
     auto stats = tracer.renderFrame(settings, n);
     gpuSeconds += stats.gpuSeconds;
     rays += stats.rays;
@@ -115,10 +143,11 @@ int runRender(const RenderOptions& o) {
     image::saveExr(o.out, tracer.readback());
   } else {
     render::Tonemapper tonemapper(*device);
-    image::savePng(o.out, tonemapper.run(tracer.accumulation(), o.exposure));
+    image::savePng(o.out, tonemapper.run(tracer.accumulation(), job.toneMapping.exposure,
+                                         job.toneMapping.toneOperator));
   }
   fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
-             gpuSeconds * 1e3, gpuSeconds * 1e3 / o.spp);
+             gpuSeconds * 1e3, gpuSeconds * 1e3 / job.spp);
   fmt::print("rays: {} ({:.2f} Mrays/s)\n", rays, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0);
   fmt::print("wrote {}\n", o.out);
   if (o.validation && device->validationMessageCount() > 0) {
@@ -168,6 +197,13 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")->capture_default_str();
+  std::map<std::string, render::ToneMapOperator> toneOperators;
+  for (auto op : render::allToneMapOperators()) toneOperators[render::toneMapOperatorName(op)] = op;
+  cmd->add_option("--tonemap", o->toneOperator, "Tone curve for PNG output: clamp | reinhard | aces")
+      ->transform(CLI::CheckedTransformer(toneOperators))->default_str("clamp");
+  cmd->add_option("--settings", o->settingsFile,
+                  "Render settings JSON (written beside each viewer screenshot); options given "
+                  "explicitly override its values");
   cmd->add_option("--vary", o->vary,
                   "material-test: the Disney parameter that goes from 0 to 1 along the row");
   cmd->add_option("--set", o->set,
@@ -177,7 +213,7 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_flag("--print-effects", o->printEffects,
                 "List the effects the scene calls for, one per line, and exit");
   cmd->add_flag("--validation", o->validation, "Enable the API validation layer; fail on any message");
-  return [o] { return runRender(*o); };
+  return [o, cmd] { return runRender(*o, *cmd); };
 }
 
 }  // namespace penumbra::app

@@ -97,6 +97,8 @@ class D3D12Buffer final : public rhi::IBuffer {
 class D3D12Texture final : public rhi::ITexture {
  public:
   D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc);
+  // A resource made elsewhere (a swapchain back buffer).
+  D3D12Texture(const rhi::TextureDesc& desc, ComPtr<ID3D12Resource> resource);
   const rhi::TextureDesc& desc() const override { return desc_; }
   ID3D12Resource* resource() const { return resource_.Get(); }
   DXGI_FORMAT format() const;
@@ -253,6 +255,7 @@ class D3D12CommandList final : public rhi::ICommandList {
   void copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
                   uint64_t bytes) override;
   void copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) override;
+  void copyTexture(rhi::ITexture* dst, rhi::ITexture* src) override;
   void clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) override;
   void clearBufferUint(rhi::IBuffer* buffer, uint32_t value) override;
   void setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) override;
@@ -272,6 +275,8 @@ class D3D12CommandList final : public rhi::ICommandList {
   ID3D12GraphicsCommandList4* handle() const { return list_.Get(); }
   // Called by the device once the GPU finished this list's work.
   void releaseTransientResources();
+  // The queue fence value that marks this list's last submission as done.
+  void setSubmissionFence(uint64_t value) { submissionFence_ = value; }
 
  private:
   std::shared_ptr<D3D12Buffer> makeTransientBuffer(uint64_t bytes, rhi::BufferUsage usage,
@@ -291,6 +296,7 @@ class D3D12CommandList final : public rhi::ICommandList {
   bool computeBound_ = false;
   std::vector<std::shared_ptr<D3D12Buffer>> transient_;
   std::vector<std::shared_ptr<DescriptorAllocation>> transientDescriptors_;
+  uint64_t submissionFence_ = 0;
 };
 
 class D3D12Device final : public rhi::IDevice {
@@ -307,12 +313,19 @@ class D3D12Device final : public rhi::IDevice {
   rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
   rhi::TimerQueryHandle createTimerQuery() override;
   rhi::CommandListHandle createCommandList() override;
+  rhi::SwapchainHandle createSwapchain(const rhi::SwapchainDesc& desc) override;
   void submit(rhi::ICommandList* commandList) override;
   void waitForIdle() override;
   double timerQuerySeconds(rhi::ITimerQuery* query) override;
   uint64_t validationMessageCount() const override;
 
   ID3D12Device5* handle() const { return device_.Get(); }
+  ID3D12CommandQueue* queue() const { return queue_.Get(); }
+  IDXGIFactory4* factory() const { return factory_.Get(); }
+  // Signals the queue fence and returns the value that marks everything
+  // submitted so far; waitForFence blocks until the GPU has reached it.
+  uint64_t signalQueue();
+  void waitForFence(uint64_t value);
   DescriptorHeap& shaderVisibleHeap() { return *shaderVisibleHeap_; }
   DescriptorHeap& cpuHeap() { return *cpuHeap_; }
   // Throws with the device-removed reason when `hr` is a removal.

@@ -42,10 +42,12 @@ void D3D12CommandList::requireOpen(const char* what) const {
   if (!recording_) throw Error(fmt::format("d3d12: {} on a command list that is not open", what));
 }
 
-// D3D12: allocator Reset + list Reset. The caller has waited for the list's
-// previous submission (waitForIdle), as resetting an allocator requires.
+// D3D12: fence wait for the list's previous submission (resetting an
+// allocator the GPU still reads is an error) + allocator Reset + list Reset.
 void D3D12CommandList::open() {
   if (recording_) throw Error("d3d12: open() on a command list that is already open");
+  device_.waitForFence(submissionFence_);
+  releaseTransientResources();
   check(allocator_->Reset(), "ID3D12CommandAllocator::Reset");
   check(list_->Reset(allocator_.Get(), nullptr), "ID3D12GraphicsCommandList::Reset");
   ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap()};
@@ -206,6 +208,26 @@ void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst
                               rowBytes);
   }
   if (dst->desc().memory == rhi::MemoryLocation::Readback) setBufferState(dst, rhi::ResourceState::HostRead);
+}
+
+// D3D12: CopyTextureRegion between subresource 0 of each; unlike Vulkan's
+// blit there is no conversion, so the formats must match (the D3D12
+// swapchain is RGBA8 for this reason).
+void D3D12CommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
+  requireOpen("copyTexture");
+  const auto &d = dst->desc(), &s = src->desc();
+  if (d.width != s.width || d.height != s.height || d.format != s.format)
+    throw Error(fmt::format("d3d12: copyTexture from '{}' to '{}' needs equal sizes and formats",
+                            s.debugName, d.debugName));
+  setTextureState(src, rhi::ResourceState::CopySource);
+  setTextureState(dst, rhi::ResourceState::CopyDest);
+  D3D12_TEXTURE_COPY_LOCATION from{};
+  from.pResource = static_cast<D3D12Texture*>(src)->resource();
+  from.Type = D3D12_TEXTURE_COPY_TYPE_SUBRESOURCE_INDEX;
+  D3D12_TEXTURE_COPY_LOCATION to{};
+  to.pResource = static_cast<D3D12Texture*>(dst)->resource();
+  to.Type = D3D12_TEXTURE_COPY_TYPE_SUBRESOURCE_INDEX;
+  list_->CopyTextureRegion(&to, 0, 0, 0, &from, nullptr);
 }
 
 // D3D12: ClearUnorderedAccessViewFloat, which wants the UAV twice: in the

@@ -2,7 +2,10 @@
 // debug-layer messages.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "d3d12_backend.h"
+#include "d3d12_swapchain.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -123,22 +126,35 @@ rhi::TimerQueryHandle D3D12Device::createTimerQuery() { return std::make_shared<
 
 rhi::CommandListHandle D3D12Device::createCommandList() { return std::make_shared<D3D12CommandList>(*this); }
 
+rhi::SwapchainHandle D3D12Device::createSwapchain(const rhi::SwapchainDesc& desc) {
+  return std::make_shared<D3D12Swapchain>(*this, desc);
+}
+
 void D3D12Device::submit(rhi::ICommandList* commandList) {
   auto* list = static_cast<D3D12CommandList*>(commandList);
   ID3D12CommandList* lists[] = {list->handle()};
   queue_->ExecuteCommandLists(1, lists);
-  checkDevice(queue_->Signal(fence_.Get(), ++fenceValue_), "ID3D12CommandQueue::Signal");
-  inFlight_.push_back(list);
+  list->setSubmissionFence(signalQueue());
+  // A viewer resubmits the same few lists every frame; list them once.
+  if (std::find(inFlight_.begin(), inFlight_.end(), list) == inFlight_.end()) inFlight_.push_back(list);
 }
 
-void D3D12Device::waitForIdle() {
+uint64_t D3D12Device::signalQueue() {
   checkDevice(queue_->Signal(fence_.Get(), ++fenceValue_), "ID3D12CommandQueue::Signal");
-  if (fence_->GetCompletedValue() < fenceValue_) {
-    checkDevice(fence_->SetEventOnCompletion(fenceValue_, fenceEvent_), "ID3D12Fence::SetEventOnCompletion");
+  return fenceValue_;
+}
+
+void D3D12Device::waitForFence(uint64_t value) {
+  if (fence_->GetCompletedValue() < value) {
+    checkDevice(fence_->SetEventOnCompletion(value, fenceEvent_), "ID3D12Fence::SetEventOnCompletion");
     WaitForSingleObject(fenceEvent_, INFINITE);
   }
   // A removed device completes its fence with UINT64_MAX.
-  if (fence_->GetCompletedValue() == UINT64_MAX) checkDevice(device_->GetDeviceRemovedReason(), "waitForIdle");
+  if (fence_->GetCompletedValue() == UINT64_MAX) checkDevice(device_->GetDeviceRemovedReason(), "fence wait");
+}
+
+void D3D12Device::waitForIdle() {
+  waitForFence(signalQueue());
   for (auto* list : inFlight_) list->releaseTransientResources();
   inFlight_.clear();
   drainMessages();

@@ -11,6 +11,7 @@ namespace penumbra::d3d12 {
 DXGI_FORMAT toDxgiFormat(rhi::Format format) {
   switch (format) {
     case rhi::Format::RGBA8_UNORM: return DXGI_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::BGRA8_UNORM: return DXGI_FORMAT_B8G8R8A8_UNORM;
     case rhi::Format::RGBA32_FLOAT: return DXGI_FORMAT_R32G32B32A32_FLOAT;
     case rhi::Format::RGB32_FLOAT: return DXGI_FORMAT_R32G32B32_FLOAT;
     case rhi::Format::R32_UINT: return DXGI_FORMAT_R32_UINT;
@@ -35,6 +36,8 @@ D3D12_RESOURCE_STATES toResourceStates(rhi::ResourceState state) {
     case S::AccelStructRead: return D3D12_RESOURCE_STATE_RAYTRACING_ACCELERATION_STRUCTURE;
     case S::ShaderTable: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
     case S::HostRead: return D3D12_RESOURCE_STATE_COPY_DEST;  // readback heaps only
+    case S::RenderTarget: return D3D12_RESOURCE_STATE_RENDER_TARGET;
+    case S::Present: return D3D12_RESOURCE_STATE_PRESENT;
   }
   return D3D12_RESOURCE_STATE_COMMON;
 }
@@ -128,6 +131,7 @@ D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : 
   rd.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
   rd.Flags = hasFlag(desc.usage, rhi::TextureUsage::Storage) ? D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS
                                                               : D3D12_RESOURCE_FLAG_NONE;
+  if (hasFlag(desc.usage, rhi::TextureUsage::RenderTarget)) rd.Flags |= D3D12_RESOURCE_FLAG_ALLOW_RENDER_TARGET;
   const auto heap = heapProperties(D3D12_HEAP_TYPE_DEFAULT);
   HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd,
                                                         D3D12_RESOURCE_STATE_COMMON, nullptr,
@@ -135,6 +139,11 @@ D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : 
   if (FAILED(hr))
     throw Error(fmt::format("d3d12: creating texture '{}' ({}x{}) failed: {}", desc.debugName, desc.width,
                             desc.height, hresultName(hr)));
+  setName(resource_.Get(), desc.debugName);
+}
+
+D3D12Texture::D3D12Texture(const rhi::TextureDesc& desc, ComPtr<ID3D12Resource> resource)
+    : desc_(desc), resource_(std::move(resource)) {
   setName(resource_.Get(), desc.debugName);
 }
 

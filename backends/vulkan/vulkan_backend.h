@@ -16,7 +16,8 @@ namespace penumbra::vk {
 // created from it; counts validation warnings/errors for the tests.
 class VulkanInstance {
  public:
-  explicit VulkanInstance(bool validation);
+  // `presentation`: the window system whose surface extensions to enable (None: headless).
+  VulkanInstance(bool validation, rhi::WindowSystem presentation);
   ~VulkanInstance();
   VulkanInstance(const VulkanInstance&) = delete;
   VulkanInstance& operator=(const VulkanInstance&) = delete;
@@ -63,17 +64,21 @@ class VulkanBuffer final : public rhi::IBuffer {
 class VulkanTexture final : public rhi::ITexture {
  public:
   VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc);
+  // A view of an image the texture does not own (a swapchain image).
+  VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc, VkImage externalImage);
   ~VulkanTexture() override;
   const rhi::TextureDesc& desc() const override { return desc_; }
   VkImage image() const { return image_; }
   VkImageView view() const { return view_; }
 
  private:
+  void createView();
   VulkanDevice& device_;
   rhi::TextureDesc desc_;
   VkImage image_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  bool ownsImage_ = true;
 };
 
 // The geometry arrays vkCmdBuildAccelerationStructuresKHR and
@@ -232,6 +237,7 @@ class VulkanCommandList final : public rhi::ICommandList {
   void copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
                   uint64_t bytes) override;
   void copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) override;
+  void copyTexture(rhi::ITexture* dst, rhi::ITexture* src) override;
   void clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) override;
   void clearBufferUint(rhi::IBuffer* buffer, uint32_t value) override;
   void setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) override;
@@ -274,8 +280,10 @@ class VulkanCommandList final : public rhi::ICommandList {
 
 class VulkanDevice final : public rhi::IDevice {
  public:
+  // A `presentWindow` other than WindowSystem::None enables VK_KHR_swapchain
+  // and requires the queue to present to that window.
   VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalDevice physicalDevice,
-               rhi::AdapterInfo adapter);
+               rhi::AdapterInfo adapter, const rhi::NativeWindow& presentWindow);
   ~VulkanDevice() override;
   const char* backendName() const override { return "vulkan"; }
   const rhi::AdapterInfo& adapter() const override { return adapter_; }
@@ -287,13 +295,19 @@ class VulkanDevice final : public rhi::IDevice {
   rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
   rhi::TimerQueryHandle createTimerQuery() override;
   rhi::CommandListHandle createCommandList() override;
+  rhi::SwapchainHandle createSwapchain(const rhi::SwapchainDesc& desc) override;
   void submit(rhi::ICommandList* commandList) override;
+  // submit() that also waits for and signals semaphores (the swapchain's).
+  void submit(rhi::ICommandList* commandList, VkSemaphore wait, VkSemaphore signal);
   void waitForIdle() override;
   double timerQuerySeconds(rhi::ITimerQuery* query) override;
   uint64_t validationMessageCount() const override { return instance_->validationMessages(); }
 
   VkDevice handle() const { return device_; }
+  VkInstance instance() const { return instance_->handle(); }
   VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+  VkQueue queue() const { return queue_; }
+  bool canPresent() const { return canPresent_; }
   uint32_t queueFamily() const { return queueFamily_; }
   uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
   uint64_t scratchAlignment() const { return scratchAlignment_; }
@@ -311,6 +325,7 @@ class VulkanDevice final : public rhi::IDevice {
   uint64_t scratchAlignment_ = 128;
   double timestampPeriodNs_ = 1.0;
   uint32_t timestampValidBits_ = 64;
+  bool canPresent_ = false;
   std::vector<VulkanCommandList*> inFlight_;
 };
 

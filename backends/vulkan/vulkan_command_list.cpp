@@ -39,6 +39,11 @@ StageAccess stageAccess(rhi::ResourceState state) {
     case S::ShaderTable:
       return {VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT};
     case S::HostRead: return {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
+    case S::RenderTarget:
+      return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+              VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
+    // The presentation engine's reads are ordered by the present semaphore.
+    case S::Present: return {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0};
   }
   return {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT};
 }
@@ -50,13 +55,15 @@ VkImageLayout imageLayout(rhi::ResourceState state) {
     case rhi::ResourceState::Undefined: return VK_IMAGE_LAYOUT_UNDEFINED;
     case rhi::ResourceState::CopySource: return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     case rhi::ResourceState::CopyDest: return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    case rhi::ResourceState::RenderTarget: return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    case rhi::ResourceState::Present: return VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
     default: return VK_IMAGE_LAYOUT_GENERAL;
   }
 }
 
 bool isWriteState(rhi::ResourceState s) {
   return s == rhi::ResourceState::UnorderedAccess || s == rhi::ResourceState::CopyDest ||
-         s == rhi::ResourceState::AccelStructWrite;
+         s == rhi::ResourceState::AccelStructWrite || s == rhi::ResourceState::RenderTarget;
 }
 
 // Whether moving from `from` to `to` needs a barrier: always after a write
@@ -215,6 +222,38 @@ void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* ds
                          1, &region);
   if (dst->desc().memory == rhi::MemoryLocation::Readback)
     setBufferState(dst, rhi::ResourceState::HostRead);
+}
+
+void VulkanCommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
+  requireOpen("copyTexture");
+  const auto &d = dst->desc(), &s = src->desc();
+  if (d.width != s.width || d.height != s.height)
+    throw Error(fmt::format("vulkan: copyTexture from '{}' ({}x{}) to '{}' ({}x{}): sizes differ",
+                            s.debugName, s.width, s.height, d.debugName, d.width, d.height));
+  if (rhi::formatByteSize(d.format) != rhi::formatByteSize(s.format))
+    throw Error(fmt::format("vulkan: copyTexture from '{}' to '{}': formats differ in size",
+                            s.debugName, d.debugName));
+  setTextureState(src, rhi::ResourceState::CopySource);
+  setTextureState(dst, rhi::ResourceState::CopyDest);
+  VkImage from = static_cast<VulkanTexture*>(src)->image();
+  VkImage to = static_cast<VulkanTexture*>(dst)->image();
+  const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  if (d.format == s.format) {
+    VkImageCopy region{};
+    region.srcSubresource = region.dstSubresource = layers;
+    region.extent = {d.width, d.height, 1};
+    vkCmdCopyImage(commandBuffer_, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    return;
+  }
+  // A raw copy would keep the bytes and swap red and blue; a 1:1 blit
+  // converts between channel orders.
+  VkImageBlit blit{};
+  blit.srcSubresource = blit.dstSubresource = layers;
+  blit.srcOffsets[1] = {int32_t(s.width), int32_t(s.height), 1};
+  blit.dstOffsets[1] = {int32_t(d.width), int32_t(d.height), 1};
+  vkCmdBlitImage(commandBuffer_, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
 }
 
 void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) {

@@ -1,14 +1,29 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <string_view>
 
 #include "util/error.h"
 #include "vulkan_backend.h"
+#include "vulkan_surface.h"
+#include "vulkan_swapchain.h"
 
 namespace penumbra::vk {
 
+namespace {
+bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> exts(count);
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, exts.data());
+  for (const auto& e : exts)
+    if (std::string_view(e.extensionName) == name) return true;
+  return false;
+}
+}  // namespace
+
 VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalDevice physicalDevice,
-                           rhi::AdapterInfo adapter)
+                           rhi::AdapterInfo adapter, const rhi::NativeWindow& presentWindow)
     : instance_(std::move(instance)), physicalDevice_(physicalDevice), adapter_(std::move(adapter)) {
   uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
@@ -45,9 +60,25 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
 
-  const char* extensions[] = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-                              VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  std::vector<const char*> extensions = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                                         VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                                         VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  if (presentWindow.system != rhi::WindowSystem::None) {
+    // One queue does everything (ray tracing, the UI, presentation), so the
+    // queue chosen above must also present to this window.
+    if (!hasDeviceExtension(physicalDevice_, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+      throw Error(fmt::format("vulkan: {} cannot present (no VK_KHR_swapchain)", adapter_.name));
+    VulkanSurface probe(instance_->handle(), presentWindow);
+    VkBool32 supported = VK_FALSE;
+    check(vkGetPhysicalDeviceSurfaceSupportKHR(physicalDevice_, queueFamily_, probe.handle(), &supported),
+          "vkGetPhysicalDeviceSurfaceSupportKHR");
+    if (!supported)
+      throw Error(fmt::format("vulkan: the queue family {} of {} cannot present to this {} window",
+                              queueFamily_, adapter_.name,
+                              rhi::windowSystemName(presentWindow.system)));
+    extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    canPresent_ = true;
+  }
 
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rtFeatures{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
@@ -66,8 +97,8 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   create.pNext = &features;
   create.queueCreateInfoCount = 1;
   create.pQueueCreateInfos = &queueInfo;
-  create.enabledExtensionCount = uint32_t(std::size(extensions));
-  create.ppEnabledExtensionNames = extensions;
+  create.enabledExtensionCount = uint32_t(extensions.size());
+  create.ppEnabledExtensionNames = extensions.data();
   check(vkCreateDevice(physicalDevice_, &create, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
   setName(VK_OBJECT_TYPE_DEVICE, uint64_t(device_), adapter_.name);
@@ -146,16 +177,39 @@ rhi::CommandListHandle VulkanDevice::createCommandList() {
   return std::make_shared<VulkanCommandList>(*this);
 }
 
+rhi::SwapchainHandle VulkanDevice::createSwapchain(const rhi::SwapchainDesc& desc) {
+  if (!canPresent_)
+    throw Error("vulkan: createSwapchain on a device created without presentWindow");
+  return std::make_shared<VulkanSwapchain>(*this, desc);
+}
+
 void VulkanDevice::submit(rhi::ICommandList* commandList) {
+  submit(commandList, VK_NULL_HANDLE, VK_NULL_HANDLE);
+}
+
+void VulkanDevice::submit(rhi::ICommandList* commandList, VkSemaphore wait, VkSemaphore signal) {
   auto* list = static_cast<VulkanCommandList*>(commandList);
   VkCommandBuffer cb = list->handle();
   VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   info.commandBufferCount = 1;
   info.pCommandBuffers = &cb;
+  // The whole list waits for the acquired image: its first command may
+  // already be the back buffer's layout transition.
+  const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+  if (wait) {
+    info.waitSemaphoreCount = 1;
+    info.pWaitSemaphores = &wait;
+    info.pWaitDstStageMask = &waitStage;
+  }
+  if (signal) {
+    info.signalSemaphoreCount = 1;
+    info.pSignalSemaphores = &signal;
+  }
   VkFence fence = list->fence();
   check(vkResetFences(device_, 1, &fence), "vkResetFences");
   check(vkQueueSubmit(queue_, 1, &info, fence), "vkQueueSubmit");
-  inFlight_.push_back(list);
+  // A viewer resubmits the same few lists every frame; list them once.
+  if (std::find(inFlight_.begin(), inFlight_.end(), list) == inFlight_.end()) inFlight_.push_back(list);
 }
 
 void VulkanDevice::waitForIdle() {

@@ -66,6 +66,11 @@ void loadInstanceFunctions(VkInstance instance) {
 #undef PENUMBRA_VK_LOAD
 }
 
+PFN_vkGetInstanceProcAddr instanceProcAddr() {
+  std::lock_guard lock(gMutex);
+  return gGetInstanceProcAddr;
+}
+
 const char* resultName(VkResult result) {
   switch (result) {
 #define PENUMBRA_CASE(r) \
@@ -86,6 +91,10 @@ const char* resultName(VkResult result) {
     PENUMBRA_CASE(VK_ERROR_TOO_MANY_OBJECTS)
     PENUMBRA_CASE(VK_ERROR_FORMAT_NOT_SUPPORTED)
     PENUMBRA_CASE(VK_ERROR_OUT_OF_POOL_MEMORY)
+    PENUMBRA_CASE(VK_ERROR_SURFACE_LOST_KHR)
+    PENUMBRA_CASE(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
+    PENUMBRA_CASE(VK_ERROR_OUT_OF_DATE_KHR)
+    PENUMBRA_CASE(VK_SUBOPTIMAL_KHR)
 #undef PENUMBRA_CASE
     default: return "VkResult error";
   }

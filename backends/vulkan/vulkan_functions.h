@@ -6,7 +6,9 @@
 //
 // Every function is fetched with vkGetInstanceProcAddr, so device-level calls
 // go through the loader's trampolines and work for any number of devices.
+#ifndef VK_NO_PROTOTYPES
 #define VK_NO_PROTOTYPES
+#endif
 #include <vulkan/vulkan.h>
 
 #define PENUMBRA_VK_LOADER_FUNCTIONS(X) \
@@ -27,7 +29,12 @@
   X(vkCreateDevice)                            \
   X(vkCreateDebugUtilsMessengerEXT)            \
   X(vkDestroyDebugUtilsMessengerEXT)           \
-  X(vkSetDebugUtilsObjectNameEXT)
+  X(vkSetDebugUtilsObjectNameEXT)              \
+  X(vkDestroySurfaceKHR)                       \
+  X(vkGetPhysicalDeviceSurfaceSupportKHR)      \
+  X(vkGetPhysicalDeviceSurfaceCapabilitiesKHR) \
+  X(vkGetPhysicalDeviceSurfaceFormatsKHR)      \
+  X(vkGetPhysicalDeviceSurfacePresentModesKHR)
 
 #define PENUMBRA_VK_DEVICE_FUNCTIONS(X)            \
   X(vkDestroyDevice)                               \
@@ -93,7 +100,16 @@
   X(vkCmdBuildAccelerationStructuresKHR)           \
   X(vkCreateRayTracingPipelinesKHR)                \
   X(vkGetRayTracingShaderGroupHandlesKHR)          \
-  X(vkCmdTraceRaysKHR)
+  X(vkCmdTraceRaysKHR)                             \
+  X(vkCmdCopyImage)                                \
+  X(vkCmdBlitImage)                                \
+  X(vkCreateSemaphore)                             \
+  X(vkDestroySemaphore)                            \
+  X(vkCreateSwapchainKHR)                          \
+  X(vkDestroySwapchainKHR)                         \
+  X(vkGetSwapchainImagesKHR)                       \
+  X(vkAcquireNextImageKHR)                         \
+  X(vkQueuePresentKHR)
 
 namespace penumbra::vk {
 #define PENUMBRA_VK_DECLARE(name) extern PFN_##name name;
@@ -107,6 +123,10 @@ PENUMBRA_VK_DEVICE_FUNCTIONS(PENUMBRA_VK_DECLARE)
 void loadLoader();
 // Fetches every instance- and device-level function through `instance`.
 void loadInstanceFunctions(VkInstance instance);
+// The loader's vkGetInstanceProcAddr (after loadLoader): window-system
+// functions whose prototypes need platform headers, and the viewer's UI
+// renderer, load through it.
+PFN_vkGetInstanceProcAddr instanceProcAddr();
 
 // Throws penumbra::Error("<what>: <VkResult name>") unless result is VK_SUCCESS.
 void check(VkResult result, const char* what);

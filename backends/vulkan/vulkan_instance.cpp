@@ -5,6 +5,7 @@
 #include "util/error.h"
 #include "util/log.h"
 #include "vulkan_backend.h"
+#include "vulkan_surface.h"
 
 namespace penumbra::vk {
 namespace {
@@ -96,7 +97,7 @@ rhi::AdapterInfo describe(VkPhysicalDevice physical, uint32_t index) {
 
 }  // namespace
 
-VulkanInstance::VulkanInstance(bool validation) {
+VulkanInstance::VulkanInstance(bool validation, rhi::WindowSystem presentation) {
   loadLoader();
   uint32_t version = VK_API_VERSION_1_0;
   if (vkEnumerateInstanceVersion) vkEnumerateInstanceVersion(&version);
@@ -113,6 +114,13 @@ VulkanInstance::VulkanInstance(bool validation) {
   }
   debugUtils_ = hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   if (debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  for (const char* name : surfaceInstanceExtensions(presentation)) {
+    if (!hasInstanceExtension(name))
+      throw Error(fmt::format("vulkan: presenting to a {} window needs {}, which this Vulkan "
+                              "installation does not offer",
+                              rhi::windowSystemName(presentation), name));
+    extensions.push_back(name);
+  }
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "penumbra";
@@ -191,12 +199,12 @@ std::vector<rhi::AdapterInfo> VulkanInstance::adapters() {
 }
 
 std::vector<rhi::AdapterInfo> listAdapters() {
-  auto instance = std::make_shared<VulkanInstance>(false);
+  auto instance = std::make_shared<VulkanInstance>(false, rhi::WindowSystem::None);
   return instance->adapters();
 }
 
 rhi::DeviceHandle createDevice(const rhi::DeviceCreateInfo& info) {
-  auto instance = std::make_shared<VulkanInstance>(info.validation);
+  auto instance = std::make_shared<VulkanInstance>(info.validation, info.presentWindow.system);
   auto adapters = instance->adapters();
   auto physical = instance->physicalDevices();
   if (adapters.empty()) throw Error("vulkan: no Vulkan device found");
@@ -231,7 +239,8 @@ rhi::DeviceHandle createDevice(const rhi::DeviceCreateInfo& info) {
                   "VK_KHR_acceleration_structure); on Debian 12 install mesa-vulkan-drivers "
                   "from bookworm-backports (scripts/setup.sh)");
   }
-  return std::make_shared<VulkanDevice>(instance, physical[chosen], adapters[chosen]);
+  return std::make_shared<VulkanDevice>(instance, physical[chosen], adapters[chosen],
+                                        info.presentWindow);
 }
 
 }  // namespace penumbra::vk

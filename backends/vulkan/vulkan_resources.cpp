@@ -10,6 +10,7 @@ namespace penumbra::vk {
 VkFormat toVkFormat(rhi::Format format) {
   switch (format) {
     case rhi::Format::RGBA8_UNORM: return VK_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::BGRA8_UNORM: return VK_FORMAT_B8G8R8A8_UNORM;
     case rhi::Format::RGBA32_FLOAT: return VK_FORMAT_R32G32B32A32_SFLOAT;
     case rhi::Format::RGB32_FLOAT: return VK_FORMAT_R32G32B32_SFLOAT;
     case rhi::Format::R32_UINT: return VK_FORMAT_R32_UINT;
@@ -103,6 +104,7 @@ VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
   VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (hasFlag(desc.usage, TextureUsage::Storage)) usage |= VK_IMAGE_USAGE_STORAGE_BIT;
   if (hasFlag(desc.usage, TextureUsage::Sampled)) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+  if (hasFlag(desc.usage, TextureUsage::RenderTarget)) usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
 
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
@@ -125,20 +127,29 @@ VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
       device_.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
   check(vkAllocateMemory(dev, &alloc, nullptr, &memory_), "vkAllocateMemory (texture)");
   check(vkBindImageMemory(dev, image_, memory_, 0), "vkBindImageMemory");
+  createView();
+}
 
+VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc, VkImage externalImage)
+    : device_(device), desc_(desc), image_(externalImage), ownsImage_(false) {
+  createView();
+}
+
+void VulkanTexture::createView() {
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   viewInfo.image = image_;
   viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = info.format;
+  viewInfo.format = toVkFormat(desc_.format);
   viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  check(vkCreateImageView(dev, &viewInfo, nullptr, &view_), "vkCreateImageView");
-  device_.setName(VK_OBJECT_TYPE_IMAGE, uint64_t(image_), desc.debugName);
-  device_.setName(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view_), desc.debugName);
+  check(vkCreateImageView(device_.handle(), &viewInfo, nullptr, &view_), "vkCreateImageView");
+  if (ownsImage_) device_.setName(VK_OBJECT_TYPE_IMAGE, uint64_t(image_), desc_.debugName);
+  device_.setName(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view_), desc_.debugName);
 }
 
 VulkanTexture::~VulkanTexture() {
   VkDevice dev = device_.handle();
   vkDestroyImageView(dev, view_, nullptr);
+  if (!ownsImage_) return;  // the swapchain destroys its images
   vkDestroyImage(dev, image_, nullptr);
   vkFreeMemory(dev, memory_, nullptr);
 }

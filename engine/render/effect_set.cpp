@@ -8,7 +8,7 @@
 namespace penumbra::render {
 namespace {
 
-uint32_t materialEffects(const scene::Material& m) {
+uint32_t materialEffectsOf(const scene::Material& m) {
   uint32_t effects = 0;
   // Whitted reads the Phong fields of every material; the path tracer maps a
   // Phong material onto Disney (shaders/shared/material.hlsli: reflectivity ->
@@ -32,13 +32,15 @@ constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFF
 
 }  // namespace
 
+uint32_t deriveMaterialEffects(const scene::Material& material) { return materialEffectsOf(material); }
+
 uint32_t deriveEffects(const scene::Scene& scene) {
   uint32_t effects = 0;
   if (!scene.pointLights.empty()) effects |= PT_EFFECT_DELTA_LIGHTS;
   // Materials of meshes that are drawn, not every material the file lists.
   auto use = [&](uint32_t materialIndex) {
     const auto& material = scene.materials.at(materialIndex);
-    effects |= materialEffects(material);
+    effects |= materialEffectsOf(material);
     if (material.isEmissive()) effects |= PT_EFFECT_AREA_LIGHTS;
   };
   for (const auto& instance : scene.instances) use(scene.meshes.at(instance.mesh).material);

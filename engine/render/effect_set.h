@@ -16,6 +16,10 @@ namespace penumbra::render {
 // the scene exactly as the full pipeline does.
 uint32_t deriveEffects(const scene::Scene& scene);
 
+// The PT_EFFECT_* bits one material calls for when drawn (not area lights:
+// those follow from emission, which deriveEffects adds).
+uint32_t deriveMaterialEffects(const scene::Material& material);
+
 // Names of the bits in `effects`, in bit order ("area-lights", "sheen", ...).
 std::vector<std::string> effectNames(uint32_t effects);
 

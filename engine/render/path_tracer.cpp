@@ -77,32 +77,21 @@ struct PathTracer::SceneBuffers {
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
                        const PipelineOptions& options)
-    : device_(device), width_(width), height_(height), camera_(scene.camera) {
+    : device_(device), width_(width), height_(height), options_(options), camera_(scene.camera) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
   scene::validate(scene);
   sceneEffects_ = deriveEffects(scene);
   pipelineEffects_ = options.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
   commandList_ = device_.createCommandList();
-  timer_ = device_.createTimerQuery();
-
-  rhi::TextureDesc tex;
-  tex.width = width;
-  tex.height = height;
-  tex.format = rhi::Format::RGBA32_FLOAT;
-  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
-  tex.debugName = "accumulation";
-  accumulation_ = device_.createTexture(tex);
+  createAccumulation();
 
   rhi::BufferDesc counter;
   counter.byteSize = 4;
   counter.usage = rhi::BufferUsage::StorageBuffer;
   counter.debugName = "ray counter";
   rayCounter_ = device_.createBuffer(counter);
-  counter.memory = rhi::MemoryLocation::Readback;
-  counter.usage = rhi::BufferUsage::CopyDest;
-  counter.debugName = "ray counter readback";
-  rayCounterReadback_ = device_.createBuffer(counter);
+  ownFrame_ = createFrameQueries();
 
   uploadScene(scene);
   // The path-tracing pipeline now, so bad shaders fail at construction; the
@@ -111,6 +100,31 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
 }
 
 PathTracer::~PathTracer() = default;
+
+void PathTracer::createAccumulation() {
+  rhi::TextureDesc tex;
+  tex.width = width_;
+  tex.height = height_;
+  tex.format = rhi::Format::RGBA32_FLOAT;
+  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+  tex.debugName = "accumulation";
+  accumulation_ = device_.createTexture(tex);
+}
+
+void PathTracer::resize(uint32_t width, uint32_t height) {
+  if (width == 0 || height == 0 || width > 16384 || height > 16384)
+    throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
+  if (width == width_ && height == height_) return;
+  // The binding sets hold the old image; frames still reading it finish first.
+  device_.waitForIdle();
+  width_ = width;
+  height_ = height;
+  createAccumulation();
+  for (int i = 0; i < 2; ++i)
+    if (pipelines_[i].pipeline)
+      pipelines_[i].bindings = createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
+  resetAccumulation();
+}
 
 void PathTracer::uploadScene(const scene::Scene& scene) {
   scene_ = std::make_unique<SceneBuffers>();
@@ -136,6 +150,9 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 
   std::vector<gpu::MaterialData> materials;
   for (const auto& m : scene.materials) materials.push_back(packMaterial(m));
+  materials_ = scene.materials;
+  for (const auto& inst : scene.instances) drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
+  for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
   std::vector<gpu::PointLight> pointLights;
   for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l));
   pointLightCount_ = uint32_t(pointLights.size());
@@ -391,6 +408,44 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
   return device_.createBindingSet(set, pipeline);
 }
 
+void PathTracer::setCamera(const scene::Camera& camera) {
+  camera_ = camera;
+  resetAccumulation();
+}
+
+bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) {
+  if (materials.size() != materials_.size())
+    throw Error(fmt::format("path tracer: updateMaterials got {} materials; the scene has {}",
+                            materials.size(), materials_.size()));
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].emission != materials_[i].emission)
+      throw Error(fmt::format("path tracer: material '{}' changes its emission; emitters are fixed "
+                              "when the scene is uploaded",
+                              materials[i].name));
+  materials_ = materials;
+  std::vector<gpu::MaterialData> packed;
+  for (const auto& m : materials_) packed.push_back(packMaterial(m));
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->writeBuffer(scene_->materials.get(), packed.data(), packed.size() * sizeof(gpu::MaterialData));
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  resetAccumulation();
+
+  // Emission is unchanged, so only the material bits can differ.
+  uint32_t effects = sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS);
+  for (uint32_t m : drawnMaterials_) effects |= deriveMaterialEffects(materials_[m]);
+  sceneEffects_ = effects;
+  const uint32_t wanted = options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
+  if (wanted == pipelineEffects_) return false;
+  pipelineEffects_ = wanted;
+  // Pipelines of the old effect set go; each is rebuilt when next used.
+  for (auto& p : pipelines_) p = RayGenerationPipeline{};
+  pipelineFor(RayGeneration::Path);
+  return true;
+}
+
 uint32_t frameFlags(const PathTracerSettings& s) {
   uint32_t flags = 0;
   uint32_t directions = PT_DIRECTIONS_BSDF;
@@ -407,6 +462,29 @@ uint32_t frameFlags(const PathTracerSettings& s) {
 }
 
 FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t samples) {
+  auto* cmd = commandList_.get();
+  cmd->open();
+  recordFrame(*cmd, settings, samples, ownFrame_);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  return frameStats(ownFrame_);
+}
+
+FrameQueries PathTracer::createFrameQueries() {
+  FrameQueries queries;
+  queries.timer = device_.createTimerQuery();
+  rhi::BufferDesc counter;
+  counter.byteSize = 4;
+  counter.memory = rhi::MemoryLocation::Readback;
+  counter.usage = rhi::BufferUsage::CopyDest;
+  counter.debugName = "ray counter readback";
+  queries.rays = device_.createBuffer(counter);
+  return queries;
+}
+
+void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& settings, uint32_t samples,
+                             FrameQueries& queries) {
   if (!(settings.radianceClamp >= 0.0f))
     throw Error("path tracer: the radiance clamp must be >= 0 (0 = off)");
   if (samples < 1 || samples > kMaxSamplesPerFrame)
@@ -425,26 +503,27 @@ FrameStats PathTracer::renderFrame(const PathTracerSettings& settings, uint32_t 
   c.lights = {emissiveTriangleCount_, pointLightCount_, 0, 0};
   c.shading = toFloat4(ambient_, settings.radianceClamp);
 
-  auto* cmd = commandList_.get();
-  cmd->open();
-  cmd->clearBufferUint(rayCounter_.get(), 0);
+  // One counter serves every frame: the queue runs the frames' clear,
+  // dispatch and copy in order, and each frame copies it to its own readback.
+  cmd.clearBufferUint(rayCounter_.get(), 0);
   auto& p = pipelineFor(settings.integrator == Integrator::Whitted ? RayGeneration::Whitted
                                                                    : RayGeneration::Path);
-  cmd->setRayTracingState({p.pipeline.get(), p.table.get(), {p.bindings.get()}});
-  cmd->setPushConstants(&c, sizeof(c));
-  cmd->beginTimerQuery(timer_.get());
-  cmd->dispatchRays(width_, height_);
-  cmd->endTimerQuery(timer_.get());
-  cmd->copyBuffer(rayCounterReadback_.get(), 0, rayCounter_.get(), 0, 4);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
-
+  cmd.setRayTracingState({p.pipeline.get(), p.table.get(), {p.bindings.get()}});
+  cmd.setPushConstants(&c, sizeof(c));
+  cmd.beginTimerQuery(queries.timer.get());
+  cmd.dispatchRays(width_, height_);
+  cmd.endTimerQuery(queries.timer.get());
+  cmd.copyBuffer(queries.rays.get(), 0, rayCounter_.get(), 0, 4);
   accumulatedSamples_ += samples;
+  queries.samples = samples;
+}
+
+FrameStats PathTracer::frameStats(FrameQueries& queries) {
   FrameStats stats;
-  stats.gpuSeconds = device_.timerQuerySeconds(timer_.get());
-  std::memcpy(&stats.rays, rayCounterReadback_->mappedData(), 4);
-  stats.samples = samples;
+  if (queries.samples == 0) return stats;  // nothing recorded with them yet
+  stats.gpuSeconds = device_.timerQuerySeconds(queries.timer.get());
+  std::memcpy(&stats.rays, queries.rays->mappedData(), 4);
+  stats.samples = queries.samples;
   return stats;
 }
 

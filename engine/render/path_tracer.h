@@ -52,6 +52,14 @@ struct FrameStats {
   uint32_t samples = 0;   // samples per pixel in this frame
 };
 
+// Where a recorded frame's statistics land: one per frame in flight, read
+// once the GPU has finished that frame (PathTracer::recordFrame).
+struct FrameQueries {
+  rhi::TimerQueryHandle timer;
+  rhi::BufferHandle rays;  // readback of the ray counter
+  uint32_t samples = 0;
+};
+
 // FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);
 
@@ -87,8 +95,29 @@ class PathTracer {
 
   // Renders `samples` (1..16) more samples per pixel and waits for them.
   FrameStats renderFrame(const PathTracerSettings& settings, uint32_t samples);
+  // The same frame recorded into the caller's open command list, nothing
+  // submitted or waited for: the viewer renders, displays and presents in one
+  // list and keeps several frames in flight. `queries` must not be in flight.
+  void recordFrame(rhi::ICommandList& commandList, const PathTracerSettings& settings, uint32_t samples,
+                   FrameQueries& queries);
+  FrameQueries createFrameQueries();
+  // The statistics of the frame last recorded with `queries`; the GPU must
+  // have finished it (its command list's next open() waits for that).
+  FrameStats frameStats(FrameQueries& queries);
   // The next frame starts a new mean (camera or settings changed).
   void resetAccumulation() { accumulatedSamples_ = 0; }
+  // Moves the camera (the scene's until then) and resets the accumulation.
+  void setCamera(const scene::Camera& camera);
+  const scene::Camera& camera() const { return camera_; }
+  // Replaces the materials (same count and order as the scene's) and resets
+  // the accumulation. Rebuilds the pipelines when the effects they call for
+  // change (unless they hold all effects); returns whether it did. Emission
+  // cannot change here: emitters are sampled from a table built with the
+  // scene, so that needs a new PathTracer (penumbra::Error otherwise).
+  bool updateMaterials(const std::vector<scene::Material>& materials);
+  // A new accumulation image of this size (the viewer's render scale); the
+  // scene and pipelines stay. Resets the accumulation.
+  void resize(uint32_t width, uint32_t height);
   uint32_t accumulatedSamples() const { return accumulatedSamples_; }
 
   // Traces each ray (from tMin 0) through the production pipeline (the same
@@ -114,6 +143,7 @@ class PathTracer {
   void uploadScene(const scene::Scene& scene);
   void uploadImplicits(const scene::Scene& scene,
                        std::vector<rhi::rt::InstanceDesc>& tlasInstances);
+  void createAccumulation();
   // One pipeline per ray-generation shader, created on first use: drivers
   // compile every hit and intersection shader into each ray-generation shader
   // of a pipeline, so a pipeline holding all three costs three times as much
@@ -131,7 +161,10 @@ class PathTracer {
 
   rhi::IDevice& device_;
   uint32_t width_, height_;
+  PipelineOptions options_;
   scene::Camera camera_;
+  std::vector<scene::Material> materials_;
+  std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
   uint32_t accumulatedSamples_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
   uint32_t pointLightCount_ = 0;
@@ -141,10 +174,10 @@ class PathTracer {
   glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;
-  rhi::BufferHandle rayCounter_, rayCounterReadback_;
+  rhi::BufferHandle rayCounter_;
   RayGenerationPipeline pipelines_[3];
   rhi::CommandListHandle commandList_;
-  rhi::TimerQueryHandle timer_;
+  FrameQueries ownFrame_;  // renderFrame's
 };
 
 // Renders `spp` samples per pixel in frames of up to 16 and returns the mean

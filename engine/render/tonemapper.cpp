@@ -16,7 +16,7 @@ Tonemapper::Tonemapper(rhi::IDevice& device) : device_(device) {
   commandList_ = device_.createCommandList();
 }
 
-image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure) {
+image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure, ToneMapOperator toneOperator) {
   const uint32_t w = hdr->desc().width, h = hdr->desc().height;
   rhi::BufferDesc out;
   out.byteSize = uint64_t(w) * h * 4;
@@ -37,7 +37,8 @@ image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure) {
   struct {
     uint32_t width, height;
     float exposure;
-  } push{w, h, exposure};
+    uint32_t toneOperator;
+  } push{w, h, exposure, uint32_t(toneOperator)};
   auto* cmd = commandList_.get();
   cmd->open();
   cmd->setComputeState({pipeline_.get(), {bindings.get()}});

@@ -1,7 +1,8 @@
 #pragma once
 // Linear HDR -> 8-bit sRGB on the GPU (compute shader tonemap.comp), for PNG
-// output and, later, the viewer's back buffer.
+// output. The viewer's back buffer goes through render/display_pass.h.
 #include "image/image.h"
+#include "render/tone_mapping.h"
 #include "rhi/rhi.h"
 
 namespace penumbra::render {
@@ -9,8 +10,9 @@ namespace penumbra::render {
 class Tonemapper {
  public:
   explicit Tonemapper(rhi::IDevice& device);
-  // `hdr` is an RGBA32F storage texture; exposure multiplies before encoding.
-  image::Image8 run(const rhi::TextureHandle& hdr, float exposure);
+  // `hdr` is an RGBA32F storage texture; exposure multiplies before the tone curve.
+  image::Image8 run(const rhi::TextureHandle& hdr, float exposure,
+                    ToneMapOperator toneOperator = ToneMapOperator::Clamp);
 
  private:
   rhi::IDevice& device_;

@@ -48,6 +48,11 @@ class ICommandList {
   // placed footprint (rows padded to 256 bytes, repacked by the backend).
   // Vulkan: vkCmdCopyImageToBuffer.
   virtual void copyTextureToBuffer(ITexture* src, IBuffer* dst, uint64_t dstOffset = 0) = 0;
+  // Copies a whole texture into one of the same size; formats may differ in
+  // channel order only (RGBA8 -> a BGRA8 back buffer).
+  // D3D12: CopyTextureRegion (same format), else a format error.
+  // Vulkan: vkCmdCopyImage for equal formats, vkCmdBlitImage (NEAREST, 1:1) to swizzle.
+  virtual void copyTexture(ITexture* dst, ITexture* src) = 0;
   // D3D12: ClearUnorderedAccessViewFloat. Vulkan: vkCmdClearColorImage.
   virtual void clearTextureFloat(ITexture* texture, float r, float g, float b, float a) = 0;
   // D3D12: ClearUnorderedAccessViewUint on a raw view. Vulkan: vkCmdFillBuffer.

@@ -1,11 +1,10 @@
 #pragma once
 // Devices and adapters. A device is created by backend name and adapter index
 // (backends/backend_factory.h); engine/ only ever sees these interfaces.
-//
-// Presentation (the viewer) will add IDevice::createSwapchain(window handle)
-// returning an ISwapchain (D3D12: DXGI flip-model swapchain; Vulkan:
-// VK_KHR_swapchain); nothing else here changes for it.
+// Presentation (the viewer) is opt-in: DeviceCreateInfo::presentWindow and
+// IDevice::createSwapchain (rhi/presentation.h).
 #include "rhi/command_list.h"
+#include "rhi/presentation.h"
 
 namespace penumbra::rhi {
 
@@ -37,6 +36,12 @@ struct AdapterInfo {
 struct DeviceCreateInfo {
   int adapterIndex = -1;    // -1: the first discrete/integrated GPU with ray tracing, else any
   bool validation = false;  // D3D12 debug layer / VK_LAYER_KHRONOS_validation
+  // A window the device must be able to present to; WindowSystem::None (the
+  // default) creates a headless device exactly as before.
+  // D3D12: nothing extra (any queue presents). Vulkan: instance extensions
+  // VK_KHR_surface + the window system's surface extension, device extension
+  // VK_KHR_swapchain, and a queue family that can present to this window.
+  NativeWindow presentWindow;
 };
 
 class IDevice {
@@ -65,6 +70,10 @@ class IDevice {
   virtual BindingSetHandle createBindingSet(const BindingSetDesc& desc, const IPipeline& pipeline) = 0;
   virtual TimerQueryHandle createTimerQuery() = 0;
   virtual CommandListHandle createCommandList() = 0;
+  // Only on a device created with DeviceCreateInfo::presentWindow.
+  // D3D12: IDXGIFactory4::CreateSwapChainForHwnd (flip model) on the device's queue.
+  // Vulkan: vkCreate{Xlib,Wayland,Win32}SurfaceKHR + vkCreateSwapchainKHR.
+  virtual SwapchainHandle createSwapchain(const SwapchainDesc& desc) = 0;
 
   // D3D12: ExecuteCommandLists + Signal. Vulkan: vkQueueSubmit with a fence.
   virtual void submit(ICommandList* commandList) = 0;

@@ -5,6 +5,7 @@ namespace penumbra::rhi {
 uint32_t formatByteSize(Format format) {
   switch (format) {
     case Format::RGBA8_UNORM: return 4;
+    case Format::BGRA8_UNORM: return 4;
     case Format::RGBA32_FLOAT: return 16;
     case Format::RGB32_FLOAT: return 12;
     case Format::R32_UINT: return 4;
@@ -20,6 +21,16 @@ const char* resourceTypeName(ResourceType type) {
     case ResourceType::StorageBuffer: return "storage buffer";
     case ResourceType::ConstantBuffer: return "constant buffer";
     case ResourceType::StorageTexture: return "storage texture";
+  }
+  return "?";
+}
+
+const char* windowSystemName(WindowSystem system) {
+  switch (system) {
+    case WindowSystem::None: return "none";
+    case WindowSystem::Win32: return "Win32";
+    case WindowSystem::Xlib: return "X11";
+    case WindowSystem::Wayland: return "Wayland";
   }
   return "?";
 }

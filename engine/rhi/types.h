@@ -10,6 +10,7 @@ namespace penumbra::rhi {
 enum class Format : uint8_t {
   Unknown,
   RGBA8_UNORM,    // D3D12: DXGI_FORMAT_R8G8B8A8_UNORM      Vulkan: VK_FORMAT_R8G8B8A8_UNORM
+  BGRA8_UNORM,    // D3D12: DXGI_FORMAT_B8G8R8A8_UNORM      Vulkan: VK_FORMAT_B8G8R8A8_UNORM (swapchains)
   RGBA32_FLOAT,   // D3D12: DXGI_FORMAT_R32G32B32A32_FLOAT  Vulkan: VK_FORMAT_R32G32B32A32_SFLOAT
   RGB32_FLOAT,    // vertex positions only (AS build input)
   R32_UINT,       // index buffers, counters
@@ -42,6 +43,7 @@ enum class TextureUsage : uint32_t {
   Sampled = 1 << 1,  // SRV; Vulkan SAMPLED image
   CopySource = 1 << 2,
   CopyDest = 1 << 3,
+  RenderTarget = 1 << 4,  // RTV; Vulkan COLOR_ATTACHMENT
 };
 constexpr TextureUsage operator|(TextureUsage a, TextureUsage b) {
   return TextureUsage(uint32_t(a) | uint32_t(b));
@@ -65,6 +67,9 @@ enum class ResourceState : uint8_t {
   AccelStructRead,       // AS traced against, or read by a TLAS build
   ShaderTable,           // read by DispatchRays / vkCmdTraceRaysKHR
   HostRead,              // mapped and read by the CPU after a copy
+  RenderTarget,          // drawn into by raster passes (the viewer's UI); D3D12 RENDER_TARGET,
+                         // Vulkan COLOR_ATTACHMENT_OPTIMAL
+  Present,               // a back buffer handed to the swapchain; D3D12 PRESENT, Vulkan PRESENT_SRC_KHR
 };
 
 enum class ShaderStage : uint8_t {

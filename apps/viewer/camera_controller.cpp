@@ -1,0 +1,59 @@
+#include "camera_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::viewer {
+
+CameraController::CameraController(const scene::Camera& home, float speed)
+    : home_(home), camera_(home), speed_(speed) {}
+
+// The path tracer's convention (path_tracer.cpp): right = forward x up.
+glm::vec3 CameraController::right() const {
+  return glm::normalize(glm::cross(glm::normalize(camera_.forward), camera_.up));
+}
+
+bool CameraController::update(const CameraInput& input, float seconds) {
+  bool changed = false;
+  if (input.scrollSteps != 0) speed_ *= std::pow(kSpeedStepFactor, input.scrollSteps);
+  if (input.turn != glm::vec2(0.0f)) {
+    turn(input.turn.x * kDegreesPerPixel, -input.turn.y * kDegreesPerPixel);
+    changed = true;
+  }
+  if (input.move != glm::vec3(0.0f) && seconds > 0) {
+    move(input.move * (speed_ * seconds));
+    changed = true;
+  }
+  return changed;
+}
+
+void CameraController::move(glm::vec3 metres) {
+  const glm::vec3 forward = glm::normalize(camera_.forward);
+  const glm::vec3 up = glm::normalize(camera_.up);
+  camera_.position += right() * metres.x + up * metres.y + forward * metres.z;
+}
+
+void CameraController::lookAt(glm::vec3 target) {
+  const glm::vec3 direction = target - camera_.position;
+  if (glm::length(direction) <= 0.0f) return;
+  const glm::vec3 forward = glm::normalize(direction);
+  // Straight along up the right vector (forward x up) would vanish.
+  if (glm::length(glm::cross(forward, glm::normalize(camera_.up))) < 1e-4f) return;
+  camera_.forward = forward;
+}
+
+void CameraController::turn(float yawDegrees, float pitchDegrees) {
+  const glm::vec3 up = glm::normalize(camera_.up);
+  glm::vec3 forward = glm::normalize(camera_.forward);
+  const float yaw = glm::radians(yawDegrees);
+  forward = glm::normalize(forward * std::cos(yaw) + right() * std::sin(yaw));
+  // Pitch as a change of elevation above the horizon, clamped short of the
+  // poles where forward x up (the right vector) would vanish.
+  const float elevation = std::asin(std::clamp(glm::dot(forward, up), -1.0f, 1.0f));
+  const float limit = glm::radians(kMaxElevationDegrees);
+  const float target = std::clamp(elevation + glm::radians(pitchDegrees), -limit, limit);
+  const glm::vec3 horizontal = glm::normalize(forward - up * glm::dot(forward, up));
+  camera_.forward = horizontal * std::cos(target) + up * std::sin(target);
+}
+
+}  // namespace penumbra::viewer

@@ -1,0 +1,81 @@
+#include "script.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace penumbra::viewer {
+
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& source) {
+  using Kind = ScriptCommand::Kind;
+  struct Shape {
+    const char* name;
+    Kind kind;
+    int numbers;  // numeric arguments; -1: free-form
+    int words;    // free-form arguments
+  };
+  static const Shape kShapes[] = {{"wait-frames", Kind::WaitFrames, 1, 0},
+                                  {"wait-samples", Kind::WaitSamples, 1, 0},
+                                  {"move", Kind::Move, 3, 0},
+                                  {"turn", Kind::Turn, 2, 0},
+                                  {"reset-camera", Kind::ResetCamera, 0, 0},
+                                  {"set", Kind::Set, 0, 2},
+                                  {"scene", Kind::Scene, 0, 1},
+                                  {"window-size", Kind::WindowSize, 2, 0},
+                                  {"screenshot", Kind::Screenshot, 0, 1},
+                                  {"quit", Kind::Quit, 0, 0}};
+  std::vector<ScriptCommand> commands;
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    std::istringstream words(line);
+    std::string name;
+    if (!(words >> name)) continue;
+    std::vector<std::string> args;
+    for (std::string w; words >> w;) args.push_back(w);
+    const Shape* shape = nullptr;
+    for (const auto& s : kShapes)
+      if (name == s.name) shape = &s;
+    auto fail = [&](const std::string& what) {
+      throw Error(fmt::format("{}:{}: {}", source, number, what));
+    };
+    if (!shape) fail(fmt::format("unknown command '{}'", name));
+    const size_t expected = size_t(shape->numbers + shape->words);
+    if (args.size() != expected)
+      fail(fmt::format("'{}' takes {} argument(s), got {}", name, expected, args.size()));
+    ScriptCommand command{shape->kind, args, {}, number};
+    for (int i = 0; i < shape->numbers; ++i) {
+      size_t used = 0;
+      float value = 0;
+      try {
+        value = std::stof(args[i], &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != args[i].size() || !std::isfinite(value))
+        fail(fmt::format("'{}' is not a number", args[i]));
+      command.numbers.push_back(value);
+    }
+    if ((shape->kind == Kind::WaitFrames || shape->kind == Kind::WaitSamples ||
+         shape->kind == Kind::WindowSize) &&
+        (command.numbers[0] < 0 || command.numbers[0] != std::floor(command.numbers[0])))
+      fail(fmt::format("'{}' needs a whole number >= 0", name));
+    commands.push_back(std::move(command));
+  }
+  return commands;
+}
+
+std::vector<ScriptCommand> loadScript(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(fmt::format("cannot read script '{}'", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseScript(text.str(), path);
+}
+
+}  // namespace penumbra::viewer

@@ -1,0 +1,42 @@
+#pragma once
+// Scripted viewer sessions (--script FILE), for tests and reproducible demos.
+// One command per line, '#' starts a comment:
+//   wait-frames N          let N frames pass
+//   wait-samples N         wait until N samples per pixel have accumulated
+//   move R U F             move the camera by metres (right, world up, forward)
+//   turn YAW PITCH         turn the camera by degrees (right, up)
+//   reset-camera           back to the scene's camera
+//   set NAME VALUE         a setting, as in viewer_settings.h ("set spp-per-frame 4")
+//   scene NAME|PATH        load a built-in scene or a scene file
+//   window-size W H        resize the window (the swapchain follows)
+//   screenshot PATH        .exr (linear) or .png (as displayed), with PATH's .json beside it
+//   quit                   close the viewer (exit status 0)
+#include <string>
+#include <vector>
+
+namespace penumbra::viewer {
+
+struct ScriptCommand {
+  enum class Kind {
+    WaitFrames,
+    WaitSamples,
+    Move,
+    Turn,
+    ResetCamera,
+    Set,
+    Scene,
+    WindowSize,
+    Screenshot,
+    Quit
+  };
+  Kind kind;
+  std::vector<std::string> args;  // as written; numbers already checked
+  std::vector<float> numbers;     // move/turn: the values; wait-*: the count
+  int line = 0;
+};
+
+// Throws penumbra::Error "<source>:<line>: ..." on an unknown command or bad arguments.
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& source);
+std::vector<ScriptCommand> loadScript(const std::string& path);
+
+}  // namespace penumbra::viewer

@@ -1,0 +1,362 @@
+#include "viewer_app.h"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+
+#include "backend_factory.h"
+#include "backends/imgui_impl_glfw.h"
+#include "image/image_io.h"
+#include "picking.h"
+#include "render/render_job.h"
+#include "render/tonemapper.h"
+#include "scene/material_row.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+#include "util/log.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace penumbra::viewer {
+namespace {
+
+// A walking speed that crosses the scene in about five seconds.
+float speedForScene(const scene::Scene& scene) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const auto& instance : scene.instances)
+    for (const auto& p : scene.meshes[instance.mesh].positions) {
+      const glm::vec3 world(instance.transform * glm::vec4(p, 1.0f));
+      lo = glm::min(lo, world);
+      hi = glm::max(hi, world);
+    }
+  const float size = glm::length(hi - lo);
+  return std::isfinite(size) && size > 0 ? size / 5.0f : 1.0f;
+}
+
+}  // namespace
+
+Viewer::Viewer(const ViewerOptions& options)
+    : options_(options),
+      window_(options.width, options.height, "Penumbra viewer"),
+      scale_(options.renderScale.value_or(1.0f), !options.renderScale.has_value()),
+      bookmarks_(options.config.empty() ? BookmarkStore::defaultPath() : options.config) {
+  rhi::DeviceCreateInfo info;
+  info.adapterIndex = options_.device;
+  info.validation = options_.validation;
+  info.presentWindow = window_.nativeWindow();
+  device_ = backends::createDevice(options_.backend, info);
+  if (std::string(device_->backendName()) != "vulkan")
+    throw Error("the viewer's UI renderer exists for the Vulkan backend only (--backend vulkan)");
+
+  settings_.samplesPerFrame = options_.samplesPerFrame;
+  settings_.vsync = options_.vsync;
+  settings_.renderScale = scale_.scale();
+  settings_.autoRenderScale = scale_.automatic();
+
+  rhi::SwapchainDesc swapchain;
+  swapchain.window = window_.nativeWindow();
+  window_.framebufferSize(swapchain.width, swapchain.height);
+  swapchain.vsync = options_.vsync;
+  swapchain.framesInFlight = options_.framesInFlight;
+  swapchain_ = device_->createSwapchain(swapchain);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForVulkan(window_.handle(), true);
+  ui_ = std::make_unique<ImGuiVulkanRenderer>(*device_, *swapchain_);
+  display_ = std::make_unique<render::DisplayPass>(*device_);
+  for (uint32_t i = 0; i < options_.framesInFlight; ++i)
+    frameLists_.push_back(device_->createCommandList());
+
+  if (!options_.script.empty()) script_ = loadScript(options_.script);
+  loadScene(options_.scene);
+  const auto& adapter = device_->adapter();
+  fmt::print("device: {} ({}) via {}, {} window\n", adapter.name,
+             rhi::adapterTypeName(adapter.type), device_->backendName(),
+             rhi::windowSystemName(swapchain.window.system));
+  std::fflush(stdout);
+}
+
+Viewer::~Viewer() {
+  if (device_) device_->waitForIdle();
+  ui_.reset();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void Viewer::loadScene(const std::string& nameOrPath) {
+  scene::Scene scene = scene::loadScene(nameOrPath);  // throws before anything changes
+  if (device_) device_->waitForIdle();
+  scene_ = std::move(scene);
+  sceneName_ = nameOrPath;
+  vary_ = scene_.materialRow ? scene_.materialRow->vary : "";
+  set_.clear();
+  materialsEdited_ = false;
+  selectedMaterial_ = 0;
+  camera_ = std::make_unique<CameraController>(scene_.camera, speedForScene(scene_));
+  std::snprintf(scenePath_, sizeof(scenePath_), "%s", nameOrPath.c_str());
+  createTracer();
+}
+
+void Viewer::createTracer() {
+  uint32_t w = 0, h = 0;
+  window_.framebufferSize(w, h);
+  const RenderSize size = renderSize(std::max(w, 1u), std::max(h, 1u), scale_.scale());
+  render::PipelineOptions pipeline;
+  pipeline.allEffects = settings_.allEffects;
+  // Frames in flight still use the old tracer's resources.
+  device_->waitForIdle();
+  tracer_.reset();
+  tracer_ =
+      std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height, pipeline);
+  tracer_->setCamera(camera_->camera());
+  if (frameQueries_.empty())
+    for (size_t i = 0; i < frameLists_.size(); ++i)
+      frameQueries_.push_back(tracer_->createFrameQueries());
+  for (auto& queries : frameQueries_) queries.samples = 0;  // nothing of the new tracer's yet
+}
+
+void Viewer::resizeRender() {
+  uint32_t w = 0, h = 0;
+  window_.framebufferSize(w, h);
+  if (w == 0 || h == 0) return;
+  const RenderSize size = renderSize(w, h, scale_.scale());
+  tracer_->resize(size.width, size.height);
+}
+
+void Viewer::applyEffect(SettingEffect effect) {
+  if (settings_.vsync != swapchain_->desc().vsync) swapchain_->setVsync(settings_.vsync);
+  if (settings_.autoRenderScale != scale_.automatic())
+    scale_.setAutomatic(settings_.autoRenderScale);
+  switch (effect) {
+    case SettingEffect::None:
+      break;
+    case SettingEffect::ResetAccumulation:
+      tracer_->resetAccumulation();
+      break;
+    case SettingEffect::RebuildRenderer:
+      createTracer();
+      break;
+    case SettingEffect::Resize:
+      scale_.setScale(settings_.renderScale);
+      resizeRender();
+      break;
+  }
+}
+
+void Viewer::handleInput(float seconds) {
+  const ImGuiIO& io = ImGui::GetIO();
+  CameraInput input;
+  GLFWwindow* w = window_.handle();
+  // F1 shows and hides the menus (on the key going down, not while held).
+  const bool f1 = glfwGetKey(w, GLFW_KEY_F1) == GLFW_PRESS;
+  if (f1 && !f1WasDown_) settings_.showUi = !settings_.showUi;
+  f1WasDown_ = f1;
+  if (!io.WantCaptureKeyboard) {
+    auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+    input.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
+                  key(GLFW_KEY_W) - key(GLFW_KEY_S)};
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) {
+      camera_->reset();
+      tracer_->setCamera(camera_->camera());
+    }
+  }
+  if (!io.WantCaptureMouse) {
+    if (io.MouseDown[0]) input.turn = {io.MouseDelta.x, io.MouseDelta.y};
+    input.scrollSteps = io.MouseWheel;
+    if (ImGui::IsMouseDoubleClicked(0) && io.DisplaySize.x > 0 && io.DisplaySize.y > 0) {
+      const glm::vec2 pixel(io.MousePos.x / io.DisplaySize.x * float(tracer_->width()),
+                            io.MousePos.y / io.DisplaySize.y * float(tracer_->height()));
+      focusOn(pixel);
+    }
+  }
+  if (camera_->update(input, seconds)) tracer_->setCamera(camera_->camera());
+}
+
+void Viewer::focusOn(glm::vec2 renderPixel) {
+  const Ray ray = cameraRay(camera_->camera(), tracer_->width(), tracer_->height(), renderPixel);
+  const auto hit = pick(scene_, ray);
+  if (!hit) {
+    statusLine_ = "nothing under the cursor";
+    return;
+  }
+  camera_->lookAt(hit->position);
+  tracer_->setCamera(camera_->camera());
+  selectedMaterial_ = int(hit->material);
+  statusLine_ = fmt::format("focus: {} ({}), {:.3f} m away",
+                            scene_.meshes[scene_.instances[hit->instance].mesh].name,
+                            scene_.materials[hit->material].name, hit->distance);
+}
+
+bool Viewer::stepScript() {
+  using Kind = ScriptCommand::Kind;
+  while (scriptPosition_ < script_.size()) {
+    const ScriptCommand& c = script_[scriptPosition_];
+    try {
+      switch (c.kind) {
+        case Kind::WaitFrames:
+          if (!waiting_) {
+            waitUntilFrame_ = frameNumber_ + uint64_t(c.numbers[0]);
+            waiting_ = true;
+          }
+          if (frameNumber_ < waitUntilFrame_) return true;
+          waiting_ = false;
+          break;
+        case Kind::WaitSamples:
+          if (tracer_->accumulatedSamples() < uint32_t(c.numbers[0])) return true;
+          break;
+        case Kind::Move:
+          camera_->move({c.numbers[0], c.numbers[1], c.numbers[2]});
+          tracer_->setCamera(camera_->camera());
+          break;
+        case Kind::Turn:
+          camera_->turn(c.numbers[0], c.numbers[1]);
+          tracer_->setCamera(camera_->camera());
+          break;
+        case Kind::ResetCamera:
+          camera_->reset();
+          tracer_->setCamera(camera_->camera());
+          break;
+        case Kind::Set:
+          applyEffect(applySetting(settings_, c.args[0], c.args[1]));
+          break;
+        case Kind::Scene:
+          loadScene(c.args[0]);
+          break;
+        case Kind::WindowSize:
+          glfwSetWindowSize(window_.handle(), int(c.numbers[0]), int(c.numbers[1]));
+          break;
+        case Kind::Screenshot:
+          takeScreenshot(c.args[0]);
+          break;
+        case Kind::Quit:
+          return false;
+      }
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}:{}: {}", options_.script, c.line, e.what()));
+    }
+    ++scriptPosition_;
+  }
+  return true;
+}
+
+void Viewer::takeScreenshot(const std::string& path) {
+  const auto format = image::formatFromPath(path);
+  image::checkWritable(path);
+  if (format == image::FileFormat::Exr) {
+    image::saveExr(path, tracer_->readback());
+  } else {
+    render::Tonemapper tonemapper(*device_);
+    image::savePng(path, tonemapper.run(tracer_->accumulation(), settings_.toneMapping.exposure,
+                                        settings_.toneMapping.toneOperator));
+  }
+  const std::string record = std::filesystem::path(path).replace_extension(".json").string();
+  const RenderSize size{tracer_->width(), tracer_->height()};
+  render::saveRenderJob(record, makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(),
+                                              size, tracer_->accumulatedSamples()));
+  statusLine_ =
+      fmt::format("saved {} and {} ({} spp)", path, record, tracer_->accumulatedSamples());
+  // The record holds the scene by name and the material-test row as
+  // --vary/--set; other material edits are not in it.
+  if (materialsEdited_) {
+    statusLine_ += "; material edits are not in the record";
+    log::warning(
+        "{}: material edits made in the viewer are not recorded; penumbra render "
+        "--settings renders the scene's own materials",
+        record);
+  }
+  fmt::print("screenshot: {} ({}x{}, {} spp), settings {}\n", path, size.width, size.height,
+             tracer_->accumulatedSamples(), record);
+  std::fflush(stdout);
+}
+
+void Viewer::renderFrame() {
+  uint32_t w = 0, h = 0;
+  window_.framebufferSize(w, h);
+  if (w == 0 || h == 0) {  // minimised: nothing to present to
+    glfwWaitEventsTimeout(0.1);
+    return;
+  }
+  if (w != swapchain_->desc().width || h != swapchain_->desc().height) {
+    swapchain_->resize(w, h);
+    ui_->swapchainResized();
+    resizeRender();
+  }
+  w = swapchain_->desc().width;
+  h = swapchain_->desc().height;
+  if (!displayTexture_ || displayTexture_->desc().width != w ||
+      displayTexture_->desc().height != h) {
+    rhi::TextureDesc desc;
+    desc.width = w;
+    desc.height = h;
+    desc.format = rhi::Format::RGBA8_UNORM;
+    desc.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+    desc.debugName = "display";
+    displayTexture_ = device_->createTexture(desc);
+  }
+  rhi::ITexture* backBuffer = swapchain_->acquireNextImage();
+  if (!backBuffer) {
+    swapchain_->resize(w, h);
+    ui_->swapchainResized();
+    return;
+  }
+  // One list per frame slot: open() waits for the slot's previous frame,
+  // whose statistics are then ready. Path tracing, display and UI go into
+  // the same list, so the CPU runs up to framesInFlight frames ahead.
+  const size_t slot = frameNumber_ % frameLists_.size();
+  auto& list = *frameLists_[slot];
+  list.open();
+  if (frameQueries_[slot].samples > 0) lastStats_ = tracer_->frameStats(frameQueries_[slot]);
+  frameQueries_[slot].samples = 0;
+  if (settings_.maxSamples == 0 || tracer_->accumulatedSamples() < settings_.maxSamples)
+    tracer_->recordFrame(list, settings_.tracer, settings_.samplesPerFrame, frameQueries_[slot]);
+  display_->record(list, tracer_->accumulation(), displayTexture_, settings_.toneMapping);
+  list.copyTexture(backBuffer, displayTexture_.get());
+  list.setTextureState(backBuffer, rhi::ResourceState::RenderTarget);
+  if (settings_.showUi) ui_->render(list, *backBuffer);
+  list.setTextureState(backBuffer, rhi::ResourceState::Present);
+  list.close();
+  if (!swapchain_->present(&list)) {
+    swapchain_->resize(w, h);
+    ui_->swapchainResized();
+  }
+}
+
+int Viewer::run() {
+  lastFrame_ = std::chrono::steady_clock::now();
+  bool quit = false;
+  while (!quit && !window_.shouldClose()) {
+    glfwPollEvents();
+    const auto now = std::chrono::steady_clock::now();
+    frameSeconds_ = std::chrono::duration<double>(now - lastFrame_).count();
+    lastFrame_ = now;
+    if (frameNumber_ > 0 && scale_.update(frameSeconds_)) {
+      settings_.renderScale = scale_.scale();
+      resizeRender();
+    }
+
+    ui_->newFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handleInput(float(frameSeconds_));
+    drawUi();
+    ImGui::Render();
+    quit = !stepScript();
+    if (!quit) renderFrame();
+    ++frameNumber_;
+  }
+  device_->waitForIdle();
+  if (options_.validation && device_->validationMessageCount() > 0) {
+    log::error("{} validation message(s)", device_->validationMessageCount());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace penumbra::viewer

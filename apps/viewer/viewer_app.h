@@ -1,0 +1,103 @@
+#pragma once
+// The interactive viewer: a window, the path tracer accumulating while the
+// camera and settings are still, the display pass into the back buffer, and
+// Dear ImGui menus over it.
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bookmarks.h"
+#include "camera_controller.h"
+#include "imgui_vulkan_renderer.h"
+#include "render/display_pass.h"
+#include "render/path_tracer.h"
+#include "render_scale.h"
+#include "rhi/rhi.h"
+#include "scene/scene.h"
+#include "script.h"
+#include "viewer_settings.h"
+#include "window.h"
+
+namespace penumbra::viewer {
+
+struct ViewerOptions {
+  std::string scene = "cornell-box";
+  uint32_t width = 1280, height = 720;
+  std::string backend = "vulkan";
+  int device = -1;
+  bool validation = false;
+  std::string script;
+  std::optional<float> renderScale;  // fixed scale; unset: automatic
+  uint32_t samplesPerFrame = 1;
+  uint32_t framesInFlight = 2;
+  bool vsync = true;
+  std::string config;  // bookmarks file; empty: BookmarkStore::defaultPath()
+};
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& options);
+  ~Viewer();
+  // Runs until the window closes or the script quits; the exit status.
+  int run();
+
+ private:
+  void loadScene(const std::string& nameOrPath);
+  void createTracer();
+  void resizeRender();
+  void applyEffect(SettingEffect effect);
+  void handleInput(float seconds);
+  // Double-click: look at the surface under the cursor and select its material.
+  void focusOn(glm::vec2 renderPixel);
+  bool stepScript();  // false once the script asked to quit
+  void renderFrame();
+  void drawUi();
+  void drawSceneMenu();
+  void drawAlgorithmMenu();
+  void drawMaterialMenu();
+  void drawCameraMenu();
+  void drawStats();
+  void takeScreenshot(const std::string& path);
+  void materialsChanged();
+
+  ViewerOptions options_;
+  Window window_;
+  rhi::DeviceHandle device_;
+  rhi::SwapchainHandle swapchain_;
+  std::unique_ptr<ImGuiVulkanRenderer> ui_;
+  std::unique_ptr<render::DisplayPass> display_;
+  std::vector<rhi::CommandListHandle> frameLists_;
+  std::vector<render::FrameQueries> frameQueries_;  // per frame slot
+  rhi::TextureHandle displayTexture_;
+  uint64_t frameNumber_ = 0;
+
+  std::string sceneName_;
+  std::string vary_, set_;        // material-test row edits, as --vary/--set
+  bool materialsEdited_ = false;  // by the Material menu, beyond vary_/set_
+  scene::Scene scene_;
+  std::unique_ptr<render::PathTracer> tracer_;
+  ViewerSettings settings_;
+  RenderScaleController scale_;
+  std::unique_ptr<CameraController> camera_;
+  BookmarkStore bookmarks_;
+
+  // UI state.
+  char scenePath_[512] = {};
+  char bookmarkName_[64] = "view 1";
+  int selectedMaterial_ = 0;
+  std::string statusLine_;
+  render::FrameStats lastStats_;
+  double frameSeconds_ = 0;
+  std::chrono::steady_clock::time_point lastFrame_;
+  bool f1WasDown_ = false;
+
+  // Script state.
+  std::vector<ScriptCommand> script_;
+  size_t scriptPosition_ = 0;
+  uint64_t waitUntilFrame_ = 0;
+  bool waiting_ = false;
+};
+
+}  // namespace penumbra::viewer

@@ -1,0 +1,132 @@
+#include "viewer_settings.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "util/error.h"
+
+namespace penumbra::viewer {
+namespace {
+
+[[noreturn]] void badValue(const std::string& name, const std::string& value,
+                           const char* expected) {
+  throw Error(fmt::format("setting '{}': '{}' is not {}", name, value, expected));
+}
+
+uint32_t parseUint(const std::string& name, const std::string& value, uint32_t lo, uint32_t hi) {
+  uint32_t out = 0;
+  auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), out);
+  if (ec != std::errc() || end != value.data() + value.size() || out < lo || out > hi)
+    badValue(name, value, fmt::format("an integer in {}..{}", lo, hi).c_str());
+  return out;
+}
+
+float parseFloat(const std::string& name, const std::string& value, float lo, float hi) {
+  size_t used = 0;
+  float out = 0;
+  try {
+    out = std::stof(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || !std::isfinite(out) || out < lo || out > hi)
+    badValue(name, value, fmt::format("a number in {}..{}", lo, hi).c_str());
+  return out;
+}
+
+bool parseBool(const std::string& name, const std::string& value) {
+  if (value == "on" || value == "true" || value == "1") return true;
+  if (value == "off" || value == "false" || value == "0") return false;
+  badValue(name, value, "on or off");
+}
+
+template <class T>
+SettingEffect assign(T& field, T value, SettingEffect effect) {
+  if (field == value) return SettingEffect::None;
+  field = value;
+  return effect;
+}
+
+}  // namespace
+
+SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std::string& value) {
+  using E = SettingEffect;
+  auto& t = s.tracer;
+  if (name == "spp-per-frame")
+    return assign(s.samplesPerFrame,
+                  parseUint(name, value, 1, render::PathTracer::kMaxSamplesPerFrame),
+                  E::ResetAccumulation);
+  if (name == "max-depth")
+    return assign(t.maxDepth, parseUint(name, value, 0, 1024), E::ResetAccumulation);
+  if (name == "seed")
+    return assign(t.seed, parseUint(name, value, 0, UINT32_MAX), E::ResetAccumulation);
+  if (name == "integrator") {
+    auto v = render::parseIntegrator(value);
+    if (!v) badValue(name, value, "path or whitted");
+    return assign(t.integrator, *v, E::ResetAccumulation);
+  }
+  if (name == "strategy") {
+    auto v = render::parseStrategy(value);
+    if (!v) badValue(name, value, "uniform, cosine, bsdf, nee or mis");
+    return assign(t.strategy, *v, E::ResetAccumulation);
+  }
+  if (name == "mis-heuristic") {
+    auto v = render::parseMisHeuristic(value);
+    if (!v) badValue(name, value, "power or balance");
+    return assign(t.misHeuristic, *v, E::ResetAccumulation);
+  }
+  if (name == "russian-roulette")
+    return assign(t.russianRoulette, parseBool(name, value), E::ResetAccumulation);
+  if (name == "clamp")
+    return assign(t.radianceClamp, parseFloat(name, value, 0, 1e30f), E::ResetAccumulation);
+  if (name == "exposure")
+    return assign(s.toneMapping.exposure, parseFloat(name, value, 0, 1e6f), E::None);
+  if (name == "tonemap") {
+    auto v = render::parseToneMapOperator(value);
+    if (!v) badValue(name, value, "clamp, reinhard or aces");
+    return assign(s.toneMapping.toneOperator, *v, E::None);
+  }
+  if (name == "all-effects")
+    return assign(s.allEffects, parseBool(name, value), E::RebuildRenderer);
+  if (name == "render-scale") {
+    // A fixed scale: the automatic one would move it again.
+    s.autoRenderScale = false;
+    return assign(s.renderScale, parseFloat(name, value, 0.125f, 1.0f), E::Resize);
+  }
+  if (name == "auto-scale") return assign(s.autoRenderScale, parseBool(name, value), E::None);
+  if (name == "vsync") return assign(s.vsync, parseBool(name, value), E::None);
+  if (name == "max-samples")
+    return assign(s.maxSamples, parseUint(name, value, 0, 1u << 24), E::None);
+  if (name == "ui") return assign(s.showUi, parseBool(name, value), E::None);
+  throw Error(fmt::format("unknown setting '{}'", name));
+}
+
+RenderSize renderSize(uint32_t framebufferWidth, uint32_t framebufferHeight, float scale) {
+  auto scaled = [&](uint32_t n) { return std::max(1u, uint32_t(std::lround(double(n) * scale))); };
+  return {scaled(framebufferWidth), scaled(framebufferHeight)};
+}
+
+render::RenderJob makeRenderJob(const ViewerSettings& settings, const std::string& scene,
+                                const std::string& vary, const std::string& set,
+                                const scene::Camera& camera, RenderSize size,
+                                uint32_t accumulatedSamples) {
+  render::RenderJob job;
+  job.scene = scene;
+  job.vary = vary;
+  job.set = set;
+  job.camera = camera;
+  job.width = size.width;
+  job.height = size.height;
+  job.spp = accumulatedSamples;
+  // The same frames in the same order: samples are stratified per frame.
+  job.sppPerFrame = settings.samplesPerFrame;
+  job.settings = settings.tracer;
+  job.toneMapping = settings.toneMapping;
+  job.allEffects = settings.allEffects;
+  return job;
+}
+
+}  // namespace penumbra::viewer

@@ -1,0 +1,53 @@
+#pragma once
+// What the viewer's menus and scripts change, and how it maps onto the
+// renderer: PathTracerSettings for each frame, the display's tone mapping, and
+// the RenderJob recorded beside a screenshot (for `penumbra render --settings`).
+#include <string>
+
+#include "render/path_tracer.h"
+#include "render/render_job.h"
+#include "render/tone_mapping.h"
+
+namespace penumbra::viewer {
+
+struct ViewerSettings {
+  render::PathTracerSettings tracer;
+  uint32_t samplesPerFrame = 1;  // low by default: each frame must stay interactive
+  render::ToneMapping toneMapping;
+  bool allEffects = false;
+  float renderScale = 1.0f;
+  bool autoRenderScale = true;
+  bool vsync = true;
+  uint32_t maxSamples = 0;  // accumulation stops here; 0 = never
+  bool showUi = true;       // the menus and the stats overlay (F1)
+};
+
+// What a change calls for.
+enum class SettingEffect {
+  None,               // display only (exposure, tone curve, vsync, render scale mode)
+  ResetAccumulation,  // the image changes: start the running mean again
+  RebuildRenderer,    // the pipeline changes (all effects on/off): a new PathTracer
+  Resize,             // the render resolution changes
+};
+
+// Sets one setting by its script name ("spp-per-frame", "max-depth",
+// "integrator", "strategy", "mis-heuristic", "russian-roulette", "clamp",
+// "seed", "exposure", "tonemap", "all-effects", "render-scale", "auto-scale",
+// "vsync", "max-samples", "ui"). Throws penumbra::Error naming the setting on a bad name or value.
+SettingEffect applySetting(ViewerSettings& settings, const std::string& name,
+                           const std::string& value);
+
+// The render resolution for a framebuffer of this size at this scale (>= 1x1).
+struct RenderSize {
+  uint32_t width = 1, height = 1;
+};
+RenderSize renderSize(uint32_t framebufferWidth, uint32_t framebufferHeight, float scale);
+
+// The job that reproduces the current image: what was rendered so far
+// (`accumulatedSamples` at `size`) from `camera` with these settings.
+render::RenderJob makeRenderJob(const ViewerSettings& settings, const std::string& scene,
+                                const std::string& vary, const std::string& set,
+                                const scene::Camera& camera, RenderSize size,
+                                uint32_t accumulatedSamples);
+
+}  // namespace penumbra::viewer

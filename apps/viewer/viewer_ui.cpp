@@ -1,0 +1,257 @@
+// The viewer's Dear ImGui menus: scene, camera, algorithm, material, stats.
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "render/effect_set.h"
+#include "render/render_job.h"
+#include "scene/material_row.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+#include "viewer_app.h"
+
+namespace penumbra::viewer {
+namespace {
+
+// Combo over named values; returns whether the selection changed.
+template <class T, class NameOf>
+bool enumCombo(const char* label, T& value, const std::vector<T>& values, NameOf nameOf) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, nameOf(value))) {
+    for (const T& v : values) {
+      if (ImGui::Selectable(nameOf(v), v == value) && v != value) {
+        value = v;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+}  // namespace
+
+void Viewer::drawUi() {
+  if (!settings_.showUi) return;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Penumbra");
+  try {
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawSceneMenu();
+    if (ImGui::CollapsingHeader("Camera")) drawCameraMenu();
+    if (ImGui::CollapsingHeader("Algorithm")) drawAlgorithmMenu();
+    if (ImGui::CollapsingHeader("Material")) drawMaterialMenu();
+  } catch (const Error& e) {
+    // A bad scene path or edit is reported in the window, not fatal.
+    statusLine_ = e.what();
+  }
+  if (!statusLine_.empty()) ImGui::TextWrapped("%s", statusLine_.c_str());
+  ImGui::End();
+  drawStats();
+}
+
+void Viewer::drawSceneMenu() {
+  static const std::vector<std::string> builtIn = scene::builtInSceneNames();
+  if (ImGui::BeginCombo("built-in", sceneName_.c_str())) {
+    for (const auto& name : builtIn)
+      if (ImGui::Selectable(name.c_str(), name == sceneName_)) loadScene(name);
+    ImGui::EndCombo();
+  }
+  ImGui::InputText("file", scenePath_, sizeof(scenePath_));
+  ImGui::SameLine();
+  if (ImGui::Button("Open")) loadScene(scenePath_);
+  static char shotPath[256] = "penumbra-screenshot.exr";
+  ImGui::InputText("##shot", shotPath, sizeof(shotPath));
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) takeScreenshot(shotPath);
+}
+
+void Viewer::drawCameraMenu() {
+  const scene::Camera& c = camera_->camera();
+  ImGui::Text("position %.3f %.3f %.3f", c.position.x, c.position.y, c.position.z);
+  float speed = camera_->speed();
+  if (ImGui::DragFloat("speed (m/s)", &speed, 0.01f, 0.001f, 1000.0f, "%.3f",
+                       ImGuiSliderFlags_Logarithmic))
+    camera_->setSpeed(speed);
+  if (ImGui::Button("Reset to scene camera (Home)")) {
+    camera_->reset();
+    tracer_->setCamera(camera_->camera());
+  }
+  ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel: speed");
+  ImGui::TextDisabled("double-click: look at that surface, select its material");
+  ImGui::Separator();
+  ImGui::InputText("##bookmark", bookmarkName_, sizeof(bookmarkName_));
+  ImGui::SameLine();
+  if (ImGui::Button("Save bookmark"))
+    bookmarks_.save(sceneName_, {bookmarkName_, camera_->camera()});
+  for (const auto& b : bookmarks_.list(sceneName_)) {
+    ImGui::PushID(b.name.c_str());
+    if (ImGui::Button(b.name.c_str())) {
+      camera_->setCamera(b.camera);
+      tracer_->setCamera(camera_->camera());
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) bookmarks_.remove(sceneName_, b.name);
+    ImGui::PopID();
+  }
+  ImGui::TextDisabled("bookmarks: %s", bookmarks_.path().c_str());
+}
+
+void Viewer::drawAlgorithmMenu() {
+  auto& t = settings_.tracer;
+  bool reset = false;
+  reset |=
+      enumCombo("integrator", t.integrator, {render::Integrator::Path, render::Integrator::Whitted},
+                &render::integratorName);
+  int spp = int(settings_.samplesPerFrame);
+  if (ImGui::SliderInt("spp per frame", &spp, 1, int(render::PathTracer::kMaxSamplesPerFrame))) {
+    settings_.samplesPerFrame = uint32_t(spp);
+    reset = true;
+  }
+  int depth = int(t.maxDepth);
+  if (ImGui::SliderInt("max depth", &depth, 0, 64)) {
+    t.maxDepth = uint32_t(depth);
+    reset = true;
+  }
+  if (t.integrator == render::Integrator::Path) {
+    using S = render::SamplingStrategy;
+    reset |= enumCombo("strategy", t.strategy, {S::Uniform, S::Cosine, S::Bsdf, S::Nee, S::Mis},
+                       &render::strategyName);
+    reset |= enumCombo("MIS heuristic", t.misHeuristic,
+                       {render::MisHeuristic::Power, render::MisHeuristic::Balance},
+                       &render::misHeuristicName);
+    reset |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
+    reset |= ImGui::DragFloat("clamp (0 = off)", &t.radianceClamp, 0.1f, 0.0f, 1e4f);
+  }
+  int seed = int(t.seed);
+  if (ImGui::InputInt("seed", &seed) && seed >= 0) {
+    t.seed = uint32_t(seed);
+    reset = true;
+  }
+  if (reset) tracer_->resetAccumulation();
+
+  ImGui::Separator();
+  ImGui::DragFloat("exposure", &settings_.toneMapping.exposure, 0.01f, 0.0f, 100.0f);
+  enumCombo("tone mapping", settings_.toneMapping.toneOperator, render::allToneMapOperators(),
+            &render::toneMapOperatorName);
+  if (ImGui::Checkbox("vsync", &settings_.vsync)) applyEffect(SettingEffect::None);
+  if (ImGui::Checkbox("auto render scale", &settings_.autoRenderScale))
+    applyEffect(SettingEffect::None);
+  ImGui::BeginDisabled(settings_.autoRenderScale);
+  float scale = scale_.scale();
+  if (ImGui::SliderFloat("render scale", &scale, RenderScaleController::kMinScale,
+                         RenderScaleController::kMaxScale, "%.3f")) {
+    settings_.renderScale = scale;
+    applyEffect(SettingEffect::Resize);
+  }
+  ImGui::EndDisabled();
+  int cap = int(settings_.maxSamples);
+  if (ImGui::InputInt("stop at spp (0 = never)", &cap) && cap >= 0)
+    settings_.maxSamples = uint32_t(cap);
+
+  ImGui::Separator();
+  std::string effects;
+  for (const auto& name : render::effectNames(tracer_->pipelineEffects()))
+    effects += (effects.empty() ? "" : ", ") + name;
+  ImGui::TextWrapped("pipeline effects: %s", effects.empty() ? "none" : effects.c_str());
+  if (ImGui::Checkbox("all effects", &settings_.allEffects))
+    applyEffect(SettingEffect::RebuildRenderer);
+}
+
+void Viewer::materialsChanged() {
+  if (tracer_->updateMaterials(scene_.materials))
+    statusLine_ = "pipeline rebuilt for the new effects";
+}
+
+void Viewer::drawMaterialMenu() {
+  auto& materials = scene_.materials;
+  if (materials.empty()) return;
+  selectedMaterial_ = std::clamp(selectedMaterial_, 0, int(materials.size()) - 1);
+  if (ImGui::BeginCombo("material", materials[size_t(selectedMaterial_)].name.c_str())) {
+    for (int i = 0; i < int(materials.size()); ++i)
+      if (ImGui::Selectable(fmt::format("{}##{}", materials[size_t(i)].name, i).c_str(),
+                            i == selectedMaterial_))
+        selectedMaterial_ = i;
+    ImGui::EndCombo();
+  }
+  auto& m = materials[size_t(selectedMaterial_)];
+  bool changed = ImGui::ColorEdit3("base color", &m.baseColor.x);
+  if (m.model == scene::MaterialModel::Phong) {
+    changed |= ImGui::SliderFloat("ks", &m.ks, 0, 1);
+    changed |=
+        ImGui::SliderFloat("exponent", &m.exponent, 1, 1000, "%.0f", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("reflectivity", &m.reflectivity, 0, 1);
+    changed |= ImGui::SliderFloat("transparency", &m.transparency, 0, 1);
+    changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
+  } else {
+    for (auto [label, field] : {std::pair{"metallic", &m.metallic},
+                                {"roughness", &m.roughness},
+                                {"anisotropic", &m.anisotropic},
+                                {"specular", &m.specular},
+                                {"specular tint", &m.specularTint},
+                                {"sheen", &m.sheen},
+                                {"sheen tint", &m.sheenTint},
+                                {"clearcoat", &m.clearcoat},
+                                {"clearcoat gloss", &m.clearcoatGloss},
+                                {"transmission", &m.specTrans},
+                                {"subsurface", &m.subsurface}})
+      changed |= ImGui::SliderFloat(label, field, 0, 1);
+    changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
+  }
+  ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");
+  if (changed) {
+    materialsEdited_ = true;
+    materialsChanged();
+  }
+
+  if (scene_.materialRow) {
+    ImGui::Separator();
+    ImGui::TextUnformatted("material-test row");
+    std::string vary = vary_;
+    if (ImGui::BeginCombo("varied parameter", vary.c_str())) {
+      for (const auto& name : scene::variableDisneyParameters())
+        if (ImGui::Selectable(name.c_str(), name == vary)) vary = name;
+      ImGui::EndCombo();
+    }
+    auto& base = scene_.materialRow->base;
+    glm::vec3 color = base.baseColor;
+    float metallic = base.metallic, roughness = base.roughness, specTrans = base.specTrans;
+    bool rowChanged = vary != vary_;
+    rowChanged |= ImGui::ColorEdit3("row base color", &color.x);
+    rowChanged |= ImGui::SliderFloat("row metallic", &metallic, 0, 1);
+    rowChanged |= ImGui::SliderFloat("row roughness", &roughness, 0, 1);
+    rowChanged |= ImGui::SliderFloat("row transmission", &specTrans, 0, 1);
+    if (rowChanged) {
+      vary_ = vary;
+      set_ = fmt::format("baseColor={},{},{},metallic={},roughness={},specTrans={}", color.x,
+                         color.y, color.z, metallic, roughness, specTrans);
+      scene::changeMaterialRow(scene_, vary_, set_);
+      materialsChanged();
+    }
+  }
+}
+
+void Viewer::drawStats() {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(
+      ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 8, viewport->WorkPos.y + 8),
+      ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowBgAlpha(0.5f);
+  ImGui::Begin("stats", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
+  const auto& adapter = device_->adapter();
+  ImGui::Text("%s (%s)", adapter.name.c_str(), device_->backendName());
+  ImGui::Text("render %ux%u (scale %.3f%s), window %ux%u", tracer_->width(), tracer_->height(),
+              scale_.scale(), scale_.automatic() ? " auto" : "", swapchain_->desc().width,
+              swapchain_->desc().height);
+  ImGui::Text("accumulated %u spp", tracer_->accumulatedSamples());
+  ImGui::Text(
+      "GPU %.2f ms/frame, %.1f Mrays/s", lastStats_.gpuSeconds * 1e3,
+      lastStats_.gpuSeconds > 0 ? double(lastStats_.rays) / lastStats_.gpuSeconds * 1e-6 : 0.0);
+  ImGui::Text("frame %.1f ms (%.1f fps)", frameSeconds_ * 1e3,
+              frameSeconds_ > 0 ? 1.0 / frameSeconds_ : 0.0);
+  ImGui::End();
+}
+
+}  // namespace penumbra::viewer

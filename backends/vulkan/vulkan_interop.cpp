@@ -1,0 +1,41 @@
+#include "vulkan_interop.h"
+
+#include "util/error.h"
+#include "vulkan_backend.h"
+#include "vulkan_swapchain.h"
+
+namespace penumbra::vk::interop {
+namespace {
+template <class Derived, class Base>
+Derived& backendObject(Base& object, const char* what) {
+  auto* derived = dynamic_cast<Derived*>(&object);
+  if (!derived) throw Error(std::string("vulkan interop: the ") + what + " is not a Vulkan one");
+  return *derived;
+}
+}  // namespace
+
+DeviceHandles deviceHandles(rhi::IDevice& device) {
+  auto& vkDevice = backendObject<VulkanDevice>(device, "device");
+  DeviceHandles handles;
+  handles.instance = vkDevice.instance();
+  handles.physicalDevice = vkDevice.physicalDevice();
+  handles.device = vkDevice.handle();
+  handles.queueFamily = vkDevice.queueFamily();
+  handles.queue = vkDevice.queue();
+  handles.getInstanceProcAddr = instanceProcAddr();
+  return handles;
+}
+
+VkCommandBuffer commandBuffer(rhi::ICommandList& commandList) {
+  return backendObject<VulkanCommandList>(commandList, "command list").handle();
+}
+
+VkImageView imageView(rhi::ITexture& texture) {
+  return backendObject<VulkanTexture>(texture, "texture").view();
+}
+
+VkFormat swapchainFormat(rhi::ISwapchain& swapchain) {
+  return backendObject<VulkanSwapchain>(swapchain, "swapchain").vkFormat();
+}
+
+}  // namespace penumbra::vk::interop

@@ -1,0 +1,40 @@
+#include "render/display_pass.h"
+
+#include "bindings.hlsli"
+#include "penumbra_shaders.h"
+#include "util/error.h"
+
+namespace penumbra::render {
+
+DisplayPass::DisplayPass(rhi::IDevice& device) : device_(device) {
+  rhi::ComputePipelineDesc desc;
+  desc.shader = shaders::shaderDesc("display.comp");
+  desc.debugName = "display";
+  pipeline_ = device_.createComputePipeline(desc);
+}
+
+void DisplayPass::record(rhi::ICommandList& commandList, const rhi::TextureHandle& hdr,
+                         const rhi::TextureHandle& target, const ToneMapping& toneMapping) {
+  if (target->desc().format != rhi::Format::RGBA8_UNORM)
+    throw Error("display pass: the target must be an RGBA8 storage texture");
+  if (!bindings_ || boundHdr_ != hdr.get() || boundTarget_ != target.get()) {
+    rhi::BindingSetDesc set;
+    set.debugName = "display bindings";
+    set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(0), hdr),
+                 rhi::BindingSetItem::storageTexture(PENUMBRA_U(0), target)};
+    bindings_ = device_.createBindingSet(set, *pipeline_);
+    boundHdr_ = hdr.get();
+    boundTarget_ = target.get();
+  }
+  struct {
+    uint32_t sourceWidth, sourceHeight, targetWidth, targetHeight;
+    float exposure;
+    uint32_t toneOperator;
+  } push{hdr->desc().width,     hdr->desc().height,   target->desc().width,
+         target->desc().height, toneMapping.exposure, uint32_t(toneMapping.toneOperator)};
+  commandList.setComputeState({pipeline_.get(), {bindings_.get()}});
+  commandList.setPushConstants(&push, sizeof(push));
+  commandList.dispatch((push.targetWidth + 7) / 8, (push.targetHeight + 7) / 8);
+}
+
+}  // namespace penumbra::render

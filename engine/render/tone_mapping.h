@@ -1,0 +1,30 @@
+#pragma once
+// The display transform's settings, shared by PNG output (Tonemapper) and the
+// viewer (DisplayPass): exposure, then a tone curve, then sRGB encoding
+// (shaders/shared/tonemap.hlsli).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace penumbra::render {
+
+// Values match TONEMAP_* in tonemap.hlsli.
+enum class ToneMapOperator : uint32_t {
+  Clamp = 0,       // linear, values above 1 clip (the default: PNGs match the EXR's values)
+  Reinhard = 1,    // x / (1 + x) per channel
+  AcesFitted = 2,  // Hill's fit of the ACES RRT + sRGB ODT
+};
+
+struct ToneMapping {
+  float exposure = 1.0f;
+  ToneMapOperator toneOperator = ToneMapOperator::Clamp;
+};
+
+// "clamp", "reinhard", "aces".
+const char* toneMapOperatorName(ToneMapOperator op);
+std::optional<ToneMapOperator> parseToneMapOperator(std::string_view name);
+const std::vector<ToneMapOperator>& allToneMapOperators();
+
+}  // namespace penumbra::render
