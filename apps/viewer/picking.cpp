@@ -15,34 +15,25 @@ Ray cameraRay(const scene::Camera& camera, uint32_t width, uint32_t height, glm:
   return {camera.position, glm::normalize(forward + sx * right + sy * up)};
 }
 
-std::optional<PickHit> pick(const scene::Scene& scene, const Ray& ray) {
-  std::optional<PickHit> best;
-  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    const auto& instance = scene.instances[i];
-    const auto& mesh = scene.meshes[instance.mesh];
-    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      glm::vec3 p[3];
-      for (int k = 0; k < 3; ++k)
-        p[k] = glm::vec3(instance.transform *
-                         glm::vec4(mesh.positions[mesh.indices[t + size_t(k)]], 1.0f));
-      // Möller-Trumbore.
-      const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-      const glm::vec3 h = glm::cross(ray.direction, e2);
-      const float det = glm::dot(e1, h);
-      if (std::abs(det) < 1e-12f) continue;
-      const float inv = 1.0f / det;
-      const glm::vec3 s = ray.origin - p[0];
-      const float u = glm::dot(s, h) * inv;
-      if (u < 0.0f || u > 1.0f) continue;
-      const glm::vec3 q = glm::cross(s, e1);
-      const float v = glm::dot(ray.direction, q) * inv;
-      if (v < 0.0f || u + v > 1.0f) continue;
-      const float distance = glm::dot(e2, q) * inv;
-      if (distance <= 0.0f || (best && distance >= best->distance)) continue;
-      best = PickHit{ray.origin + ray.direction * distance, distance, i, mesh.material};
-    }
+std::optional<PickHit> pick(render::PathTracer& tracer, const scene::Scene& scene, const Ray& ray) {
+  const auto hits = tracer.traceProbeRays({{ray.origin, ray.direction, 1e30f}});
+  if (hits.empty() || !hits[0].isHit()) return std::nullopt;
+  const render::SurfaceHit& hit = hits[0];
+  // InstanceData lists the mesh instances, then the implicit objects.
+  const size_t meshInstances = scene.instances.size();
+  PickHit result;
+  result.position = hit.position;
+  result.distance = hit.hitT * glm::length(ray.direction);
+  if (hit.instanceIndex < meshInstances) {
+    const auto& mesh = scene.meshes[scene.instances[hit.instanceIndex].mesh];
+    result.object = mesh.name;
+    result.material = mesh.material;
+  } else {
+    const auto& object = scene.implicits.at(hit.instanceIndex - meshInstances);
+    result.object = object.name;
+    result.material = object.material;
   }
-  return best;
+  return result;
 }
 
 }  // namespace penumbra::viewer

@@ -1,12 +1,13 @@
 #pragma once
 // What is under the cursor: the viewer's focus-on-click and material
-// selection. PathTracer::traceProbeRays (the GPU probe, on another branch)
-// is meant for this; until it reaches main the viewer intersects the scene's
-// triangles on the CPU, which is exact for triangle scenes and fast enough
-// for one ray per click.
+// selection. The ray goes through the renderer's own pipeline
+// (PathTracer::traceProbeRays), so triangles and implicit surfaces are picked
+// exactly as they are drawn.
 #include <glm/glm.hpp>
 #include <optional>
+#include <string>
 
+#include "render/path_tracer.h"
 #include "scene/scene.h"
 
 namespace penumbra::viewer {
@@ -24,11 +25,11 @@ Ray cameraRay(const scene::Camera& camera, uint32_t width, uint32_t height, glm:
 struct PickHit {
   glm::vec3 position{0.0f};
   float distance = 0;
-  uint32_t instance = 0;
+  std::string object;  // the mesh's or implicit object's name
   uint32_t material = 0;
 };
 
-// The closest triangle hit along `ray` (both faces), if any.
-std::optional<PickHit> pick(const scene::Scene& scene, const Ray& ray);
+// The closest hit along `ray`, if any; `scene` is the one `tracer` renders.
+std::optional<PickHit> pick(render::PathTracer& tracer, const scene::Scene& scene, const Ray& ray);
 
 }  // namespace penumbra::viewer

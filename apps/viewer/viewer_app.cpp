@@ -181,7 +181,7 @@ void Viewer::handleInput(float seconds) {
 
 void Viewer::focusOn(glm::vec2 renderPixel) {
   const Ray ray = cameraRay(camera_->camera(), tracer_->width(), tracer_->height(), renderPixel);
-  const auto hit = pick(scene_, ray);
+  const auto hit = pick(*tracer_, scene_, ray);
   if (!hit) {
     statusLine_ = "nothing under the cursor";
     return;
@@ -189,8 +189,7 @@ void Viewer::focusOn(glm::vec2 renderPixel) {
   camera_->lookAt(hit->position);
   tracer_->setCamera(camera_->camera());
   selectedMaterial_ = int(hit->material);
-  statusLine_ = fmt::format("focus: {} ({}), {:.3f} m away",
-                            scene_.meshes[scene_.instances[hit->instance].mesh].name,
+  statusLine_ = fmt::format("focus: {} ({}), {:.3f} m away", hit->object,
                             scene_.materials[hit->material].name, hit->distance);
 }
 
