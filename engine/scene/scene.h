@@ -10,6 +10,47 @@
 
 namespace penumbra::scene {
 
+// A decoded image, 8 bits per channel RGBA, rows top to bottom (glTF's uv
+// (0, 0) is the first texel).
+struct Texture {
+  std::string name;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> rgba8;  // width * height * 4 bytes
+  // The channels hold sRGB-encoded colour (base colour, emission): the GPU
+  // decodes them to linear when sampling. Data textures (metallic-roughness,
+  // normal, occlusion) are linear. An image used both ways becomes two.
+  bool srgb = false;
+};
+
+// How a texture is filtered and wrapped (glTF samplers). Without mipmaps the
+// minification filter reduces to nearest or linear.
+enum class TextureFilter { Nearest, Linear };
+enum class TextureWrap { Repeat, MirroredRepeat, ClampToEdge };
+struct TextureSampler {
+  TextureFilter magFilter = TextureFilter::Linear;
+  TextureFilter minFilter = TextureFilter::Linear;
+  TextureWrap wrapU = TextureWrap::Repeat;
+  TextureWrap wrapV = TextureWrap::Repeat;
+  bool operator==(const TextureSampler&) const = default;
+};
+
+// One use of a texture by a material: which image, how it is sampled, and
+// the texture coordinates it reads (KHR_texture_transform applied to the
+// chosen set: uv' = transform * (u, v, 1)).
+struct TextureRef {
+  uint32_t texture = 0;  // index into Scene::textures
+  TextureSampler sampler;
+  uint32_t texCoord = 0;  // TEXCOORD_0 or TEXCOORD_1
+  // Columns of the 3x2 affine transform: uv' = c0 * u + c1 * v + c2.
+  glm::vec2 transform0{1.0f, 0.0f};
+  glm::vec2 transform1{0.0f, 1.0f};
+  glm::vec2 transform2{0.0f, 0.0f};
+};
+
+// glTF alpha modes: how the base colour's alpha cuts the surface.
+enum class AlphaMode { Opaque, Mask, Blend };
+
 // Which shading model a material uses (docs/materials.md).
 enum class MaterialModel {
   Disney,   // the principled BSDF with Burley diffuse
@@ -42,6 +83,21 @@ struct Material {
   float reflectivity = 0.0f;
   float transparency = 0.0f;
 
+  // Textures (glTF), each an index into Scene::textureRefs or none. Each
+  // multiplies its factor above: base colour (rgb; alpha for alphaMode),
+  // metallic (blue) and roughness (green), emission (rgb).
+  static constexpr uint32_t kNoTexture = 0xffffffffu;
+  uint32_t baseColorTexture = kNoTexture;
+  uint32_t metallicRoughnessTexture = kNoTexture;
+  uint32_t normalTexture = kNoTexture;  // tangent space, scaled xy by normalScale
+  uint32_t emissiveTexture = kNoTexture;
+  uint32_t occlusionTexture = kNoTexture;  // red channel; only Whitted's ambient term uses it
+  float normalScale = 1.0f;
+  float occlusionStrength = 1.0f;
+  float alpha = 1.0f;  // base colour alpha factor
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));
@@ -67,6 +123,7 @@ struct Mesh {
   std::vector<glm::vec3> normals;   // unit, object space
   std::vector<glm::vec4> tangents;  // xyz unit, w = +-1: bitangent = cross(normal, xyz) * w
   std::vector<glm::vec2> uv0;       // glTF convention: (0, 0) is the image's top-left corner
+  std::vector<glm::vec2> uv1;       // TEXCOORD_1, as uv0
   uint32_t triangleCount() const { return uint32_t(indices.size() / 3); }
 };
 
@@ -100,6 +157,8 @@ struct NamedCamera {
 struct Scene {
   std::string name;
   std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<TextureRef> textureRefs;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<ImplicitObject> implicits;
