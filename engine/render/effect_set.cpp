@@ -15,6 +15,13 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   // metallic, ks -> specular, transparency -> specTrans).
   if (m.reflectivity > 0.0f || m.ks > 0.0f) effects |= PT_EFFECT_SPECULAR;
   if (m.transparency > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
+  const bool textured = m.baseColorTexture != scene::Material::kNoTexture ||
+                        m.metallicRoughnessTexture != scene::Material::kNoTexture ||
+                        m.normalTexture != scene::Material::kNoTexture ||
+                        m.emissiveTexture != scene::Material::kNoTexture ||
+                        m.occlusionTexture != scene::Material::kNoTexture;
+  if (textured) effects |= PT_EFFECT_TEXTURES;
+  if (alphaMasked(m)) effects |= PT_EFFECT_ALPHA_MASK;
   if (m.model == scene::MaterialModel::Phong) return effects;
   if (m.metallic > 0.0f || m.specular > 0.0f) effects |= PT_EFFECT_SPECULAR;
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
@@ -28,9 +35,14 @@ struct EntryPointBits {
   uint32_t bits;
 };
 constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFFECT_BITS},
-                                           {"whitted.rgen", PT_WHITTED_EFFECT_BITS}};
+                                           {"whitted.rgen", PT_WHITTED_EFFECT_BITS},
+                                           {"triangle.rchit", PT_TRIANGLE_HIT_EFFECT_BITS}};
 
 }  // namespace
+
+bool alphaMasked(const scene::Material& m) {
+  return m.alphaMode == scene::AlphaMode::Mask && m.baseColorTexture != scene::Material::kNoTexture;
+}
 
 uint32_t deriveMaterialEffects(const scene::Material& material) { return materialEffectsOf(material); }
 
@@ -49,15 +61,16 @@ uint32_t deriveEffects(const scene::Scene& scene) {
 }
 
 std::vector<std::string> effectNames(uint32_t effects) {
-  static const char* const kNames[PT_EFFECT_COUNT] = {"area-lights",  "delta-lights", "specular",
-                                                      "transmission", "clearcoat",    "sheen"};
+  static const char* const kNames[PT_EFFECT_COUNT] = {
+      "area-lights", "delta-lights", "specular", "transmission",
+      "clearcoat",   "sheen",        "textures", "alpha-mask"};
   std::vector<std::string> names;
   for (int bit = 0; bit < PT_EFFECT_COUNT; ++bit)
     if (effects & (1u << bit)) names.emplace_back(kNames[bit]);
   return names;
 }
 
-std::string rayGenerationVariant(std::string_view shader, uint32_t effects) {
+std::string effectVariant(std::string_view shader, uint32_t effects) {
   for (const auto& entry : kVariantBits) {
     if (entry.shader != shader) continue;
     const uint32_t mask = effects & entry.bits;

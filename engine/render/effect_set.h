@@ -20,12 +20,19 @@ uint32_t deriveEffects(const scene::Scene& scene);
 // those follow from emission, which deriveEffects adds).
 uint32_t deriveMaterialEffects(const scene::Material& material);
 
+// Whether a material's surface is cut per texel by its base colour's alpha
+// (alphaMode MASK with a base-colour texture): its meshes are non-opaque
+// geometry and the triangles' hit group gets the alpha any-hit shader. MASK
+// without a texture is all or nothing, decided when the scene is loaded.
+bool alphaMasked(const scene::Material& material);
+
 // Names of the bits in `effects`, in bit order ("area-lights", "sheen", ...).
 std::vector<std::string> effectNames(uint32_t effects);
 
-// The embedded variant of a ray-generation shader ("path_trace.rgen") compiled
-// for `effects`, restricted to the bits the entry point has variants for:
-// "path_trace.e5.rgen", or the plain name when every one of its bits is set.
-std::string rayGenerationVariant(std::string_view shader, uint32_t effects);
+// The embedded variant of an entry point ("path_trace.rgen", "whitted.rgen",
+// "triangle.rchit") compiled for `effects`, restricted to the bits the entry
+// point has variants for: "path_trace.e5.rgen", or the plain name when every
+// one of its bits is set.
+std::string effectVariant(std::string_view shader, uint32_t effects);
 
 }  // namespace penumbra::render

@@ -13,6 +13,7 @@
 #include "penumbra_shaders.h"
 #include "render/effect_set.h"
 #include "render/implicit_geometry.h"
+#include "render/scene_textures.h"
 #include "util/error.h"
 
 namespace penumbra::render {
@@ -62,12 +63,20 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   if (m.model == scene::MaterialModel::Lambert) flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;
   d.flags = {m.model == scene::MaterialModel::Phong ? MATERIAL_MODEL_PHONG : MATERIAL_MODEL_DISNEY,
              flags, 0, 0};
+  d.textures = {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.emissiveTexture};
+  const uint32_t alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
+                             : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND
+                                                                      : MATERIAL_ALPHA_OPAQUE;
+  d.textures2 = {m.occlusionTexture, alphaMode, 0, 0};
+  d.textureParams = {m.normalScale, m.occlusionStrength, m.alpha, m.alphaCutoff};
   return d;
 }
 
 struct PathTracer::SceneBuffers {
   rhi::BufferHandle vertices, indices, instances, materials, emissive, pointLights;
   rhi::BufferHandle normals, tangents, texcoords;
+  SceneTextures textures;
+  rhi::BufferHandle textureRefs;
   std::vector<rhi::rt::AccelStructHandle> bottomLevels;
   rhi::rt::AccelStructHandle topLevel;
   rhi::BufferHandle implicits, implicitAabbs;
@@ -142,8 +151,9 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
       normals.push_back(mesh.normals.empty() ? gpu::float4{} : toFloat4(mesh.normals[v]));
       const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[v];
       tangents.push_back({t.x, t.y, t.z, t.w});
-      texcoords.push_back(mesh.uv0.empty() ? gpu::float4{}
-                                           : gpu::float4{mesh.uv0[v].x, mesh.uv0[v].y, 0, 0});
+      const glm::vec2 uv0 = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[v];
+      const glm::vec2 uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[v];
+      texcoords.push_back({uv0.x, uv0.y, uv1.x, uv1.y});
     }
     indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
@@ -173,16 +183,37 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
       // A mirroring transform reverses the winding of the world-space corners;
       // swapping two keeps the emitting side the mesh's front.
       const bool mirrored = glm::determinant(glm::mat3(inst.transform)) < 0.0f;
-      const double lum = 0.2126 * material.emission.x + 0.7152 * material.emission.y +
-                         0.0722 * material.emission.z;
+      // A textured emitter is chosen by its mean radiance; the shader
+      // multiplies the texture in where it samples.
+      const bool textured = material.emissiveTexture != scene::Material::kNoTexture;
+      const scene::TextureRef* emissionRef = textured ? &scene.textureRefs[material.emissiveTexture] : nullptr;
+      const glm::vec3 meanEmission =
+          textured ? material.emission * meanLinearColor(scene.textures[emissionRef->texture])
+                   : material.emission;
+      const double lum = 0.2126 * meanEmission.x + 0.7152 * meanEmission.y + 0.0722 * meanEmission.z;
+      const auto& uvSet = emissionRef && emissionRef->texCoord == 1 ? mesh.uv1 : mesh.uv0;
+      uint32_t emissionTexture = textured ? material.emissiveTexture : PT_NO_TEXTURE;
+      float emissionTextureBits;
+      std::memcpy(&emissionTextureBits, &emissionTexture, sizeof(float));
       for (size_t t = 0; t < mesh.indices.size(); t += 3) {
         glm::vec3 p[3];
-        for (int k = 0; k < 3; ++k)
-          p[k] = glm::vec3(inst.transform * glm::vec4(mesh.positions[mesh.indices[t + k]], 1.0f));
-        if (mirrored) std::swap(p[1], p[2]);
+        glm::vec2 uv[3];
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t vertex = mesh.indices[t + k];
+          p[k] = glm::vec3(inst.transform * glm::vec4(mesh.positions[vertex], 1.0f));
+          uv[k] = uvSet.empty() ? glm::vec2(0.0f) : uvSet[vertex];
+        }
+        if (mirrored) {
+          std::swap(p[1], p[2]);
+          std::swap(uv[1], uv[2]);
+        }
         const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-        gpu::EmissiveTriangle tri{toFloat4(p[0]), toFloat4(p[1], area), toFloat4(p[2]),
-                                  toFloat4(material.emission)};
+        gpu::EmissiveTriangle tri{toFloat4(p[0]),
+                                  toFloat4(p[1], area),
+                                  toFloat4(p[2], emissionTextureBits),
+                                  toFloat4(material.emission),
+                                  {uv[0].x, uv[0].y, uv[1].x, uv[1].y},
+                                  {uv[2].x, uv[2].y, 0.0f, 0.0f}};
         emissive.push_back(tri);
         power.push_back(area > 0.0f ? area * lum : 0.0);
       }
@@ -243,13 +274,22 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     cmd->writeBuffer(s.emissive.get(), emissive.data(), emissive.size() * sizeof(gpu::EmissiveTriangle));
   if (!pointLights.empty())
     cmd->writeBuffer(s.pointLights.get(), pointLights.data(), pointLights.size() * sizeof(gpu::PointLight));
+  s.textures = uploadSceneTextures(device_, *cmd, scene);
+  s.textureRefs = makeStorageBuffer(device_, s.textures.refs, BufferUsage::None, "texture refs");
+  cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
+                   s.textures.refs.size() * sizeof(gpu::TextureRefData));
 
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     rhi::rt::AccelStructDesc blas;
     blas.debugName = "BLAS " + scene.meshes[m].name;
     rhi::rt::GeometryDesc geo;
     geo.type = rhi::rt::GeometryType::Triangles;
-    geo.flags = rhi::rt::GeometryFlags::Opaque;
+    // Alpha-masked meshes are the only non-opaque geometry: the any-hit
+    // shader runs for them alone. Each texel is one hit or none, so
+    // duplicate any-hit calls could not change a result, but they cost time.
+    geo.flags = alphaMasked(scene.materials[scene.meshes[m].material])
+                    ? rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation
+                    : rhi::rt::GeometryFlags::Opaque;
     geo.triangles.vertexBuffer = s.vertices.get();
     geo.triangles.vertexOffset = uint64_t(firstVertex[m]) * sizeof(gpu::float4);
     geo.triangles.vertexStride = sizeof(gpu::float4);
@@ -340,17 +380,22 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
   rhi::ShaderDesc rayGenShader =
       rayGeneration == RayGeneration::Probe
           ? shaders::shaderDesc(rayGen)
-          : shaders::shaderDesc(rayGenerationVariant(rayGen, pipelineEffects_));
+          : shaders::shaderDesc(effectVariant(rayGen, pipelineEffects_));
   rayGenShader.exportName = rayGen;
 
   rhi::RayTracingPipelineDesc desc;
   desc.debugName = fmt::format("{} (effects {:#x})", rayGen, pipelineEffects_);
+  rhi::ShaderDesc triangleHit = shaders::shaderDesc(effectVariant("triangle.rchit", pipelineEffects_));
+  triangleHit.exportName = "triangle.rchit";
   desc.shaders = {rayGenShader, shaders::shaderDesc("path_trace.rmiss"),
-                  shaders::shaderDesc("shadow.rmiss"), shaders::shaderDesc("triangle.rchit")};
-  // Hit group 0 is the triangles'; then one per implicit family the scene
-  // uses, in the order of the TLAS instances' hit-group offsets: a pipeline
-  // holds only the intersection shaders of the geometry its scene contains.
-  desc.hitGroups = {{"triangles", "triangle.rchit", "", "", false}};
+                  shaders::shaderDesc("shadow.rmiss"), triangleHit};
+  // Hit group 0 is the triangles' (with the alpha any-hit when the scene has
+  // masked materials); then one per implicit family the scene uses, in the
+  // order of the TLAS instances' hit-group offsets: a pipeline holds only the
+  // intersection shaders of the geometry its scene contains.
+  const bool alphaMask = (pipelineEffects_ & PT_EFFECT_ALPHA_MASK) != 0;
+  desc.hitGroups = {{"triangles", "triangle.rchit", alphaMask ? "triangle_alpha.rahit" : "", "", false}};
+  if (alphaMask) desc.shaders.push_back(shaders::shaderDesc("triangle_alpha.rahit"));
   if (!scene_->implicitFamilies.empty())
     desc.shaders.push_back(shaders::shaderDesc("implicit.rchit"));
   for (ImplicitFamily family : scene_->implicitFamilies) {
@@ -358,7 +403,7 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
     desc.hitGroups.push_back({implicitHitGroupName(family), "implicit.rchit", "",
                               implicitIntersectionShader(family), true});
   }
-  desc.maxPayloadBytes = 68;    // SurfaceHit (surface_hit.hlsli)
+  desc.maxPayloadBytes = 76;    // SurfaceHit (surface_hit.hlsli)
   desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
   desc.maxRecursionDepth = 1;   // only the ray generation shader traces
   const auto start = std::chrono::steady_clock::now();
@@ -393,6 +438,9 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
       Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
       Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
       Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
+      Item::storageBuffer(PT_SLOT_TEXTURE_REFS, scene_->textureRefs),
+      Item::sampledTextures(PT_SLOT_TEXTURES, scene_->textures.textures),
+      Item::samplers(PT_SLOT_SAMPLERS, scene_->textures.samplers),
       Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
       Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
   if (probeRays) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_RAYS, probeRays));

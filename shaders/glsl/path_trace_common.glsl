@@ -1,5 +1,6 @@
 // Resources and trace wrappers shared by the path tracer's GLSL stages.
 #extension GL_EXT_ray_tracing : require
+#extension GL_EXT_nonuniform_qualifier : require
 #include "hlsl_prelude.glsl"
 #include "path_tracer_shared.h"
 #include "math.hlsli"
@@ -28,6 +29,11 @@ layout(set = 0, binding = PT_SLOT_TEXCOORDS, std430) readonly buffer TexCoords {
 layout(set = 0, binding = PT_SLOT_IMPLICITS, std430) readonly buffer Implicits {
   ImplicitData gImplicits[];
 };
+layout(set = 0, binding = PT_SLOT_TEXTURE_REFS, std430) readonly buffer TextureRefs {
+  TextureRefData gTextureRefs[];
+};
+layout(set = 0, binding = PT_SLOT_TEXTURES) uniform texture2D gTextures[];
+layout(set = 0, binding = PT_SLOT_SAMPLERS) uniform sampler gSamplers[];
 layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
 layout(set = 0, binding = PT_SLOT_RAY_COUNTER, std430) buffer RayCounter { uint gRayCount; };
 
@@ -36,3 +42,16 @@ MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
 ImplicitData loadImplicit(uint index) { return gImplicits[index]; }
+TextureRefData loadTextureRef(uint index) { return gTextureRefs[index]; }
+// Indices differ between neighbouring rays, hence nonuniformEXT.
+float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) {
+  return textureLod(sampler2D(gTextures[nonuniformEXT(textureIndex)], gSamplers[nonuniformEXT(samplerIndex)]),
+                    uv, 0.0);
+}
+#include "textures.hlsli"
+
+// The vertex indices of triangle `primitive` of an instance's mesh.
+uint3 triangleVertices(InstanceData instance, uint primitive) {
+  uint base = instance.firstIndex + 3u * primitive;
+  return uint3(gIndices[base], gIndices[base + 1u], gIndices[base + 2u]) + instance.firstVertex;
+}

@@ -1,9 +1,11 @@
 // traceClosest / traceVisibility for ray-generation shaders that declare the
 // gHit and gVisible payloads and the gRaysThisLaunch counter, plus the
 // running-mean accumulation into gAccumulation.
+// No opaque ray flag: geometry decides, and only alpha-masked meshes are
+// non-opaque (their any-hit shader cuts texels away for both kinds of ray).
 SurfaceHit traceClosest(float3 origin, float3 direction) {
   gRaysThisLaunch += 1u;
-  traceRayEXT(gScene, gl_RayFlagsOpaqueEXT, 0xff, 0, 1, PT_MISS_RADIANCE, origin, 0.0, direction,
+  traceRayEXT(gScene, gl_RayFlagsNoneEXT, 0xff, 0, 1, PT_MISS_RADIANCE, origin, 0.0, direction,
               1e30, PT_PAYLOAD_RADIANCE);
   return gHit;
 }
@@ -12,7 +14,7 @@ bool traceVisibility(float3 origin, float3 direction, float tMax) {
   gRaysThisLaunch += 1u;
   gVisible = 0u;
   traceRayEXT(gScene,
-              gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT |
+              gl_RayFlagsTerminateOnFirstHitEXT |
                   gl_RayFlagsSkipClosestHitShaderEXT,
               0xff, 0, 1, PT_MISS_SHADOW, origin, 0.0, direction, tMax, PT_PAYLOAD_SHADOW);
   return gVisible != 0u;

@@ -70,6 +70,9 @@ MaterialData loadMaterial(uint index) {
   m.disney2 = float4(0.0, 0.0, 1.5, 0.0);  // clearcoatGloss, specTrans, ior, subsurface
   m.phong = float4(0.0, 0.0, 0.0, 0.0);
   m.flags = uint4(MATERIAL_MODEL_DISNEY, MATERIAL_FLAG_LAMBERT_DIFFUSE, 0u, 0u);
+  m.textures = uint4(PT_NO_TEXTURE, PT_NO_TEXTURE, PT_NO_TEXTURE, PT_NO_TEXTURE);
+  m.textures2 = uint4(PT_NO_TEXTURE, MATERIAL_ALPHA_OPAQUE, 0u, 0u);
+  m.textureParams = float4(1.0, 1.0, 1.0, 0.5);
   return m;
 }
 
@@ -89,8 +92,22 @@ EmissiveTriangle loadEmissiveTriangle(uint index) {
   t.p1 = float4(0.0, 0.0, 0.0, 1.0);
   t.p2 = float4(0.0, 0.0, 0.0, 0.0);
   t.radiance = float4(0.0, 0.0, 0.0, 1.0);
+  t.uv01 = float4(0.0, 0.0, 0.0, 0.0);
+  t.uv2 = float4(0.0, 0.0, 0.0, 0.0);
   return t;
 }
+
+// The sphere has no textures (every material slot is PT_NO_TEXTURE); the
+// texture core still compiles through this front-end.
+TextureRefData loadTextureRef(uint index) {
+  TextureRefData r;
+  r.transform = float4(1.0, 0.0, 0.0, 1.0);
+  r.offset = float4(0.0, 0.0, 0.0, 0.0);
+  r.ids = uint4(0u, 0u, 0u, 0u);
+  return r;
+}
+float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) { return float4(1.0, 1.0, 1.0, 1.0); }
+#include "textures.hlsli"
 
 #include "camera.hlsli"
 #include "path_tracer.hlsli"

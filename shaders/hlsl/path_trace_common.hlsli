@@ -27,6 +27,9 @@ StructuredBuffer<float4> gNormals : PENUMBRA_REGISTER_T(PT_T_NORMALS);
 StructuredBuffer<float4> gTangents : PENUMBRA_REGISTER_T(PT_T_TANGENTS);
 StructuredBuffer<float4> gTexCoords : PENUMBRA_REGISTER_T(PT_T_TEXCOORDS);
 StructuredBuffer<ImplicitData> gImplicits : PENUMBRA_REGISTER_T(PT_T_IMPLICITS);
+StructuredBuffer<TextureRefData> gTextureRefs : PENUMBRA_REGISTER_T(PT_T_TEXTURE_REFS);
+Texture2D<float4> gTextures[] : PENUMBRA_REGISTER_T(PT_T_TEXTURES);
+SamplerState gSamplers[] : PENUMBRA_REGISTER_S(PT_S_SAMPLERS);
 RWTexture2D<float4> gAccumulation : PENUMBRA_REGISTER_U(PT_U_ACCUMULATION);
 RWStructuredBuffer<uint> gRayCounter : PENUMBRA_REGISTER_U(PT_U_RAY_COUNTER);
 
@@ -35,5 +38,18 @@ MaterialData loadMaterial(uint index) { return gMaterials[index]; }
 EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[index]; }
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
 ImplicitData loadImplicit(uint index) { return gImplicits[index]; }
+TextureRefData loadTextureRef(uint index) { return gTextureRefs[index]; }
+// Indices differ between neighbouring rays, hence NonUniformResourceIndex.
+float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) {
+  return gTextures[NonUniformResourceIndex(textureIndex)].SampleLevel(
+      gSamplers[NonUniformResourceIndex(samplerIndex)], uv, 0.0);
+}
+#include "textures.hlsli"
+
+// The vertex indices of triangle `primitive` of an instance's mesh.
+uint3 triangleVertices(InstanceData instance, uint primitive) {
+  uint base = instance.firstIndex + 3u * primitive;
+  return uint3(gIndices[base], gIndices[base + 1u], gIndices[base + 2u]) + instance.firstVertex;
+}
 
 #endif

@@ -1,5 +1,5 @@
 // Ray payloads of the path tracer's DXR entry points. The radiance ray
-// carries a SurfaceHit (68 bytes: RayTracingPipelineDesc::maxPayloadBytes);
+// carries a SurfaceHit (76 bytes: RayTracingPipelineDesc::maxPayloadBytes);
 // the shadow ray a visibility flag, set only by its miss shader (the twins
 // of GLSL payload locations 0 and 1).
 #ifndef PENUMBRA_PAYLOADS_HLSLI

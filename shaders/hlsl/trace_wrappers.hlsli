@@ -6,6 +6,8 @@
 
 static uint gRaysThisLaunch = 0u;
 
+// No opaque ray flag: geometry decides, and only alpha-masked meshes are
+// non-opaque (their any-hit shader cuts texels away for both kinds of ray).
 SurfaceHit traceClosest(float3 origin, float3 direction) {
   gRaysThisLaunch += 1u;
   RayDesc ray;
@@ -15,7 +17,7 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   ray.TMax = 1e30;
   SurfaceHit hit = surfaceMiss();
   // Hit group offset 0, geometry multiplier 1, as in the GLSL twin.
-  TraceRay(gScene, RAY_FLAG_FORCE_OPAQUE, 0xff, 0, 1, PT_MISS_RADIANCE, ray, hit);
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, 0, 1, PT_MISS_RADIANCE, ray, hit);
   return hit;
 }
 
@@ -29,7 +31,7 @@ bool traceVisibility(float3 origin, float3 direction, float tMax) {
   ShadowPayload shadow;
   shadow.visible = 0u;
   TraceRay(gScene,
-           RAY_FLAG_FORCE_OPAQUE | RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH |
+           RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH |
                RAY_FLAG_SKIP_CLOSEST_HIT_SHADER,
            0xff, 0, 1, PT_MISS_SHADOW, ray, shadow);
   return shadow.visible != 0u;

@@ -20,5 +20,6 @@
 #define PENUMBRA_REGISTER_B(n) register(PENUMBRA_CAT(b, n))
 #define PENUMBRA_REGISTER_T(n) register(PENUMBRA_CAT(t, n))
 #define PENUMBRA_REGISTER_U(n) register(PENUMBRA_CAT(u, n))
+#define PENUMBRA_REGISTER_S(n) register(PENUMBRA_CAT(s, n))
 #define PENUMBRA_SHADER_RECORD register(b0, space901)
 #endif

@@ -15,13 +15,17 @@
 #define PT_EFFECT_TRANSMISSION 8   // specTrans > 0 (Phong: transparency > 0)
 #define PT_EFFECT_CLEARCOAT 16     // clearcoat > 0
 #define PT_EFFECT_SHEEN 32         // sheen > 0
-#define PT_EFFECT_COUNT 6
-#define PT_EFFECTS_ALL 63
+#define PT_EFFECT_TEXTURES 64      // material textures: base colour, metallic-roughness, emission, normal maps
+#define PT_EFFECT_ALPHA_MASK 128   // alphaMode MASK with a base-colour texture: an any-hit shader cuts texels away
+#define PT_EFFECT_COUNT 8
+#define PT_EFFECTS_ALL 255
 
-// The effects each ray-generation entry point is compiled in variants of
-// (cmake/Shaders.cmake builds one variant per subset of these bits).
-#define PT_PATH_TRACE_EFFECT_BITS PT_EFFECTS_ALL
-#define PT_WHITTED_EFFECT_BITS (PT_EFFECT_SPECULAR + PT_EFFECT_TRANSMISSION)
+// The effects each entry point is compiled in variants of (cmake/Shaders.cmake
+// builds one variant per subset of these bits). Alpha masking is no variant:
+// it adds an any-hit shader to the triangles' hit group instead.
+#define PT_PATH_TRACE_EFFECT_BITS 127
+#define PT_WHITTED_EFFECT_BITS (PT_EFFECT_SPECULAR + PT_EFFECT_TRANSMISSION + PT_EFFECT_TEXTURES)
+#define PT_TRIANGLE_HIT_EFFECT_BITS PT_EFFECT_TEXTURES
 
 #ifndef PT_EFFECTS
 #define PT_EFFECTS PT_EFFECTS_ALL

@@ -197,7 +197,7 @@ SurfaceHit implicitSurfaceHit(ImplicitData o, float3 worldOrigin, float3 worldDi
   h.primitiveIndex = 0u;
   // No vertex attributes: the surface shades with its true normal.
   h.shadingNormal = h.geometricNormal;
-  h.uv = float2(0.0, 0.0);
+  h.uv = float4(0.0, 0.0, 0.0, 0.0);
   h.shadingTangent = float3(0.0, 0.0, 0.0);
   return h;
 }

@@ -1,7 +1,8 @@
 // Next-event estimation on emissive triangles. Needs the entry point's
-// loadEmissiveTriangle(index).
+// loadEmissiveTriangle(index) and, with textures, textures.hlsli.
 #ifndef PENUMBRA_LIGHTS_HLSLI
 #define PENUMBRA_LIGHTS_HLSLI
+#include "effects.h"
 #include "sampling.hlsli"
 
 struct LightSample {
@@ -29,6 +30,13 @@ LightSample sampleEmissiveTriangles(uint count, float u0, float u1, float u2) {
   s.position = barycentricInterpolate(tri.p0.xyz, tri.p1.xyz, tri.p2.xyz, b);
   s.normal = normalize(cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz));
   s.radiance = tri.radiance.xyz;
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  uint emissionTexture = asuint(tri.p2.w);
+  if (emissionTexture != PT_NO_TEXTURE) {
+    float2 uv = barycentricInterpolate2(tri.uv01.xy, tri.uv01.zw, tri.uv2.xy, b);
+    s.radiance *= sampleTextureRef(emissionTexture, float4(uv, uv)).xyz;
+  }
+#endif
   s.pdfArea = tri.p0.w / tri.p1.w;
   return s;
 }

@@ -79,6 +79,9 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
     if (hit.hitT < 0.0) break;  // no environment light yet
     InstanceData instance = loadInstanceData(hit.instanceIndex);
     MaterialData data = loadMaterial(instance.materialIndex);
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+    data = applyMaterialTextures(data, hit.uv);
+#endif
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
     // Emission: one-sided, from the front face (counter-clockwise; outside

@@ -25,9 +25,12 @@ namespace penumbra::gpu {
 #define PT_T_POINT_LIGHTS 6        // PointLight (delta lights)
 #define PT_T_NORMALS 7             // float4 vertex normals (object space; xyz 0: none), as PT_T_VERTICES
 #define PT_T_TANGENTS 8            // float4 vertex tangents (object space; w handedness; 0: none)
-#define PT_T_TEXCOORDS 9           // float4 per vertex: xy TEXCOORD_0 (0 without); zw reserved (0)
+#define PT_T_TEXCOORDS 9           // float4 per vertex: xy TEXCOORD_0, zw TEXCOORD_1 (0 without)
 #define PT_T_IMPLICITS 10          // ImplicitData by family: InstanceID() + PrimitiveIndex()
 #define PT_T_PROBE_RAYS 11         // ProbeRay: rays of PathTracer::traceProbeRays
+#define PT_T_TEXTURES 12           // Texture2D[] (bindless): Scene::textures, RGBA8 (sRGB or linear)
+#define PT_T_TEXTURE_REFS 13       // TextureRefData: Scene::textureRefs
+#define PT_S_SAMPLERS 0            // SamplerState[] (bindless): the distinct samplers of the texture refs
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
 #define PT_U_PROBE_HITS 2          // ProbeHit per ProbeRay
@@ -43,6 +46,9 @@ namespace penumbra::gpu {
 #define PT_SLOT_TEXCOORDS PENUMBRA_T(PT_T_TEXCOORDS)
 #define PT_SLOT_IMPLICITS PENUMBRA_T(PT_T_IMPLICITS)
 #define PT_SLOT_PROBE_RAYS PENUMBRA_T(PT_T_PROBE_RAYS)
+#define PT_SLOT_TEXTURES PENUMBRA_T(PT_T_TEXTURES)
+#define PT_SLOT_TEXTURE_REFS PENUMBRA_T(PT_T_TEXTURE_REFS)
+#define PT_SLOT_SAMPLERS PENUMBRA_S(PT_S_SAMPLERS)
 #define PT_SLOT_ACCUMULATION PENUMBRA_U(PT_U_ACCUMULATION)
 #define PT_SLOT_RAY_COUNTER PENUMBRA_U(PT_U_RAY_COUNTER)
 #define PT_SLOT_PROBE_HITS PENUMBRA_U(PT_U_PROBE_HITS)
@@ -64,6 +70,14 @@ namespace penumbra::gpu {
 // MaterialData.flags.y bits
 #define MATERIAL_FLAG_THIN 1u
 #define MATERIAL_FLAG_LAMBERT_DIFFUSE 2u
+
+// MaterialData.textures2.y: glTF alpha modes.
+#define MATERIAL_ALPHA_OPAQUE 0u
+#define MATERIAL_ALPHA_MASK 1u
+#define MATERIAL_ALPHA_BLEND 2u  // rendered opaque
+
+// A MaterialData texture slot without a texture.
+#define PT_NO_TEXTURE 0xffffffffu
 
 #define PT_NO_EMISSION 0xffffffffu
 // InstanceData.firstEmissiveTriangle of an emitter that next-event estimation
@@ -111,6 +125,19 @@ struct MaterialData {
   float4 disney2;    // x clearcoatGloss, y specTrans, z ior, w subsurface
   float4 phong;      // x ks, y exponent, z reflectivity, w transparency (ior: disney2.z)
   uint4 flags;       // x MATERIAL_MODEL_*, y MATERIAL_FLAG_* bits
+  // TextureRefData indices (PT_NO_TEXTURE: none): x base colour, y
+  // metallic-roughness, z normal, w emission.
+  uint4 textures;
+  uint4 textures2;        // x occlusion texture, y MATERIAL_ALPHA_* mode
+  float4 textureParams;   // x normal scale, y occlusion strength, z base-colour alpha, w alpha cutoff
+};
+
+// One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
+// chosen texture coordinates (KHR_texture_transform), then sampled at LOD 0.
+struct TextureRefData {
+  float4 transform;  // xy column c0, zw column c1
+  float4 offset;     // xy column c2
+  uint4 ids;         // x texture (PT_T_TEXTURES index), y sampler (PT_S_SAMPLERS index), z texCoord set (0, 1)
 };
 
 // A point or spot light: a delta light, sampled by next-event estimation only.
@@ -120,12 +147,16 @@ struct PointLight {
   float4 spot;       // xyz direction a spot light faces; w cos(outer cone angle), -2 for a point light
 };
 
-// An emitting triangle in world space, for next-event estimation.
+// An emitting triangle in world space, for next-event estimation. A textured
+// emitter's radiance is the material's factor; the shader multiplies in the
+// texture at the sampled point, interpolating the corners' coordinates.
 struct EmissiveTriangle {
   float4 p0;        // w: probability of choosing this triangle
   float4 p1;        // w: area
-  float4 p2;
+  float4 p2;        // w: the emission TextureRefData index (bits; PT_NO_TEXTURE: untextured)
   float4 radiance;  // rgb; w: cumulative probability up to and including this one
+  float4 uv01;      // xy p0's, zw p1's texture coordinates (the set the emission texture reads)
+  float4 uv2;       // xy p2's
 };
 
 // An implicit surface (scene::ImplicitObject): its kind's parameters in its
@@ -172,8 +203,9 @@ static_assert(sizeof(ProbeHit) == 48);
 static_assert(sizeof(FrameConstants) == 128);
 static_assert(sizeof(PointLight) == 48);
 static_assert(sizeof(InstanceData) == 16);
-static_assert(sizeof(MaterialData) == 112);
-static_assert(sizeof(EmissiveTriangle) == 64);
+static_assert(sizeof(MaterialData) == 160);
+static_assert(sizeof(TextureRefData) == 48);
+static_assert(sizeof(EmissiveTriangle) == 96);
 }  // namespace penumbra::gpu
 #endif
 #endif

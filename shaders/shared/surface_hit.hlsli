@@ -3,7 +3,7 @@
 #ifndef PENUMBRA_SURFACE_HIT_HLSLI
 #define PENUMBRA_SURFACE_HIT_HLSLI
 
-// 68 bytes (RayTracingPipelineDesc::maxPayloadBytes in the path tracer).
+// 76 bytes (RayTracingPipelineDesc::maxPayloadBytes in the path tracer).
 struct SurfaceHit {
   float3 position;
   float hitT;             // < 0: the ray missed everything
@@ -11,8 +11,8 @@ struct SurfaceHit {
   uint instanceIndex;
   uint primitiveIndex;
   float3 shadingNormal;   // unit, on geometricNormal's side (geometricNormal without vertex normals)
-  float2 uv;              // TEXCOORD_0 (zero without)
   float3 shadingTangent;  // unit and orthogonal to shadingNormal, or zero without vertex tangents
+  float4 uv;              // xy TEXCOORD_0, zw TEXCOORD_1 (zero without)
 };
 
 SurfaceHit surfaceMiss() {
@@ -23,7 +23,7 @@ SurfaceHit surfaceMiss() {
   h.instanceIndex = 0u;
   h.primitiveIndex = 0u;
   h.shadingNormal = float3(0.0, 0.0, 1.0);
-  h.uv = float2(0.0, 0.0);
+  h.uv = float4(0.0, 0.0, 0.0, 0.0);
   h.shadingTangent = float3(0.0, 0.0, 0.0);
   return h;
 }
@@ -35,6 +35,10 @@ float3 barycentricInterpolate(float3 p0, float3 p1, float3 p2, float2 b) {
 }
 
 float2 barycentricInterpolate2(float2 a0, float2 a1, float2 a2, float2 b) {
+  return a0 * (1.0 - b.x - b.y) + a1 * b.x + a2 * b.y;
+}
+
+float4 barycentricInterpolate4(float4 a0, float4 a1, float4 a2, float2 b) {
   return a0 * (1.0 - b.x - b.y) + a1 * b.x + a2 * b.y;
 }
 

@@ -56,6 +56,11 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     if (hit.hitT < 0.0) continue;
     InstanceData instance = loadInstanceData(hit.instanceIndex);
     MaterialData data = loadMaterial(instance.materialIndex);
+    float occlusion = 1.0;
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+    data = applyMaterialTextures(data, hit.uv);
+    occlusion = materialOcclusion(data, hit.uv);
+#endif
     PhongMaterial p = unpackPhong(data);
 
     bool frontFace = dot(ray.direction, hit.geometricNormal) < 0.0;
@@ -72,7 +77,9 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     float3 spawnOut = offsetRayOrigin(hit.position, ng);
 
     float opaque = max(0.0, 1.0 - p.reflectivity - p.transparency);
-    float3 local = c.shading.xyz * p.kd;
+    // The occlusion texture darkens only the ambient term: it stands for the
+    // ambient light the surroundings block, which point lights do not need.
+    float3 local = c.shading.xyz * p.kd * occlusion;
     for (uint l = 0u; l < c.lights.y; l += 1u) {
       PointLight light = loadPointLight(l);
       float3 toLight;

@@ -95,27 +95,42 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
   unused.materials.push_back(glass);
   REQUIRE(render::deriveEffects(unused) == PT_EFFECT_AREA_LIGHTS);
 
+  // Textures, and alpha masking when a MASK material has a base-colour
+  // texture (MASK without one is decided when the scene is loaded).
+  m = disney();
+  m.normalTexture = 0;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
+  m.alphaMode = scene::AlphaMode::Mask;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
+  m.baseColorTexture = 0;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK));
+
   REQUIRE(render::effectNames(PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN) ==
           std::vector<std::string>{"area-lights", "sheen"});
 }
 
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
-  REQUIRE(render::rayGenerationVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.rgen");
-  REQUIRE(render::rayGenerationVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) ==
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) ==
           "path_trace.e1.rgen");
   // Whitted has variants for specular and transmission only.
-  REQUIRE(render::rayGenerationVariant("whitted.rgen", PT_EFFECT_AREA_LIGHTS) == "whitted.e0.rgen");
-  REQUIRE(render::rayGenerationVariant("whitted.rgen", PT_EFFECTS_ALL) == "whitted.rgen");
+  REQUIRE(render::effectVariant("whitted.rgen", PT_EFFECT_AREA_LIGHTS) == "whitted.e0.rgen");
+  REQUIRE(render::effectVariant("whitted.rgen", PT_EFFECTS_ALL) == "whitted.rgen");
   // Every subset is embedded, and each effect removed makes the shader smaller.
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit < PT_EFFECTS_ALL; bit <<= 1) {
+  for (uint32_t bit = 1; bit < PT_PATH_TRACE_EFFECT_BITS; bit <<= 1) {
     const auto without =
-        shaders::shaderDesc(render::rayGenerationVariant("path_trace.rgen", PT_EFFECTS_ALL & ~bit));
+        shaders::shaderDesc(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
     REQUIRE(without.spirv.size() < full);
   }
   for (uint32_t mask = 0; mask < PT_EFFECTS_ALL; ++mask)
-    REQUIRE_NOTHROW(shaders::shaderDesc(render::rayGenerationVariant("path_trace.rgen", mask)));
+    REQUIRE_NOTHROW(shaders::shaderDesc(render::effectVariant("path_trace.rgen", mask)));
+  // Textures also specialize the triangles' closest hit (normal maps).
+  REQUIRE(render::effectVariant("triangle.rchit", PT_EFFECT_AREA_LIGHTS) == "triangle.e0.rchit");
+  REQUIRE(shaders::shaderDesc("triangle.e0.rchit").spirv.size() <
+          shaders::shaderDesc("triangle.rchit").spirv.size());
 }
 
 // The specialized pipeline must render what the full one renders. The same

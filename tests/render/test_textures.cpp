@@ -1,0 +1,500 @@
+// Material textures through the renderer: which texel each pixel shows
+// (samplers, KHR_texture_transform, both texture-coordinate sets), each
+// texture's effect against the untextured material it stands for, normal
+// maps against the vertex normals they encode, alpha masks for camera and
+// shadow rays, and textured emitters under next-event estimation.
+#include <catch2/catch_test_macros.hpp>
+#include <cmath>
+#include <functional>
+#include <optional>
+
+#include "effects.h"
+#include "render_test_utils.h"
+#include "scene/mesh_builders.h"
+
+using namespace penumbra;
+
+namespace {
+
+constexpr uint32_t kSize = 32;
+
+float srgbToLinear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// A texture of w x h texels, texel (x, y) = f(x, y) as RGBA8.
+scene::Texture makeTexture(uint32_t w, uint32_t h, bool srgb,
+                           const std::function<glm::u8vec4(uint32_t, uint32_t)>& f) {
+  scene::Texture t;
+  t.name = "test";
+  t.width = w;
+  t.height = h;
+  t.srgb = srgb;
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const glm::u8vec4 c = f(x, y);
+      t.rgba8.insert(t.rgba8.end(), {c.r, c.g, c.b, c.a});
+    }
+  return t;
+}
+
+// A checker of distinct colours: every texel of a 4x4 texture differs.
+glm::u8vec4 distinctTexel(uint32_t x, uint32_t y) {
+  return {uint8_t(20 + 60 * x), uint8_t(30 + 50 * y), uint8_t(200 - 40 * ((x + y) % 4)), 255};
+}
+
+// A 2 x 2 quad in the z = 0 plane facing +z, uv0 as glTF lays an upright image
+// on it: (u, v) = ((x + 1) / 2, (1 - y) / 2). uv1 is uv0 mirrored in u.
+scene::Mesh texturedQuad(uint32_t material, float z = 0.0f, float halfSize = 1.0f) {
+  scene::Mesh m;
+  m.name = "textured quad";
+  m.material = material;
+  const float s = halfSize;
+  m.positions = {{-s, -s, z}, {s, -s, z}, {s, s, z}, {-s, s, z}};
+  m.uv0 = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  m.uv1 = {{1, 1}, {0, 1}, {0, 0}, {1, 0}};
+  m.normals.assign(4, glm::vec3(0, 0, 1));
+  m.tangents.assign(4, glm::vec4(1, 0, 0, 1));
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+scene::Camera frontCamera() {
+  scene::Camera c;
+  c.position = {0, 0, 3};
+  c.forward = {0, 0, -1};
+  c.up = {0, 1, 0};
+  c.verticalFovDegrees = 45.0f;  // the quad fills the middle 80 % of the image
+  return c;
+}
+
+// One textured quad seen head-on, emitting its texture: a black Lambert
+// material whose emission is white times the emissive texture.
+scene::Scene emissiveTextureScene(scene::Texture texture, scene::TextureRef ref) {
+  scene::Scene s;
+  s.name = "emissive texture";
+  auto m = scene::Material::lambert("emitter", glm::vec3(0.0f), glm::vec3(1.0f));
+  m.emissiveTexture = 0;
+  s.materials = {m};
+  s.textures = {std::move(texture)};
+  s.textureRefs = {ref};
+  s.meshes = {texturedQuad(0)};
+  s.instances = {{0, glm::mat4(1.0f)}};
+  s.camera = frontCamera();
+  return s;
+}
+
+float wrap(float t, scene::TextureWrap mode) {
+  switch (mode) {
+    case scene::TextureWrap::Repeat: return t - std::floor(t);
+    case scene::TextureWrap::ClampToEdge: return std::clamp(t, 0.0f, 1.0f);
+    case scene::TextureWrap::MirroredRepeat: {
+      const float p = t - 2.0f * std::floor(t * 0.5f);  // [0, 2)
+      return p <= 1.0f ? p : 2.0f - p;
+    }
+  }
+  return t;
+}
+
+// The texel a nearest-filtered lookup of `ref` reads at the quad point
+// (x, y), or nothing when the point lies within `margin` texels of a texel
+// edge (where GPU rounding may pick either neighbour).
+std::optional<glm::uvec2> nearestTexel(const scene::TextureRef& ref, const scene::Texture& tex,
+                                       float x, float y, float margin = 0.02f) {
+  glm::vec2 uv((x + 1.0f) * 0.5f, (1.0f - y) * 0.5f);
+  if (ref.texCoord == 1) uv.x = 1.0f - uv.x;
+  const glm::vec2 t = ref.transform0 * uv.x + ref.transform1 * uv.y + ref.transform2;
+  const float u = wrap(t.x, ref.sampler.wrapU) * float(tex.width);
+  const float v = wrap(t.y, ref.sampler.wrapV) * float(tex.height);
+  for (float c : {u, v}) {
+    const float f = c - std::floor(c);
+    const bool clamped = c <= 0.0f || c >= float(tex.width);
+    if (!clamped && (f < margin || f > 1.0f - margin)) return std::nullopt;
+  }
+  return glm::uvec2(std::min(uint32_t(u), tex.width - 1), std::min(uint32_t(v), tex.height - 1));
+}
+
+// Checks every pixel whose footprint falls inside one texel of the quad shows
+// exactly that texel (sRGB decoded); returns how many pixels were checked.
+uint32_t checkEmittedTexels(const image::Image& img, const scene::Scene& s) {
+  const auto& ref = s.textureRefs[0];
+  const auto& tex = s.textures[0];
+  uint32_t checked = 0;
+  for (uint32_t y = 0; y < img.height; ++y)
+    for (uint32_t x = 0; x < img.width; ++x) {
+      std::optional<glm::uvec2> texel;
+      bool uniform = true;
+      for (glm::vec2 film : test::pixelFootprint(x, y)) {
+        const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), img.width, img.height);
+        const glm::dvec3 p = glm::dvec3(s.camera.position) + d * (-double(s.camera.position.z) / d.z);
+        std::optional<glm::uvec2> here;
+        if (std::abs(p.x) < 0.98 && std::abs(p.y) < 0.98) here = nearestTexel(ref, tex, float(p.x), float(p.y));
+        if (!here || (texel && *texel != *here)) uniform = false;
+        texel = here;
+      }
+      if (!uniform) continue;
+      const uint8_t* c = &tex.rgba8[(size_t(texel->y) * tex.width + texel->x) * 4];
+      for (int ch = 0; ch < 3; ++ch) {
+        const float expected = srgbToLinear(c[ch] / 255.0f);
+        INFO("pixel " << x << "," << y << " texel " << texel->x << "," << texel->y << " channel " << ch);
+        REQUIRE(std::abs(img.pixel(x, y)[ch] - expected) <= 2e-3f + 2e-3f * expected);
+      }
+      ++checked;
+    }
+  return checked;
+}
+
+render::PathTracerSettings directOnly() {
+  render::PathTracerSettings s;
+  s.maxDepth = 0;  // emission seen by camera rays only
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("textures: a nearest-filtered emissive texture shows each texel where the host predicts",
+          "[render][gpu][textures]") {
+  auto device = test::makeTestDevice();
+  const auto texture = makeTexture(4, 4, true, distinctTexel);
+  scene::TextureRef ref;
+  ref.sampler = {scene::TextureFilter::Nearest, scene::TextureFilter::Nearest,
+                 scene::TextureWrap::ClampToEdge, scene::TextureWrap::ClampToEdge};
+
+  SECTION("identity transform, clamped") {}
+  SECTION("KHR_texture_transform: offset, 90-degree rotation and scale, repeated") {
+    // uv' = T * R * S * uv with the extension's R = [cos sin; -sin cos].
+    const float scale = 2.0f, angle = glm::radians(90.0f);
+    const glm::vec2 offset(0.25f, 0.125f);
+    ref.transform0 = glm::vec2(std::cos(angle), -std::sin(angle)) * scale;
+    ref.transform1 = glm::vec2(std::sin(angle), std::cos(angle)) * scale;
+    ref.transform2 = offset;
+    ref.sampler.wrapU = ref.sampler.wrapV = scene::TextureWrap::Repeat;
+  }
+  SECTION("mirrored repeat") {
+    ref.transform0 = {3.0f, 0.0f};
+    ref.transform1 = {0.0f, 2.0f};
+    ref.sampler.wrapU = ref.sampler.wrapV = scene::TextureWrap::MirroredRepeat;
+  }
+  SECTION("TEXCOORD_1") { ref.texCoord = 1; }
+
+  const auto s = emissiveTextureScene(texture, ref);
+  const auto img = test::renderScene(*device, s, kSize, kSize, 4, directOnly());
+  const uint32_t checked = checkEmittedTexels(img, s);
+  INFO("pixels checked " << checked);
+  REQUIRE(checked >= 100);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+namespace {
+
+// A quad seen head-on and lit by a point light off to the side, one bounce:
+// each pixel is the light's direct contribution alone, a deterministic
+// function of the material at the hit (what the textures change).
+scene::Scene litQuadScene(const scene::Material& material) {
+  scene::Scene s;
+  s.name = "lit quad";
+  s.materials = {material};
+  s.meshes = {texturedQuad(0)};
+  s.instances = {{0, glm::mat4(1.0f)}};
+  scene::PointLight light;
+  light.position = {1.5f, 1.0f, 2.0f};
+  light.intensity = glm::vec3(6.0f);
+  s.pointLights = {light};
+  s.camera = frontCamera();
+  return s;
+}
+
+render::PathTracerSettings oneBounce() {
+  render::PathTracerSettings s;
+  s.maxDepth = 1;
+  s.russianRoulette = false;
+  return s;
+}
+
+// Largest channel difference relative to the brightest pixel of `b`.
+float relativeMaxDifference(const image::Image& a, const image::Image& b) {
+  float peak = 0.0f, diff = 0.0f;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        peak = std::max(peak, b.pixel(x, y)[c]);
+        diff = std::max(diff, std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]));
+      }
+  return peak > 0.0f ? diff / peak : diff;
+}
+
+scene::Material glossyMaterial() {
+  auto m = scene::Material::lambert("glossy", glm::vec3(0.8f, 0.7f, 0.6f));
+  m.specular = 0.5f;
+  m.roughness = 0.4f;
+  m.metallic = 0.3f;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("textures: base-colour and metallic-roughness textures scale their factors channel by channel",
+          "[render][gpu][textures]") {
+  auto device = test::makeTestDevice();
+  scene::Material plain = glossyMaterial();
+  scene::Material textured = plain;
+  scene::Texture texture;
+  SECTION("base colour: sRGB rgb times the factor") {
+    const glm::u8vec4 texel(188, 90, 255, 255);
+    texture = makeTexture(2, 2, true, [&](uint32_t, uint32_t) { return texel; });
+    textured.baseColorTexture = 0;
+    for (int c = 0; c < 3; ++c) plain.baseColor[c] *= srgbToLinear(texel[c] / 255.0f);
+  }
+  SECTION("metallic from blue, roughness from green, red ignored") {
+    const glm::u8vec4 texel(7, 128, 200, 255);
+    texture = makeTexture(2, 2, false, [&](uint32_t, uint32_t) { return texel; });
+    textured.metallic = 0.9f;
+    textured.roughness = 0.8f;
+    textured.metallicRoughnessTexture = 0;
+    plain.metallic = 0.9f * (200.0f / 255.0f);
+    plain.roughness = 0.8f * (128.0f / 255.0f);
+  }
+  auto withTexture = litQuadScene(textured);
+  withTexture.textures = {texture};
+  withTexture.textureRefs = {scene::TextureRef{}};
+  const auto reference = test::renderScene(*device, litQuadScene(plain), kSize, kSize, 4, oneBounce());
+  const auto image = test::renderScene(*device, withTexture, kSize, kSize, 4, oneBounce());
+  // 8-bit and sRGB decoding on the GPU against the host's float arithmetic.
+  REQUIRE(relativeMaxDifference(image, reference) < 2e-3f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("textures: a normal map shades as the vertex normals it encodes", "[render][gpu][textures]") {
+  auto device = test::makeTestDevice();
+  const glm::u8vec4 texel(200, 100, 230, 255);
+  float handedness = 1.0f;
+  float scale = 0.7f;
+  SECTION("right-handed tangent frame") {}
+  SECTION("left-handed tangent frame (tangent w = -1) mirrors the bitangent") { handedness = -1.0f; }
+  SECTION("normal scale 0 leaves the surface normal") { scale = 0.0f; }
+  // The encoded tangent-space normal, xy scaled (glTF normalTexture.scale);
+  // on the quad the tangent is +x, the normal +z, the bitangent +y * w.
+  glm::vec3 m = glm::vec3(texel) / 255.0f * 2.0f - 1.0f;
+  m.x *= scale;
+  m.y *= scale;
+  const glm::vec3 encoded = glm::normalize(glm::vec3(m.x, m.y * handedness, m.z));
+
+  auto material = glossyMaterial();
+  auto reference = litQuadScene(material);
+  reference.meshes[0].normals.assign(4, encoded);
+  auto mapped = litQuadScene(material);
+  mapped.materials[0].normalTexture = 0;
+  mapped.materials[0].normalScale = scale;
+  mapped.meshes[0].tangents.assign(4, glm::vec4(1, 0, 0, handedness));
+  mapped.textures = {makeTexture(1, 1, false, [&](uint32_t, uint32_t) { return texel; })};
+  mapped.textureRefs = {scene::TextureRef{}};
+  const auto expected = test::renderScene(*device, reference, kSize, kSize, 4, oneBounce());
+  const auto image = test::renderScene(*device, mapped, kSize, kSize, 4, oneBounce());
+  REQUIRE(relativeMaxDifference(image, expected) < 2e-3f);
+  // And the map changes the image at all: the flat quad differs.
+  const auto flat = test::renderScene(*device, litQuadScene(material), kSize, kSize, 4, oneBounce());
+  if (scale > 0.0f) REQUIRE(relativeMaxDifference(image, flat) > 0.05f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+namespace {
+
+// 4x4 base-colour texture, mid grey, alpha alternating 0 and 255 per texel.
+scene::Texture alphaChecker() {
+  return makeTexture(4, 4, true, [](uint32_t x, uint32_t y) {
+    return glm::u8vec4(128, 128, 128, (x + y) % 2 == 0 ? 0 : 255);
+  });
+}
+
+scene::TextureRef nearestRef() {
+  scene::TextureRef ref;
+  ref.sampler = {scene::TextureFilter::Nearest, scene::TextureFilter::Nearest,
+                 scene::TextureWrap::ClampToEdge, scene::TextureWrap::ClampToEdge};
+  return ref;
+}
+
+scene::Material maskedBlack(scene::AlphaMode mode) {
+  auto m = scene::Material::lambert("masked", glm::vec3(0.0f));
+  m.baseColorTexture = 0;
+  m.alphaMode = mode;
+  m.alphaCutoff = 0.5f;
+  return m;
+}
+
+// Whether the alpha checker is opaque at quad point (x, y), or nothing near a
+// texel edge.
+std::optional<bool> checkerOpaque(float x, float y) {
+  if (std::abs(x) >= 0.98f || std::abs(y) >= 0.98f) return std::nullopt;
+  const auto tex = alphaChecker();
+  const auto texel = nearestTexel(nearestRef(), tex, x, y, 0.05f);
+  if (!texel) return std::nullopt;
+  return (texel->x + texel->y) % 2 != 0;
+}
+
+}  // namespace
+
+TEST_CASE("textures: alpha MASK cuts camera rays through transparent texels", "[render][gpu][textures]") {
+  auto device = test::makeTestDevice();
+  scene::Scene s;
+  s.name = "mask in front of an emitter";
+  s.materials = {maskedBlack(scene::AlphaMode::Mask),
+                 scene::Material::lambert("emitter", glm::vec3(0.0f), glm::vec3(1.0f))};
+  s.textures = {alphaChecker()};
+  s.textureRefs = {nearestRef()};
+  s.meshes = {texturedQuad(0), texturedQuad(1, -1.0f, 3.0f)};
+  s.instances = {{0, glm::mat4(1.0f)}, {1, glm::mat4(1.0f)}};
+  s.camera = frontCamera();
+  bool masked = true;
+  SECTION("MASK") {}
+  SECTION("OPAQUE: the same texture's alpha is ignored") {
+    s.materials[0].alphaMode = scene::AlphaMode::Opaque;
+    masked = false;
+  }
+  const auto img = test::renderScene(*device, s, kSize, kSize, 4, directOnly());
+  uint32_t seenThrough = 0, blocked = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      std::optional<bool> opaque;
+      bool uniform = true;
+      for (glm::vec2 film : test::pixelFootprint(x, y)) {
+        const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), kSize, kSize);
+        const glm::dvec3 p = glm::dvec3(s.camera.position) + d * (-3.0 / d.z);
+        const auto here = checkerOpaque(float(p.x), float(p.y));
+        if (!here || (opaque && *opaque != *here)) uniform = false;
+        opaque = here;
+      }
+      if (!uniform) continue;
+      const float expected = (*opaque || !masked) ? 0.0f : 1.0f;
+      INFO("pixel " << x << "," << y);
+      REQUIRE(std::abs(img.pixel(x, y)[1] - expected) < 1e-4f);
+      (expected > 0.0f ? seenThrough : blocked) += 1;
+    }
+  REQUIRE(blocked >= 100);
+  if (masked) REQUIRE(seenThrough >= 100);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels", "[render][gpu][textures]") {
+  // A floor at z = 0, a masked quad at z = 1 over it, a point light above and
+  // the camera looking down: each pixel sees the floor through a hole or the
+  // black mask, and a floor point is lit if its ray to the light passes a
+  // hole. The host predicts both per pixel.
+  auto device = test::makeTestDevice();
+  scene::Scene s;
+  s.name = "mask shadow";
+  const float albedo = 0.8f;
+  s.materials = {maskedBlack(scene::AlphaMode::Mask), scene::Material::lambert("floor", glm::vec3(albedo))};
+  s.materials[1].specular = 0.0f;
+  s.textures = {alphaChecker()};
+  s.textureRefs = {nearestRef()};
+  s.meshes = {texturedQuad(0, 1.0f), texturedQuad(1, 0.0f, 4.0f)};
+  s.instances = {{0, glm::mat4(1.0f)}, {1, glm::mat4(1.0f)}};
+  scene::PointLight light;
+  light.position = {0.3f, 0.2f, 2.5f};
+  light.intensity = glm::vec3(5.0f);
+  s.pointLights = {light};
+  s.camera.position = {-0.2f, 0.1f, 4.0f};
+  s.camera.forward = {0, 0, -1};
+  s.camera.up = {0, 1, 0};
+  s.camera.verticalFovDegrees = 30.0f;
+
+  render::PathTracerSettings settings = oneBounce();
+  const auto img = test::renderScene(*device, s, kSize, kSize, 4, settings);
+  uint32_t lit = 0, shadowed = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      // Per footprint point: nothing (ambiguous), or the radiance expected.
+      float lo = 1e30f, hi = -1.0f;
+      bool decided = true;
+      for (glm::vec2 film : test::pixelFootprint(x, y)) {
+        const glm::dvec3 o(s.camera.position);
+        const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), kSize, kSize);
+        const glm::dvec3 atMask = o + d * ((1.0 - o.z) / d.z);
+        const auto maskOpaque = checkerOpaque(float(atMask.x), float(atMask.y));
+        if (!maskOpaque) { decided = false; break; }
+        float value = 0.0f;
+        if (!*maskOpaque) {
+          const glm::dvec3 floor = o + d * (-o.z / d.z);
+          const glm::dvec3 toLight = glm::dvec3(light.position) - floor;
+          const glm::dvec3 crossing = floor + toLight * (1.0 / toLight.z);
+          const auto shadowOpaque = checkerOpaque(float(crossing.x), float(crossing.y));
+          if (!shadowOpaque) { decided = false; break; }
+          const double dist = glm::length(toLight);
+          value = *shadowOpaque ? 0.0f
+                                : float(albedo / M_PI * light.intensity.y * (toLight.z / dist) / (dist * dist));
+        }
+        lo = std::min(lo, value);
+        hi = std::max(hi, value);
+      }
+      if (!decided || (lo == 0.0f) != (hi == 0.0f)) continue;
+      INFO("pixel " << x << "," << y << " expected " << lo << ".." << hi);
+      const float v = img.pixel(x, y)[1];
+      REQUIRE(v >= lo * 0.999f - 1e-5f);
+      REQUIRE(v <= hi * 1.001f + 1e-5f);
+      (hi > 0.0f ? lit : shadowed) += 1;
+    }
+  INFO("lit " << lit << " shadowed " << shadowed);
+  REQUIRE(lit >= 40);
+  REQUIRE(shadowed >= 40);
+
+  // The full pipeline (every effect, the any-hit in every pipeline) renders
+  // the same image as the one specialized for this scene.
+  render::PipelineOptions all;
+  all.allEffects = true;
+  const auto full = render::renderImage(*device, s, kSize, kSize, 4, settings, 16, all);
+  REQUIRE(relativeMaxDifference(full, img) < 1e-5f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("textures: next-event estimation samples a textured emitter's texture",
+          "[render][gpu][textures]") {
+  // An emitter over a floor whose texture is white on its left half and black
+  // on its right renders like an untextured emitter of the left half alone.
+  auto device = test::makeTestDevice();
+  auto makeScene = [](bool textured) {
+    scene::Scene s;
+    s.name = textured ? "half-textured emitter" : "half emitter";
+    auto emitter = scene::Material::lambert("emitter", glm::vec3(0.0f), glm::vec3(4.0f));
+    s.materials = {scene::Material::lambert("floor", glm::vec3(0.6f)), emitter};
+    s.meshes = {texturedQuad(0, 0.0f, 3.0f)};
+    if (textured) {
+      s.materials[1].emissiveTexture = 0;
+      s.textures = {makeTexture(2, 1, true, [](uint32_t x, uint32_t) {
+        return x == 0 ? glm::u8vec4(255, 255, 255, 255) : glm::u8vec4(0, 0, 0, 255);
+      })};
+      s.textureRefs = {nearestRef()};
+      // Facing down: the quad turned half a turn about x (x stays, so the
+      // texture's left half is still at x < 0), lifted to z = 1.
+      auto quad = texturedQuad(1);
+      for (auto& p : quad.positions) p = {p.x, -p.y, 1.0f};
+      for (auto& n : quad.normals) n = {0, 0, -1};
+      s.meshes.push_back(quad);
+    } else {
+      s.meshes.push_back(scene::makeQuad({-1, -1, 1}, {0, 2, 0}, {1, 0, 0}, 1));
+    }
+    s.instances = {{0, glm::mat4(1.0f)}, {1, glm::mat4(1.0f)}};
+    s.camera.position = {0.0f, -3.0f, 0.6f};
+    s.camera.forward = glm::normalize(glm::vec3(0.0f, 1.0f, -0.35f));
+    s.camera.up = {0, 0, 1};
+    s.camera.verticalFovDegrees = 50.0f;
+    return s;
+  };
+  render::PathTracerSettings settings;
+  settings.maxDepth = 1;
+  SECTION("NEE alone") { settings.strategy = render::SamplingStrategy::Nee; }
+  SECTION("MIS") { settings.strategy = render::SamplingStrategy::Mis; }
+  const auto textured = test::renderScene(*device, makeScene(true), 24, 24, 64, settings);
+  const auto reference = test::renderScene(*device, makeScene(false), 24, 24, 64, settings);
+  // Mean over the lower half (the floor): noise averages out over 288 pixels.
+  auto floorMean = [](const image::Image& img) {
+    double sum = 0;
+    for (uint32_t y = img.height / 2; y < img.height; ++y)
+      for (uint32_t x = 0; x < img.width; ++x) sum += img.pixel(x, y)[1];
+    return sum / (img.width * img.height / 2);
+  };
+  const double a = floorMean(textured), b = floorMean(reference);
+  INFO("textured " << a << " reference " << b);
+  REQUIRE(b > 0.01);
+  REQUIRE(std::abs(a - b) < 0.03 * b);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
