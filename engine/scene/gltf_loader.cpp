@@ -14,6 +14,7 @@
 
 #include "scene/gltf_materials.h"
 #include "scene/gltf_primitives.h"
+#include "scene/gltf_textures.h"
 #include "scene/tinygltf.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -102,14 +103,16 @@ Camera framingCamera(const Scene& scene) {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, std::string file)
-      : model_(model), file_(std::move(file)) {}
+  Importer(const tinygltf::Model& model, const gltf::ImageDecoding& decoding, std::string file)
+      : model_(model),
+        file_(std::move(file)),
+        textures_(model, decoding, at(), out_.scene, out_.warnings) {}
 
   GltfImport run() {
     out_.scene.name = fs::path(file_).stem().string();
     checkExtensions();
-    checkImages();
     convertMaterials();
+    textures_.warnUnusedBrokenImages();
     traverse(sceneRoots());
     if (out_.scene.instances.empty())
       throw Error(fmt::format("{}: the scene has no triangle meshes to render", at()));
@@ -140,37 +143,33 @@ class Importer {
         warn(fmt::format("{}: optional extension {} is not supported; ignored", at(), name));
   }
 
-  // tinygltf only warns about an image file it cannot read; a file that
-  // names an image it does not ship is broken.
-  void checkImages() {
-    for (size_t i = 0; i < model_.images.size(); ++i) {
-      const auto& image = model_.images[i];
-      if (image.image.empty())
-        throw Error(fmt::format("{}: {} '{}' cannot be read (missing or unreadable file)", at(),
-                                named("image", i, image.name), image.uri));
-    }
-  }
-
   void convertMaterials() {
-    size_t textured = 0;
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const auto& src = model_.materials[i];
-      const auto& pbr = src.pbrMetallicRoughness;
-      if (pbr.baseColorTexture.index >= 0 || pbr.metallicRoughnessTexture.index >= 0 ||
-          src.normalTexture.index >= 0 || src.occlusionTexture.index >= 0 ||
-          src.emissiveTexture.index >= 0)
-        ++textured;
-      auto converted = gltf::convertMaterial(
-          src, fmt::format("{} {}", at(), named("material", i, src.name)), out_.warnings);
+      const std::string where = fmt::format("{} {}", at(), named("material", i, src.name));
+      auto converted = gltf::convertMaterial(src, where, out_.warnings);
       if (converted.material.name.empty()) converted.material.name = fmt::format("material{}", i);
+      textures_.attach(src, converted.material, where);
       invisible_.push_back(converted.invisible);
       out_.scene.materials.push_back(std::move(converted.material));
     }
-    if (textured > 0)
-      warn(
-          fmt::format("{}: textures are not supported yet; {} textured material(s) render with "
-                      "their factors only",
-                      at(), textured));
+  }
+
+  // The renderer reads (0, 0) for a texture coordinate set a primitive lacks:
+  // a texture then shows one texel across the whole surface.
+  void warnMissingTexCoords(const Mesh& mesh, const std::string& where) {
+    const Material& m = out_.scene.materials[mesh.material];
+    bool reads[2] = {false, false};
+    for (uint32_t ref : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
+                         m.emissiveTexture, m.occlusionTexture})
+      if (ref != Material::kNoTexture) reads[out_.scene.textureRefs[ref].texCoord] = true;
+    const bool has[2] = {!mesh.uv0.empty(), !mesh.uv1.empty()};
+    for (int set = 0; set < 2; ++set)
+      if (reads[set] && !has[set])
+        warn(
+            fmt::format("{}: material '{}' reads TEXCOORD_{}, which the primitive does not have; "
+                        "its textures are sampled at (0, 0)",
+                        where, m.name, set));
   }
 
   uint32_t defaultMaterialIndex() {
@@ -226,6 +225,7 @@ class Importer {
       }
       auto mesh = gltf::convertPrimitive(model_, prim, material, name, out_.warnings);
       if (!mesh) continue;
+      warnMissingTexCoords(*mesh, name);
       mesh->name =
           fmt::format("{}/{}", src.name.empty() ? fmt::format("mesh{}", index) : src.name, p);
       result.push_back(uint32_t(out_.scene.meshes.size()));
@@ -320,6 +320,7 @@ class Importer {
   const tinygltf::Model& model_;
   std::string file_;
   GltfImport out_;
+  gltf::TextureImporter textures_;
   std::vector<bool> invisible_;
   std::optional<uint32_t> defaultMaterial_;
   std::map<int, std::vector<uint32_t>> meshes_;
@@ -341,6 +342,8 @@ GltfImport importGltf(const std::string& path) {
   if (!isGltfPath(path))
     throw Error(fmt::format("{}: not a glTF file (expected .gltf or .glb)", at));
   tinygltf::TinyGLTF loader;
+  gltf::ImageDecoding decoding;
+  loader.SetImageLoader(gltf::decodeImage, &decoding);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -353,8 +356,12 @@ GltfImport importGltf(const std::string& path) {
     // tinygltf catches its JSON parser's exceptions, but not every library error.
     throw Error(fmt::format("{}: {}", at, oneLine(e.what())));
   }
-  if (!ok) throw Error(fmt::format("{}: {}", at, oneLine(err.empty() ? "cannot be read" : err)));
-  GltfImport result = Importer(model, path).run();
+  if (!ok) {
+    // tinygltf fails some files (an empty image file) with a warning only.
+    const std::string& reason = !err.empty() ? err : warn;
+    throw Error(fmt::format("{}: {}", at, oneLine(reason.empty() ? "cannot be read" : reason)));
+  }
+  GltfImport result = Importer(model, decoding, path).run();
   if (!warn.empty())
     result.warnings.insert(result.warnings.begin(), fmt::format("{}: {}", at, oneLine(warn)));
   return result;

@@ -40,6 +40,40 @@ const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) 
   return it == m.extensions.end() ? nullptr : &it->second;
 }
 
+void convertAlpha(const tinygltf::Material& src, float alpha, const std::string& where,
+                  MaterialConversion& out, std::vector<std::string>& warnings) {
+  Material& m = out.material;
+  m.alpha = alpha;
+  const bool textured = src.pbrMetallicRoughness.baseColorTexture.index >= 0;
+  if (src.alphaMode == "MASK") {
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = std::isfinite(src.alphaCutoff) ? float(std::max(0.0, src.alphaCutoff)) : 0.5f;
+    // With a texture the renderer cuts per texel (alpha factor x texel alpha).
+    out.invisible = !textured && alpha < m.alphaCutoff;
+  } else if (src.alphaMode == "BLEND") {
+    m.alphaMode = AlphaMode::Blend;
+    if (alpha < 1.0f || textured)
+      warnings.push_back(fmt::format("{}: alphaMode BLEND is rendered opaque", where));
+  } else if (src.alphaMode != "OPAQUE") {
+    warnings.push_back(fmt::format("{}: alphaMode '{}' is not a glTF alpha mode; OPAQUE used",
+                                   where, src.alphaMode));
+  }
+}
+
+// Material extensions may carry textures of their own (clearcoatTexture,
+// transmissionTexture, ...); only their factors are read.
+void warnExtensionTextures(const tinygltf::Material& src, const std::string& where,
+                           std::vector<std::string>& warnings) {
+  for (const auto& [name, value] : src.extensions) {
+    std::string textures;
+    for (const auto& key : value.Keys())
+      if (member(value.Get(key), "index")) textures += (textures.empty() ? "" : ", ") + key;
+    if (!textures.empty())
+      warnings.push_back(fmt::format("{}: {} textures ({}) are not supported; factors used", where,
+                                     name, textures));
+  }
+}
+
 }  // namespace
 
 const std::vector<std::string_view>& supportedExtensions() {
@@ -49,7 +83,8 @@ const std::vector<std::string_view>& supportedExtensions() {
                                                    "KHR_materials_volume",
                                                    "KHR_materials_clearcoat",
                                                    "KHR_materials_specular",
-                                                   "KHR_materials_sheen"};
+                                                   "KHR_materials_sheen",
+                                                   "KHR_texture_transform"};
   return names;
 }
 
@@ -103,11 +138,10 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
                           ? float(std::max(0.0, src.emissiveFactor[size_t(i)]))
                           : 0.0f;
 
-  if (src.alphaMode == "MASK") {
-    out.invisible = alpha < float(src.alphaCutoff);
-  } else if (src.alphaMode == "BLEND" && alpha < 1.0f) {
-    warnings.push_back(fmt::format("{}: alphaMode BLEND is rendered opaque", where));
-  }
+  convertAlpha(src, alpha, where, out, warnings);
+  m.normalScale = std::isfinite(src.normalTexture.scale) ? float(src.normalTexture.scale) : 1.0f;
+  m.occlusionStrength = clamp01(src.occlusionTexture.strength);
+  warnExtensionTextures(src, where, warnings);
 
   if (const auto* e = extension(src, "KHR_materials_emissive_strength"))
     m.emission *= float(std::max(0.0, number(*e, "emissiveStrength", 1.0)));

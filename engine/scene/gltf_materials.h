@@ -21,13 +21,16 @@ bool isSupportedExtension(std::string_view name);
 
 struct MaterialConversion {
   Material material;
-  // alphaMode MASK with a base-colour alpha below the cutoff: the surface is
-  // fully cut away (there are no textures to vary alpha across it).
+  // alphaMode MASK with a base-colour alpha factor below the cutoff and no
+  // base-colour texture to vary alpha across the surface: it is cut away
+  // entirely.
   bool invisible = false;
 };
 
-// `warnings` collects one line per part of the material that cannot be
-// represented (e.g. a volume's attenuation).
+// The factors, alpha mode, normal scale and occlusion strength; the texture
+// slots are left empty (TextureImporter::attach fills them). `warnings`
+// collects one line per part of the material that cannot be represented
+// (e.g. a volume's attenuation, an extension's textures).
 MaterialConversion convertMaterial(const tinygltf::Material& material, const std::string& where,
                                    std::vector<std::string>& warnings);
 

@@ -113,6 +113,7 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     n = len > 0.0f ? n / len : glm::vec3(0.0f);
   }
   mesh.uv0 = toVectors<glm::vec2>(readAttribute("TEXCOORD_0", 2), accessorName("TEXCOORD_0"));
+  mesh.uv1 = toVectors<glm::vec2>(readAttribute("TEXCOORD_1", 2), accessorName("TEXCOORD_1"));
   mesh.tangents = toVectors<glm::vec4>(readAttribute("TANGENT", 4), accessorName("TANGENT"));
   for (auto& t : mesh.tangents) {
     const float len = glm::length(glm::vec3(t));

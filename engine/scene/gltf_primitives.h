@@ -1,6 +1,6 @@
 #pragma once
 // One glTF mesh primitive as a scene Mesh (positions, indices, normals,
-// tangents, uv0), checked against the file's data.
+// tangents, uv0, uv1), checked against the file's data.
 #include <optional>
 #include <string>
 #include <vector>

@@ -18,6 +18,7 @@ glm::vec3 orthogonalTo(glm::vec3 n) {
 void makeFlatNormals(Mesh& mesh) {
   Mesh flat;
   const bool hasUv = !mesh.uv0.empty();
+  const bool hasUv1 = !mesh.uv1.empty();
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     glm::vec3 p[3];
     for (int k = 0; k < 3; ++k) p[k] = mesh.positions[mesh.indices[t + k]];
@@ -29,12 +30,14 @@ void makeFlatNormals(Mesh& mesh) {
       flat.positions.push_back(p[k]);
       flat.normals.push_back(n);
       if (hasUv) flat.uv0.push_back(mesh.uv0[mesh.indices[t + k]]);
+      if (hasUv1) flat.uv1.push_back(mesh.uv1[mesh.indices[t + k]]);
     }
   }
   mesh.positions = std::move(flat.positions);
   mesh.indices = std::move(flat.indices);
   mesh.normals = std::move(flat.normals);
   mesh.uv0 = std::move(flat.uv0);
+  mesh.uv1 = std::move(flat.uv1);
   mesh.tangents.clear();
 }
 

@@ -19,6 +19,33 @@ Material Material::lambert(std::string name, glm::vec3 albedo, glm::vec3 emissio
   return m;
 }
 
+namespace {
+
+template <class Fail>
+void validateTextures(const Scene& scene, const Fail& fail) {
+  for (size_t i = 0; i < scene.textures.size(); ++i) {
+    const auto& t = scene.textures[i];
+    const uint64_t bytes = uint64_t(t.width) * t.height * 4;
+    if (t.width == 0 || t.height == 0 || t.rgba8.size() != bytes)
+      fail(fmt::format("texture {} '{}' is {} x {} but has {} bytes of RGBA8 (expected {})", i,
+                       t.name, t.width, t.height, t.rgba8.size(), bytes));
+  }
+  for (size_t i = 0; i < scene.textureRefs.size(); ++i) {
+    const auto& r = scene.textureRefs[i];
+    if (r.texture >= scene.textures.size())
+      fail(fmt::format("texture reference {} uses texture {} of {}", i, r.texture,
+                       scene.textures.size()));
+    if (r.texCoord > 1)
+      fail(fmt::format("texture reference {} reads texture coordinate set {} (0 or 1)", i,
+                       r.texCoord));
+    for (glm::vec2 c : {r.transform0, r.transform1, r.transform2})
+      if (!std::isfinite(c.x) || !std::isfinite(c.y))
+        fail(fmt::format("texture reference {} has a non-finite texture transform", i));
+  }
+}
+
+}  // namespace
+
 uint64_t Scene::triangleCount() const {
   uint64_t n = 0;
   for (const auto& inst : instances) n += meshes.at(inst.mesh).triangleCount();
@@ -60,7 +87,9 @@ void validate(const Scene& scene) {
     checkAttribute(mesh.normals.size(), finite(mesh.normals), "normals");
     checkAttribute(mesh.tangents.size(), finite(mesh.tangents), "tangents");
     checkAttribute(mesh.uv0.size(), finite(mesh.uv0), "texture coordinates");
+    checkAttribute(mesh.uv1.size(), finite(mesh.uv1), "second texture coordinates");
   }
+  validateTextures(scene, fail);
   for (const auto& m : scene.materials) {
     auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
     for (int i = 0; i < 3; ++i)
@@ -74,6 +103,17 @@ void validate(const Scene& scene) {
     if (!(m.ior >= 1.0f && m.ior <= 4.0f))
       fail(fmt::format("material '{}': ior {} is outside [1, 4]", m.name, m.ior));
     if (!(m.exponent >= 0.0f)) fail(fmt::format("material '{}': negative Phong exponent", m.name));
+    for (uint32_t ref : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
+                         m.emissiveTexture, m.occlusionTexture})
+      if (ref != Material::kNoTexture && ref >= scene.textureRefs.size())
+        fail(fmt::format("material '{}' uses texture reference {} of {}", m.name, ref,
+                         scene.textureRefs.size()));
+    if (!std::isfinite(m.normalScale) || !unit(m.occlusionStrength) || !unit(m.alpha) ||
+        !(m.alphaCutoff >= 0.0f && std::isfinite(m.alphaCutoff)))
+      fail(
+          fmt::format("material '{}': normalScale must be finite, occlusionStrength and alpha "
+                      "lie in [0, 1] and alphaCutoff be finite and non-negative",
+                      m.name));
   }
   for (const auto& object : scene.implicits) {
     try {

@@ -174,9 +174,11 @@ struct Scene {
 // throws penumbra::Error listing the names there are.
 void selectCamera(Scene& scene, const std::string& name);
 
-// Checks indices, materials and instances refer to things that exist, that
-// positions are finite and implicit objects are well-formed
-// (validateImplicit); throws penumbra::Error naming the scene and the part.
+// Checks indices, materials, texture references and instances refer to
+// things that exist, that positions, texture coordinates and texture
+// transforms are finite, that textures hold width x height RGBA8 texels and
+// implicit objects are well-formed (validateImplicit); throws penumbra::Error
+// naming the scene and the part.
 void validate(const Scene& scene);
 
 }  // namespace penumbra::scene

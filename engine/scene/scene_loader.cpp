@@ -119,7 +119,19 @@ Camera transformCamera(const Camera& c, const glm::mat4& t) {
 void merge(Scene& scene, const Scene& part, const glm::mat4& t) {
   const uint32_t materialBase = uint32_t(scene.materials.size());
   const uint32_t meshBase = uint32_t(scene.meshes.size());
-  scene.materials.insert(scene.materials.end(), part.materials.begin(), part.materials.end());
+  const uint32_t textureBase = uint32_t(scene.textures.size());
+  const uint32_t textureRefBase = uint32_t(scene.textureRefs.size());
+  scene.textures.insert(scene.textures.end(), part.textures.begin(), part.textures.end());
+  for (TextureRef ref : part.textureRefs) {
+    ref.texture += textureBase;
+    scene.textureRefs.push_back(ref);
+  }
+  for (Material m : part.materials) {
+    for (uint32_t* ref : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                          &m.emissiveTexture, &m.occlusionTexture})
+      if (*ref != Material::kNoTexture) *ref += textureRefBase;
+    scene.materials.push_back(std::move(m));
+  }
   for (Mesh mesh : part.meshes) {
     mesh.material += materialBase;
     scene.meshes.push_back(std::move(mesh));

@@ -215,13 +215,6 @@ TEST_CASE("glTF strips and fans become triangle lists; points and lines are skip
     for (const auto& n : m->normals) requireNear(n, {0, 0, 1});
 }
 
-TEST_CASE("glTF textures are decoded but not applied yet, with a warning", "[gltf]") {
-  const auto r = scene::importGltf(gltf("textured.gltf"));
-  REQUIRE(hasWarning(r, "textures are not supported yet; 1 textured material(s)"));
-  // The factor still applies.
-  REQUIRE(r.scene.materials[0].baseColor == glm::vec3(0.5f));
-}
-
 TEST_CASE("glTF .glb, external and embedded buffers load the same triangle", "[gltf]") {
   for (const char* name : {"triangle.glb", "external.gltf", "embedded.gltf"}) {
     INFO(name);

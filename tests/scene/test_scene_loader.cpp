@@ -4,6 +4,7 @@
 
 #include "scene/mesh_builders.h"
 #include "scene/scene_loader.h"
+#include "test_data.h"
 #include "util/error.h"
 
 using namespace penumbra;
@@ -78,4 +79,29 @@ TEST_CASE("the furnace sphere is closed and faces inwards", "[scene]") {
     // The counter-clockwise normal points towards the centre.
     REQUIRE(glm::dot(glm::cross(b - a, c - a), a + b + c) < 0.0f);
   }
+}
+
+TEST_CASE("glTF files in a scene file bring their textures, indices offset", "[scene]") {
+  // A scene-file material and floor, then textured_quad.gltf (one texture,
+  // one reference) and alpha_mask_quad.gltf (likewise).
+  const auto s = scene::loadScene(test::dataPath("gltf/textured_merged.json"));
+  REQUIRE(s.textures.size() == 2u);
+  REQUIRE(s.textureRefs.size() == 2u);
+  REQUIRE(s.materials.size() == 3u);
+  REQUIRE(s.materials[0].name == "white");
+  REQUIRE(s.materials[0].baseColorTexture == scene::Material::kNoTexture);
+  REQUIRE(s.materials[0].emissiveTexture == scene::Material::kNoTexture);
+  // The checker: emissive, reference 0 -> texture 0.
+  REQUIRE(s.materials[1].emissiveTexture == 0u);
+  REQUIRE(s.textureRefs[0].texture == 0u);
+  // The alpha mask: its reference 0 became 1, its texture 0 became 1.
+  const auto& mask = s.materials[2];
+  REQUIRE(mask.alphaMode == scene::AlphaMode::Mask);
+  REQUIRE(mask.baseColorTexture == 1u);
+  REQUIRE(mask.emissiveTexture == scene::Material::kNoTexture);
+  REQUIRE(s.textureRefs[1].texture == 1u);
+  // Texel (1, 0) of the alpha mask is transparent, of the checker opaque blue-ish.
+  REQUIRE(s.textures[1].rgba8[4 + 3] == 0);
+  REQUIRE(s.textures[0].rgba8[4 + 3] == 255);
+  REQUIRE_NOTHROW(scene::validate(s));
 }

@@ -450,15 +450,37 @@ def modes():
     b.write_gltf("modes.gltf")
 
 
-def png_rgba(width, height, pixels):
-    """A PNG of 8-bit RGBA pixels (rows top first), without filters."""
+PNG_GREY, PNG_RGB, PNG_GREY_ALPHA, PNG_RGBA = 0, 2, 4, 6
+PNG_CHANNELS = {PNG_GREY: 1, PNG_RGB: 3, PNG_GREY_ALPHA: 2, PNG_RGBA: 4}
+
+
+def png(width, height, samples, color_type=PNG_RGBA, bits=8):
+    """A PNG (no filters, not interlaced) of `samples`: every channel of every
+    pixel, rows top first, 8- or 16-bit values (16-bit stored big-endian)."""
     import zlib
-    raw = b"".join(b"\0" + bytes(pixels[y * width * 4:(y + 1) * width * 4]) for y in range(height))
+    row = width * PNG_CHANNELS[color_type]
+    fmt = ">%d%s" % (row, "B" if bits == 8 else "H")
+    raw = b"".join(b"\0" + struct.pack(fmt, *samples[y * row:(y + 1) * row]) for y in range(height))
 
     def chunk(kind, data):
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    header = struct.pack(">IIBBBBB", width, height, bits, color_type, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw))
+            + chunk(b"IEND", b""))
+
+
+def png_rgba(width, height, pixels):
+    """A PNG of 8-bit RGBA pixels (rows top first)."""
+    return png(width, height, pixels)
+
+
+def data_uri(png_bytes):
+    return "data:image/png;base64," + base64.b64encode(png_bytes).decode()
+
+
+def write_binary(name, data):
+    with open(os.path.join(HERE, name), "wb") as f:
+        f.write(data)
 
 
 def textured():
@@ -472,6 +494,214 @@ def textured():
                                                     "baseColorFactor": [0.5, 0.5, 0.5, 1]}}]
     b.doc["meshes"][0]["primitives"][0]["material"] = 0
     b.write_gltf("textured.gltf")
+
+
+# glTF enums for samplers.
+NEAREST, LINEAR = 9728, 9729
+NEAREST_MIPMAP_NEAREST, LINEAR_MIPMAP_NEAREST = 9984, 9985
+NEAREST_MIPMAP_LINEAR, LINEAR_MIPMAP_LINEAR = 9986, 9987
+REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE = 10497, 33648, 33071
+
+# The 2 x 2 RGBA8 image of textures.gltf and textures.glb, rows top first:
+# red, half-transparent green / transparent blue, (10, 20, 30, 40).
+CHECKER_2X2 = [255, 0, 0, 255, 0, 255, 0, 128,
+               0, 0, 255, 0, 10, 20, 30, 40]
+
+
+def unit_quad(b, uv1=False):
+    """The unit square in z = 0 facing +z, uv0 with v down (the image upright
+    seen from +z), uv1 the middle half of that."""
+    attrs = {"POSITION": b.accessor([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], minmax=True),
+             "NORMAL": b.accessor([0, 0, 1] * 4),
+             "TEXCOORD_0": b.accessor([0, 1, 1, 1, 1, 0, 0, 0], atype="VEC2")}
+    if uv1:
+        attrs["TEXCOORD_1"] = b.accessor([0.25, 0.75, 0.75, 0.75, 0.75, 0.25, 0.25, 0.25],
+                                         atype="VEC2")
+    return {"attributes": attrs, "indices": b.accessor([0, 1, 2, 0, 2, 3], USHORT, "SCALAR")}
+
+
+def textures():
+    """textures.gltf: images of every PNG layout, samplers, texture infos with
+    KHR_texture_transform, alpha modes. Primitive 0 (material 'painted') has
+    TEXCOORD_0 and TEXCOORD_1, primitive 1 ('transformed') only TEXCOORD_0."""
+    write_binary("textures_rgba.png", png(2, 2, CHECKER_2X2))
+    b = Builder()
+    painted = unit_quad(b, uv1=True)
+    painted["material"] = 0
+    transformed = unit_quad(b)
+    transformed["material"] = 1
+    b.add("meshes", {"primitives": [painted, transformed]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["images"] = [
+        {"name": "checker", "uri": "textures_rgba.png"},
+        # grey 8-bit, 3 x 1: 0, 128, 255
+        {"name": "grey", "uri": data_uri(png(3, 1, [0, 128, 255], PNG_GREY))},
+        # grey + alpha 8-bit, 2 x 1: (50, 100), (200, 250)
+        {"name": "greyAlpha", "uri": data_uri(png(2, 1, [50, 100, 200, 250], PNG_GREY_ALPHA))},
+        # rgb 8-bit, 1 x 2: (1, 2, 3) over (250, 251, 252)
+        {"name": "rgb", "uri": data_uri(png(1, 2, [1, 2, 3, 250, 251, 252], PNG_RGB))},
+        # rgba 16-bit, 2 x 1. 25829 * 255 / 65535 = 100.502 (rounds to 101,
+        # while the high byte is 100), 25828 -> 100.498, 32768 -> 127.502,
+        # 32767 -> 127.498, 257 -> 1.
+        {"name": "rgba16", "uri": data_uri(png(2, 1, [65535, 25829, 25828, 0, 257, 32768, 32767, 65535],
+                                               PNG_RGBA, 16))},
+        # grey 16-bit, 1 x 1: 25829
+        {"name": "grey16", "uri": data_uri(png(1, 1, [25829], PNG_GREY, 16))},
+    ]
+    b.doc["samplers"] = [
+        {"magFilter": NEAREST, "minFilter": NEAREST_MIPMAP_LINEAR, "wrapS": CLAMP_TO_EDGE,
+         "wrapT": MIRRORED_REPEAT},
+        {"magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_NEAREST, "wrapS": MIRRORED_REPEAT,
+         "wrapT": REPEAT},
+        {},
+        {"minFilter": NEAREST_MIPMAP_NEAREST},
+    ]
+    b.doc["textures"] = [
+        {"source": 0, "sampler": 0},
+        {"source": 0},
+        {"source": 0, "sampler": 1},
+        {"source": 1, "sampler": 2},
+        {"source": 2, "sampler": 3},
+        {"source": 3},
+        {"source": 4},
+        {"source": 5},
+    ]
+    transform = {"offset": [0.25, -0.5], "rotation": 0.5, "scale": [2, 3], "texCoord": 1}
+    b.doc["materials"] = [
+        {"name": "painted", "alphaMode": "MASK", "alphaCutoff": 0.3, "emissiveFactor": [1, 1, 1],
+         "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "baseColorFactor": [1, 1, 1, 0.2],
+                                  "metallicRoughnessTexture": {"index": 1}},
+         "normalTexture": {"index": 1, "scale": 0.75},
+         "emissiveTexture": {"index": 0},
+         "occlusionTexture": {"index": 1, "texCoord": 1, "strength": 0.25}},
+        {"name": "transformed", "emissiveFactor": [1, 1, 1],
+         "pbrMetallicRoughness": {
+             "baseColorTexture": {"index": 2, "texCoord": 0,
+                                  "extensions": {"KHR_texture_transform": transform}},
+             "metallicRoughnessTexture": {"index": 1, "texCoord": 5}},
+         "emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"rotation": math.pi / 2}}},
+         "occlusionTexture": {"index": 1, "texCoord": 1}},
+        {"name": "grey", "pbrMetallicRoughness": {"baseColorTexture": {"index": 3}}},
+        {"name": "greyAlpha", "pbrMetallicRoughness": {"baseColorTexture": {"index": 4}}},
+        {"name": "rgb", "pbrMetallicRoughness": {"baseColorTexture": {"index": 5}}},
+        {"name": "rgba16", "pbrMetallicRoughness": {"baseColorTexture": {"index": 6}}},
+        {"name": "grey16", "pbrMetallicRoughness": {"baseColorTexture": {"index": 7}}},
+        {"name": "blend", "alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
+        {"name": "coated", "extensions": {"KHR_materials_clearcoat": {
+            "clearcoatFactor": 0.5, "clearcoatTexture": {"index": 1},
+            "clearcoatRoughnessTexture": {"index": 1}}}},
+    ]
+    b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_texture_transform"]
+    b.write_gltf("textures.gltf")
+
+    # The checker again, stored in the .glb's binary chunk.
+    b = Builder()
+    prim = unit_quad(b)
+    prim["material"] = 0
+    b.add("meshes", {"primitives": [prim]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["images"] = [{"name": "checker", "bufferView": b.view(png(2, 2, CHECKER_2X2)),
+                        "mimeType": "image/png"}]
+    b.doc["textures"] = [{"source": 0}]
+    b.doc["materials"] = [{"name": "painted", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    b.write_glb("textures.glb")
+
+
+def invalid_textures():
+    """Texture files that must fail with one clear error each."""
+    def textured_triangle(images, textures, texture_index=0):
+        b = triangle_file()
+        b.doc["images"] = images
+        b.doc["textures"] = textures
+        b.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": texture_index}}}]
+        b.doc["meshes"][0]["primitives"][0]["material"] = 0
+        return b
+
+    good = [{"uri": data_uri(png(1, 1, [1, 2, 3, 4]))}]
+    write_binary("undecodable.png", b"this is not a PNG file\n")
+    textured_triangle([{"uri": "undecodable.png"}], [{"source": 0}]).write_gltf(
+        "invalid_undecodable_image.gltf")
+    write_binary("empty.png", b"")
+    textured_triangle([{"uri": "empty.png"}], [{"source": 0}]).write_gltf("invalid_empty_image.gltf")
+    textured_triangle(good, [{"source": 3}]).write_gltf("invalid_texture_source.gltf")
+    textured_triangle(good, [{"sampler": 0}]).write_gltf("invalid_texture_no_source.gltf")
+    textured_triangle(good, [{"source": 0}], texture_index=4).write_gltf("invalid_texture_index.gltf")
+    # A .glb image whose buffer view runs 1000 bytes past the buffer's end.
+    b = textured_triangle([], [{"source": 0}])
+    view = b.view(png(1, 1, [1, 2, 3, 4]))
+    b.doc["images"] = [{"bufferView": view, "mimeType": "image/png"}]
+    b.doc["bufferViews"][view]["byteLength"] += 1000
+    b.write_glb("invalid_image_view.glb")
+
+
+def render_quad(b, material):
+    """The renderer's 2 m quad in z = 0 facing +z (counter-clockwise seen from
+    +z), uv (0, 1) (1, 1) (1, 0) (0, 0) so the image is upright seen from +z."""
+    prim = {"attributes": {
+        "POSITION": b.accessor([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0], minmax=True),
+        "NORMAL": b.accessor([0, 0, 1] * 4),
+        "TANGENT": b.accessor([1, 0, 0, 1] * 4, atype="VEC4"),
+        "TEXCOORD_0": b.accessor([0, 1, 1, 1, 1, 0, 0, 0], atype="VEC2")},
+        "indices": b.accessor([0, 1, 2, 0, 2, 3], USHORT, "SCALAR"), "material": material}
+    b.add("meshes", {"name": "quad", "primitives": [prim]})
+    b.add("nodes", {"name": "quad", "mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["scene"] = 0
+
+
+LEVELS = [0, 85, 170, 255]
+
+
+def checker_4x4():
+    """Texel (x, y) (x right, y down): (LEVELS[x], LEVELS[y], 255 if x + y
+    is odd else 0, 255); all 16 colours differ."""
+    px = []
+    for y in range(4):
+        for x in range(4):
+            px += [LEVELS[x], LEVELS[y], 255 if (x + y) % 2 else 0, 255]
+    return px
+
+
+def alpha_checker_4x4():
+    """Texel (x, y): rgb 128, alpha 255 where x + y is even, else 0."""
+    px = []
+    for y in range(4):
+        for x in range(4):
+            px += [128, 128, 128, 0 if (x + y) % 2 else 255]
+    return px
+
+
+def render_quads():
+    """The renderer's test files (README.md here describes them)."""
+    nearest_clamp = {"magFilter": NEAREST, "minFilter": NEAREST, "wrapS": CLAMP_TO_EDGE,
+                     "wrapT": CLAMP_TO_EDGE}
+    write_binary("textured_quad_checker.png", png(4, 4, checker_4x4()))
+    b = Builder()
+    render_quad(b, 0)
+    b.doc["images"] = [{"name": "checker", "uri": "textured_quad_checker.png"}]
+    b.doc["samplers"] = [nearest_clamp]
+    b.doc["textures"] = [{"source": 0, "sampler": 0}]
+    b.doc["materials"] = [{
+        "name": "unlit checker", "emissiveFactor": [1, 1, 1], "emissiveTexture": {"index": 0},
+        "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0,
+                                 "roughnessFactor": 1},
+        "extensions": {"KHR_materials_specular": {"specularFactor": 0}}}]
+    b.doc["extensionsUsed"] = ["KHR_materials_specular"]
+    b.write_gltf("textured_quad.gltf")
+
+    write_binary("alpha_mask_quad.png", png(4, 4, alpha_checker_4x4()))
+    b = Builder()
+    render_quad(b, 0)
+    b.doc["images"] = [{"name": "alpha checker", "uri": "alpha_mask_quad.png"}]
+    b.doc["samplers"] = [nearest_clamp]
+    b.doc["textures"] = [{"source": 0, "sampler": 0}]
+    b.doc["materials"] = [{
+        "name": "alpha mask", "alphaMode": "MASK", "alphaCutoff": 0.5,
+        "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "baseColorFactor": [1, 1, 1, 1],
+                                 "metallicFactor": 0, "roughnessFactor": 1}}]
+    b.write_gltf("alpha_mask_quad.gltf")
 
 
 def scene_files():
@@ -497,6 +727,15 @@ def scene_files():
     write_json("emissive_mirrored.json", {
         "format": "penumbra-scene", "version": 1, "name": "emissive_mirrored",
         "gltf": [{"file": "emissive_quad.gltf", "scale": [-1, 1, 1]}]})
+    # Two textured glTF files after a scene-file material: texture and
+    # texture-reference indices are offset as the files are appended.
+    write_json("textured_merged.json", {
+        "format": "penumbra-scene", "version": 1, "name": "textured_merged",
+        "materials": {"white": {"model": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+        "meshes": [{"name": "floor", "material": "white",
+                    "quads": [[[-1, -2, -1], [-1, -2, 1], [1, -2, 1], [1, -2, -1]]]}],
+        "gltf": [{"file": "textured_quad.gltf"},
+                 {"file": "alpha_mask_quad.gltf", "translation": [0, 0, -1]}]})
     write_json("merged.json", {
         "format": "penumbra-scene", "version": 1, "name": "merged",
         "materials": {"white": {"model": "lambert", "albedo": [0.5, 0.5, 0.5]}},
@@ -522,4 +761,7 @@ if __name__ == "__main__":
     leak()
     modes()
     textured()
+    textures()
+    invalid_textures()
+    render_quads()
     scene_files()
