@@ -1,5 +1,6 @@
 // Sampled textures, samplers and bindless arrays on the default device: a
-// compute shader (texture_sample.comp) samples an unbounded texture array
+// compute shader (texture_sample.comp) and a ray-generation shader
+// (texture_sample.rgen) sample an unbounded texture array
 // with an unbounded sampler array, indices chosen per invocation, and the
 // results are checked against a host model of nearest/linear filtering, the
 // address modes and the sRGB decode.
@@ -31,7 +32,7 @@ constexpr uint32_t kSamplersSlot = kShiftS + 0;
 
 struct TextureQuery {
   float u, v;
-  uint32_t texture, sampler;
+  uint32_t textureIndex, samplerIndex;
 };
 static_assert(sizeof(TextureQuery) == 16);
 using Color = std::array<float, 4>;
@@ -170,7 +171,8 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
   std::shuffle(queries.begin(), queries.end(), std::mt19937(1234));
   size_t divergent = 0;
   for (size_t i = 1; i < queries.size(); ++i)
-    divergent += queries[i].texture != queries[i - 1].texture || queries[i].sampler != queries[i - 1].sampler;
+    divergent += queries[i].textureIndex != queries[i - 1].textureIndex ||
+                 queries[i].samplerIndex != queries[i - 1].samplerIndex;
   REQUIRE(divergent > queries.size() * 3 / 4);
 
   auto cmd = device->createCommandList();
@@ -196,20 +198,38 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
   readbackDesc.debugName = "texture readback";
   auto readback = device->createBuffer(readbackDesc);
 
-  auto pipeline = createSamplePipeline(*device);
   BindingSetDesc set;
   set.debugName = "texture bindings";
   set.items = {BindingSetItem::storageBuffer(kQueriesSlot, queryBuffer),
                BindingSetItem::storageBuffer(kResultsSlot, results),
                BindingSetItem::sampledTextures(kTexturesSlot, textures),
                BindingSetItem::samplers(kSamplersSlot, samplers)};
-  auto bindings = device->createBindingSet(set, *pipeline);
-
-  cmd->setComputeState({pipeline.get(), {bindings.get()}});
-  REQUIRE(textures[0]->state == ResourceState::ShaderResource);  // moved there by the binding set
   const uint32_t count = uint32_t(queries.size());
-  cmd->setPushConstants(&count, sizeof(count));
-  cmd->dispatch((count + 63) / 64);
+  // The same queries from a compute shader or a ray-generation shader.
+  ComputePipelineHandle computePipeline;
+  RayTracingPipelineHandle rayTracingPipeline;
+  ShaderTableHandle shaderTable;
+  BindingSetHandle bindings;
+  SECTION("compute") {
+    computePipeline = createSamplePipeline(*device);
+    bindings = device->createBindingSet(set, *computePipeline);
+    cmd->setComputeState({computePipeline.get(), {bindings.get()}});
+    cmd->setPushConstants(&count, sizeof(count));
+    cmd->dispatch((count + 63) / 64);
+  }
+  SECTION("ray generation") {
+    RayTracingPipelineDesc desc;
+    desc.shaders = {test_shaders::shaderDesc("texture_sample.rgen")};
+    desc.debugName = "texture sample rgen";
+    rayTracingPipeline = device->createRayTracingPipeline(desc);
+    shaderTable = rayTracingPipeline->createShaderTable("texture sample table");
+    shaderTable->setRayGenerationShader("texture_sample.rgen");
+    bindings = device->createBindingSet(set, *rayTracingPipeline);
+    cmd->setRayTracingState({rayTracingPipeline.get(), shaderTable.get(), {bindings.get()}});
+    cmd->setPushConstants(&count, sizeof(count));
+    cmd->dispatchRays(count, 1);
+  }
+  REQUIRE(textures[0]->state == ResourceState::ShaderResource);  // moved there by the binding set
   cmd->copyBuffer(readback.get(), 0, results.get(), 0, resultBytes);
   cmd->close();
   device->submit(cmd.get());
@@ -228,8 +248,8 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
   size_t failures = 0;
   for (size_t i = 0; i < queries.size(); ++i) {
     const auto& q = queries[i];
-    const auto& t = hostTextures[q.texture];
-    const auto& s = samplerDescs[q.sampler];
+    const auto& t = hostTextures[q.textureIndex];
+    const auto& s = samplerDescs[q.samplerIndex];
     const Color expected = sampleHost(t, s, q.u, q.v);
     const bool linear = s.magFilter == Filter::Linear;
     for (int c = 0; c < 4; ++c) {
@@ -239,7 +259,7 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
       if (++failures <= 10)
         UNSCOPED_INFO(fmt::format("query {}: texture {} sampler '{}' uv ({}, {}) channel {}: got {} expected {} "
                                   "(tolerance {})",
-                                  i, q.texture, s.debugName, q.u, q.v, c, got[i][c], expected[c], tolerance));
+                                  i, q.textureIndex, s.debugName, q.u, q.v, c, got[i][c], expected[c], tolerance));
     }
   }
   CHECK(failures == 0u);

@@ -1,28 +1,9 @@
 #version 460
-// Samples bindless texture and sampler arrays for tests/rhi/test_textures.cpp:
-// query i names a texture, a sampler and a uv; neighbouring invocations name
-// different ones, so the indices are non-uniform within a subgroup.
+// Samples bindless texture and sampler arrays from a compute shader
+// (texture_sample.glsl).
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_nonuniform_qualifier : require
-#include "bindings.hlsli"
-
-struct TextureQuery {
-  vec2 uv;
-  uint textureIndex;
-  uint samplerIndex;
-};
+#include "texture_sample.glsl"
 
 layout(local_size_x = 64) in;
-layout(push_constant, std430) uniform Push { uint gCount; };
-layout(set = 0, binding = PENUMBRA_T(0), std430) readonly buffer Queries { TextureQuery gQueries[]; };
-layout(set = 0, binding = PENUMBRA_U(0), std430) writeonly buffer Results { vec4 gResults[]; };
-layout(set = 0, binding = PENUMBRA_T(12)) uniform texture2D gTextures[];
-layout(set = 0, binding = PENUMBRA_S(0)) uniform sampler gSamplers[];
 
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= gCount) return;
-  TextureQuery q = gQueries[i];
-  gResults[i] = textureLod(sampler2D(gTextures[nonuniformEXT(q.textureIndex)], gSamplers[nonuniformEXT(q.samplerIndex)]),
-                           q.uv, 0.0);
-}
+void main() { sampleQuery(gl_GlobalInvocationID.x); }
