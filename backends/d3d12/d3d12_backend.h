@@ -51,12 +51,15 @@ class DescriptorAllocation {
   uint32_t first_, count_;
 };
 
-// A CBV/SRV/UAV heap with a first-fit free list of ranges. The device owns
-// one shader-visible heap (binding sets and UAV-clear handles) and one
-// CPU-only heap (the second handle ClearUnorderedAccessView* needs).
+// A CBV/SRV/UAV or sampler heap with a first-fit free list of ranges. The
+// device owns one shader-visible CBV/SRV/UAV heap (binding sets and UAV-clear
+// handles), one shader-visible sampler heap (binding sets' sampler tables)
+// and one CPU-only CBV/SRV/UAV heap (the second handle
+// ClearUnorderedAccessView* needs).
 class DescriptorHeap {
  public:
-  DescriptorHeap(ID3D12Device* device, uint32_t capacity, bool shaderVisible, const std::string& name);
+  DescriptorHeap(ID3D12Device* device, D3D12_DESCRIPTOR_HEAP_TYPE type, uint32_t capacity, bool shaderVisible,
+                 const std::string& name);
   std::shared_ptr<DescriptorAllocation> allocate(uint32_t count);
   ID3D12DescriptorHeap* heap() const { return heap_.Get(); }
 
@@ -106,6 +109,19 @@ class D3D12Texture final : public rhi::ITexture {
  private:
   rhi::TextureDesc desc_;
   ComPtr<ID3D12Resource> resource_;
+};
+
+// D3D12: a D3D12_SAMPLER_DESC; binding sets write it into their range of the
+// shader-visible sampler heap with CreateSampler.
+class D3D12Sampler final : public rhi::ISampler {
+ public:
+  explicit D3D12Sampler(const rhi::SamplerDesc& desc);
+  const rhi::SamplerDesc& desc() const override { return desc_; }
+  const D3D12_SAMPLER_DESC& samplerDesc() const { return samplerDesc_; }
+
+ private:
+  rhi::SamplerDesc desc_;
+  D3D12_SAMPLER_DESC samplerDesc_{};
 };
 
 // Geometry descriptions for BuildRaytracingAccelerationStructure and
@@ -189,20 +205,23 @@ class D3D12RayTracingPipeline final : public rhi::IRayTracingPipeline,
   std::map<std::string, uint32_t> localRootBytes_;  // RHI export name -> record bytes
 };
 
-// A binding set: the descriptors of one space, written into a range of the
-// shader-visible heap in the order of the root signature's descriptor table.
+// A binding set: the descriptors of one space, written into one range of
+// the matching shader-visible heap per descriptor table of that space (the
+// CBV/SRV/UAV table, the sampler table, one per unbounded array), in the
+// order of the root signature's tables.
 class D3D12BindingSet final : public rhi::IBindingSet {
  public:
   D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc& desc, const D3D12RootSignature& rootSignature);
   const rhi::BindingSetDesc& desc() const override { return desc_; }
-  D3D12_GPU_DESCRIPTOR_HANDLE tableStart() const { return descriptors_->gpu(0); }
+  // Where the descriptor table at root parameter `rootParameterIndex` starts.
+  D3D12_GPU_DESCRIPTOR_HANDLE tableStart(uint32_t rootParameterIndex) const;
   // The state the shaders need `item` in (SRV, UAV or CBV per its descriptor range).
   rhi::ResourceState requiredState(const rhi::BindingSetItem& item) const;
 
  private:
   rhi::BindingSetDesc desc_;
-  std::shared_ptr<DescriptorAllocation> descriptors_;
-  std::map<uint32_t, rhi::DescriptorRangeType> rangeTypes_;  // slot -> range type
+  std::map<uint32_t, std::shared_ptr<DescriptorAllocation>> tables_;  // root parameter -> heap range
+  std::map<uint32_t, rhi::DescriptorRangeType> rangeTypes_;           // slot -> range type
 };
 
 class D3D12ShaderTable final : public rhi::IShaderTable {
@@ -252,6 +271,7 @@ class D3D12CommandList final : public rhi::ICommandList {
   void open() override;
   void close() override;
   void writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) override;
+  void writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) override;
   void copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
                   uint64_t bytes) override;
   void copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) override;
@@ -307,6 +327,7 @@ class D3D12Device final : public rhi::IDevice {
   const rhi::AdapterInfo& adapter() const override { return adapter_.info; }
   rhi::BufferHandle createBuffer(const rhi::BufferDesc& desc) override;
   rhi::TextureHandle createTexture(const rhi::TextureDesc& desc) override;
+  rhi::SamplerHandle createSampler(const rhi::SamplerDesc& desc) override;
   rhi::rt::AccelStructHandle createAccelStruct(const rhi::rt::AccelStructDesc& desc) override;
   rhi::RayTracingPipelineHandle createRayTracingPipeline(const rhi::RayTracingPipelineDesc& desc) override;
   rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
@@ -327,6 +348,7 @@ class D3D12Device final : public rhi::IDevice {
   uint64_t signalQueue();
   void waitForFence(uint64_t value);
   DescriptorHeap& shaderVisibleHeap() { return *shaderVisibleHeap_; }
+  DescriptorHeap& samplerHeap() { return *samplerHeap_; }
   DescriptorHeap& cpuHeap() { return *cpuHeap_; }
   // Throws with the device-removed reason when `hr` is a removal.
   void checkDevice(HRESULT hr, const char* what) const;
@@ -345,6 +367,7 @@ class D3D12Device final : public rhi::IDevice {
   ComPtr<ID3D12InfoQueue> infoQueue_;
   mutable uint64_t validationMessages_ = 0;
   std::unique_ptr<DescriptorHeap> shaderVisibleHeap_;
+  std::unique_ptr<DescriptorHeap> samplerHeap_;
   std::unique_ptr<DescriptorHeap> cpuHeap_;
   std::vector<D3D12CommandList*> inFlight_;
 };

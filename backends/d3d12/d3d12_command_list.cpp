@@ -50,8 +50,10 @@ void D3D12CommandList::open() {
   releaseTransientResources();
   check(allocator_->Reset(), "ID3D12CommandAllocator::Reset");
   check(list_->Reset(allocator_.Get(), nullptr), "ID3D12GraphicsCommandList::Reset");
-  ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap()};
-  list_->SetDescriptorHeaps(1, heaps);
+  // One heap of each type may be bound at a time: the device's CBV/SRV/UAV
+  // heap and its sampler heap hold every binding set's tables.
+  ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap(), device_.samplerHeap().heap()};
+  list_->SetDescriptorHeaps(2, heaps);
   recording_ = true;
   rayTracingBound_ = computeBound_ = false;
   boundRootSignature_ = nullptr;
@@ -144,6 +146,42 @@ void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_
   std::memcpy(staging->mappedData(), data, bytes);
   setBufferState(buffer, rhi::ResourceState::CopyDest);
   list_->CopyBufferRegion(static_cast<D3D12Buffer*>(buffer)->resource(), offset, staging->resource(), 0, bytes);
+}
+
+// D3D12: an upload-heap buffer holding the rows padded to
+// D3D12_TEXTURE_DATA_PITCH_ALIGNMENT (256 bytes), copied with
+// CopyTextureRegion from a placed footprint into subresource 0.
+void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) {
+  requireOpen("writeTexture");
+  auto* t = static_cast<D3D12Texture*>(texture);
+  const auto& d = texture->desc();
+  const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
+  if (bytes != rowBytes * d.height)
+    throw Error(fmt::format("d3d12: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes, d.debugName,
+                            d.width, d.height, rowBytes * d.height));
+  const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
+  // Upload-heap committed resources start 64 KiB aligned, beyond the
+  // 512-byte placement alignment footprints need.
+  auto staging = makeTransientBuffer(pitch * d.height, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
+                                     "writeTexture staging");
+  auto* dst = static_cast<uint8_t*>(staging->mappedData());
+  const auto* src = static_cast<const uint8_t*>(data);
+  for (uint32_t row = 0; row < d.height; ++row) std::memcpy(dst + row * pitch, src + row * rowBytes, rowBytes);
+  setTextureState(texture, rhi::ResourceState::CopyDest);
+  D3D12_TEXTURE_COPY_LOCATION from{};
+  from.pResource = staging->resource();
+  from.Type = D3D12_TEXTURE_COPY_TYPE_PLACED_FOOTPRINT;
+  from.PlacedFootprint.Offset = 0;
+  from.PlacedFootprint.Footprint.Format = t->format();
+  from.PlacedFootprint.Footprint.Width = d.width;
+  from.PlacedFootprint.Footprint.Height = d.height;
+  from.PlacedFootprint.Footprint.Depth = 1;
+  from.PlacedFootprint.Footprint.RowPitch = UINT(pitch);
+  D3D12_TEXTURE_COPY_LOCATION to{};
+  to.pResource = t->resource();
+  to.Type = D3D12_TEXTURE_COPY_TYPE_SUBRESOURCE_INDEX;
+  to.SubresourceIndex = 0;
+  list_->CopyTextureRegion(&to, 0, 0, 0, &from, nullptr);
 }
 
 void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
@@ -347,6 +385,10 @@ void D3D12CommandList::transitionBindingSets(const std::vector<rhi::IBindingSet*
         case rhi::ResourceType::StorageBuffer:
         case rhi::ResourceType::ConstantBuffer: setBufferState(item.buffer.get(), state); break;
         case rhi::ResourceType::StorageTexture: setTextureState(item.texture.get(), state); break;
+        case rhi::ResourceType::SampledTexture:
+          for (const auto& texture : item.textures) setTextureState(texture.get(), state);
+          break;
+        case rhi::ResourceType::Sampler: break;  // no resource behind a sampler
       }
     }
   }
@@ -362,7 +404,7 @@ void D3D12CommandList::bindDescriptorTables(const D3D12RootSignature& rootSignat
     if (!match)
       throw Error(fmt::format("d3d12: the {} pipeline's shaders use space {} but no binding set for it was given",
                               pipelineKind, table.space));
-    list_->SetComputeRootDescriptorTable(table.rootParameterIndex, match->tableStart());
+    list_->SetComputeRootDescriptorTable(table.rootParameterIndex, match->tableStart(table.rootParameterIndex));
   }
 }
 

@@ -1,4 +1,4 @@
-// CBV/SRV/UAV descriptor heaps with a first-fit free list of ranges.
+// CBV/SRV/UAV and sampler descriptor heaps with a first-fit free list of ranges.
 #include <fmt/format.h>
 
 #include "d3d12_backend.h"
@@ -6,16 +6,16 @@
 
 namespace penumbra::d3d12 {
 
-DescriptorHeap::DescriptorHeap(ID3D12Device* device, uint32_t capacity, bool shaderVisible,
-                               const std::string& name)
+DescriptorHeap::DescriptorHeap(ID3D12Device* device, D3D12_DESCRIPTOR_HEAP_TYPE type, uint32_t capacity,
+                               bool shaderVisible, const std::string& name)
     : shaderVisible_(shaderVisible), capacity_(capacity) {
   D3D12_DESCRIPTOR_HEAP_DESC desc{};
-  desc.Type = D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV;
+  desc.Type = type;
   desc.NumDescriptors = capacity;
   desc.Flags = shaderVisible ? D3D12_DESCRIPTOR_HEAP_FLAG_SHADER_VISIBLE : D3D12_DESCRIPTOR_HEAP_FLAG_NONE;
   check(device->CreateDescriptorHeap(&desc, IID_PPV_ARGS(&heap_)), "CreateDescriptorHeap");
   setName(heap_.Get(), name);
-  increment_ = device->GetDescriptorHandleIncrementSize(D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV);
+  increment_ = device->GetDescriptorHandleIncrementSize(type);
   // Methods returning a struct take a hidden out-parameter in the Windows x64
   // member-function ABI: MSVC emits it itself, other compilers get
   // DirectX-Headers' explicit spelling of it.

@@ -15,6 +15,9 @@ namespace {
 // UAV clear in flight. 65536 is far below every tier's limit (1M on tier 1).
 constexpr uint32_t kShaderVisibleDescriptors = 65536;
 constexpr uint32_t kCpuDescriptors = 4096;
+// D3D12_MAX_SHADER_VISIBLE_SAMPLER_HEAP_SIZE: the most a shader-visible
+// sampler heap may hold, shared by every binding set's sampler tables.
+constexpr uint32_t kShaderVisibleSamplers = 2048;
 }  // namespace
 
 D3D12Device::D3D12Device(ComPtr<IDXGIFactory4> factory, Adapter adapter, bool validation)
@@ -47,9 +50,13 @@ D3D12Device::D3D12Device(ComPtr<IDXGIFactory4> factory, Adapter adapter, bool va
   fenceEvent_ = CreateEventA(nullptr, FALSE, FALSE, nullptr);
   if (!fenceEvent_) throw Error("d3d12: CreateEvent for the queue fence failed");
 
-  shaderVisibleHeap_ = std::make_unique<DescriptorHeap>(device_.Get(), kShaderVisibleDescriptors, true,
+  shaderVisibleHeap_ = std::make_unique<DescriptorHeap>(device_.Get(), D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV,
+                                                        kShaderVisibleDescriptors, true,
                                                         "shader-visible CBV/SRV/UAV heap");
-  cpuHeap_ = std::make_unique<DescriptorHeap>(device_.Get(), kCpuDescriptors, false, "CPU CBV/SRV/UAV heap");
+  samplerHeap_ = std::make_unique<DescriptorHeap>(device_.Get(), D3D12_DESCRIPTOR_HEAP_TYPE_SAMPLER,
+                                                  kShaderVisibleSamplers, true, "shader-visible sampler heap");
+  cpuHeap_ = std::make_unique<DescriptorHeap>(device_.Get(), D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV, kCpuDescriptors,
+                                              false, "CPU CBV/SRV/UAV heap");
 }
 
 D3D12Device::~D3D12Device() {
@@ -99,6 +106,10 @@ rhi::BufferHandle D3D12Device::createBuffer(const rhi::BufferDesc& desc) {
 
 rhi::TextureHandle D3D12Device::createTexture(const rhi::TextureDesc& desc) {
   return std::make_shared<D3D12Texture>(*this, desc);
+}
+
+rhi::SamplerHandle D3D12Device::createSampler(const rhi::SamplerDesc& desc) {
+  return std::make_shared<D3D12Sampler>(desc);
 }
 
 rhi::rt::AccelStructHandle D3D12Device::createAccelStruct(const rhi::rt::AccelStructDesc& desc) {

@@ -18,6 +18,7 @@ D3D12_DESCRIPTOR_RANGE_TYPE toRangeType(rhi::DescriptorRangeType type) {
     case rhi::DescriptorRangeType::SRV: return D3D12_DESCRIPTOR_RANGE_TYPE_SRV;
     case rhi::DescriptorRangeType::UAV: return D3D12_DESCRIPTOR_RANGE_TYPE_UAV;
     case rhi::DescriptorRangeType::CBV: return D3D12_DESCRIPTOR_RANGE_TYPE_CBV;
+    case rhi::DescriptorRangeType::Sampler: return D3D12_DESCRIPTOR_RANGE_TYPE_SAMPLER;
   }
   return D3D12_DESCRIPTOR_RANGE_TYPE_SRV;
 }
@@ -63,7 +64,8 @@ ComPtr<ID3D12RootSignature> createRootSignature(D3D12Device& device, const D3D12
 
 // D3D12: one global root signature (version 1.1) translated from
 // rhi::computeRootSignatureLayout: root constants for the push constants,
-// one descriptor table per space.
+// per space a CBV/SRV/UAV table, a sampler table and one table per unbounded
+// array (root_signature_layout.h).
 D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBindingLayout layout,
                                        const std::string& name)
     : layout_(std::move(layout)), rootLayout_(rhi::computeRootSignatureLayout(layout_)) {
@@ -82,15 +84,18 @@ D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBinding
     for (const auto& range : table.ranges) {
       D3D12_DESCRIPTOR_RANGE1 d{};
       d.RangeType = toRangeType(range.type);
-      d.NumDescriptors = range.count;
+      d.NumDescriptors = range.count;  // rhi::kUnboundedDescriptors == UINT_MAX: unbounded
       d.BaseShaderRegister = range.baseRegister;
       d.RegisterSpace = table.space;
       // Volatile descriptors: array entries a binding set leaves unwritten
       // are legal as long as the shaders do not read them. SRV/CBV data does
-      // not change during a dispatch; UAV data does.
-      d.Flags = D3D12_DESCRIPTOR_RANGE_FLAG_DESCRIPTORS_VOLATILE |
-                (range.type == rhi::DescriptorRangeType::UAV ? D3D12_DESCRIPTOR_RANGE_FLAG_DATA_VOLATILE
-                                                             : D3D12_DESCRIPTOR_RANGE_FLAG_DATA_STATIC_WHILE_SET_AT_EXECUTE);
+      // not change during a dispatch; UAV data does. Sampler ranges take no
+      // DATA_* flags (samplers have no data).
+      d.Flags = D3D12_DESCRIPTOR_RANGE_FLAG_DESCRIPTORS_VOLATILE;
+      if (range.type == rhi::DescriptorRangeType::UAV)
+        d.Flags |= D3D12_DESCRIPTOR_RANGE_FLAG_DATA_VOLATILE;
+      else if (range.type != rhi::DescriptorRangeType::Sampler)
+        d.Flags |= D3D12_DESCRIPTOR_RANGE_FLAG_DATA_STATIC_WHILE_SET_AT_EXECUTE;
       d.OffsetInDescriptorsFromTableStart = range.offsetInTable;
       r.push_back(d);
     }
@@ -282,24 +287,37 @@ rhi::ShaderTableHandle D3D12RayTracingPipeline::createShaderTable(const std::str
   return std::make_shared<D3D12ShaderTable>(device_, shared_from_this(), debugName);
 }
 
-// D3D12: a range of the shader-visible heap, one descriptor per layout item
-// at the offset the root signature's table gives it (CreateShaderResourceView
-// / CreateUnorderedAccessView / CreateConstantBufferView).
+// D3D12: per descriptor table of the space, a range of the shader-visible
+// CBV/SRV/UAV or sampler heap; one descriptor per layout item (per element
+// for texture and sampler arrays) at the offset the root signature's table
+// gives it (CreateShaderResourceView / CreateUnorderedAccessView /
+// CreateConstantBufferView / CreateSampler). An unbounded array's table gets
+// exactly as many descriptors as the set binds there.
 D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc& desc,
                                  const D3D12RootSignature& rootSignature)
     : desc_(desc) {
   rhi::validateBindingSet(desc, rootSignature.bindingLayout());
-  const rhi::DescriptorTableLayout* table = rootSignature.rootLayout().tableForSpace(desc.space);
-  descriptors_ = device.shaderVisibleHeap().allocate(table ? table->descriptorCount : 0);
-  if (!table) return;
+  const auto& root = rootSignature.rootLayout();
+  for (const auto& table : root.tables) {
+    if (table.space != desc.space) continue;
+    uint32_t count = table.descriptorCount;
+    if (table.unbounded)
+      for (const auto& item : desc.items)
+        if (item.slot == table.ranges[0].slot) count = uint32_t(item.elementCount());
+    auto& heap = table.heap == rhi::DescriptorHeapKind::Sampler ? device.samplerHeap() : device.shaderVisibleHeap();
+    tables_[table.rootParameterIndex] = heap.allocate(count);
+  }
+  if (tables_.empty()) return;
   const auto& items = rootSignature.bindingLayout().spaces[desc.space].items;
   ID3D12Device5* d = device.handle();
   for (const auto& item : desc.items) {
+    const rhi::DescriptorTableLayout* table = root.tableForSlot(desc.space, item.slot);
     const rhi::DescriptorRangeLayout* range = table->rangeForSlot(item.slot);
     const auto layoutItem = std::find_if(items.begin(), items.end(),
                                          [&](const rhi::BindingLayoutItem& i) { return i.slot == item.slot; });
     rangeTypes_[item.slot] = range->type;
-    const D3D12_CPU_DESCRIPTOR_HANDLE handle = descriptors_->cpu(range->offsetInTable);
+    const DescriptorAllocation& descriptors = *tables_.at(table->rootParameterIndex);
+    const D3D12_CPU_DESCRIPTOR_HANDLE handle = descriptors.cpu(range->offsetInTable);
     switch (item.type) {
       case rhi::ResourceType::AccelStruct: {
         D3D12_SHADER_RESOURCE_VIEW_DESC srv{};
@@ -364,16 +382,45 @@ D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc&
         }
         break;
       }
+      // Texture2D SRVs in the texture's own format, so sRGB textures decode
+      // on reads; one per array element, back to back.
+      case rhi::ResourceType::SampledTexture:
+        for (uint32_t i = 0; i < item.textures.size(); ++i) {
+          auto* texture = static_cast<D3D12Texture*>(item.textures[i].get());
+          D3D12_SHADER_RESOURCE_VIEW_DESC srv{};
+          srv.Format = texture->format();
+          srv.ViewDimension = D3D12_SRV_DIMENSION_TEXTURE2D;
+          srv.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
+          srv.Texture2D.MipLevels = 1;
+          d->CreateShaderResourceView(texture->resource(), &srv, descriptors.cpu(range->offsetInTable + i));
+        }
+        break;
+      case rhi::ResourceType::Sampler:
+        for (uint32_t i = 0; i < item.samplerHandles.size(); ++i) {
+          auto* sampler = static_cast<D3D12Sampler*>(item.samplerHandles[i].get());
+          d->CreateSampler(&sampler->samplerDesc(), descriptors.cpu(range->offsetInTable + i));
+        }
+        break;
     }
   }
 }
+
+D3D12_GPU_DESCRIPTOR_HANDLE D3D12BindingSet::tableStart(uint32_t rootParameterIndex) const {
+  auto it = tables_.find(rootParameterIndex);
+  if (it == tables_.end())
+    throw Error(fmt::format("d3d12: binding set '{}' has no descriptor table for root parameter {}",
+                            desc_.debugName, rootParameterIndex));
+  return it->second->gpu(0);
+}
+
 
 rhi::ResourceState D3D12BindingSet::requiredState(const rhi::BindingSetItem& item) const {
   if (item.type == rhi::ResourceType::AccelStruct) return rhi::ResourceState::AccelStructRead;
   switch (rangeTypes_.at(item.slot)) {
     case rhi::DescriptorRangeType::UAV: return rhi::ResourceState::UnorderedAccess;
     case rhi::DescriptorRangeType::CBV: return rhi::ResourceState::ConstantBuffer;
-    case rhi::DescriptorRangeType::SRV: break;
+    case rhi::DescriptorRangeType::SRV:
+    case rhi::DescriptorRangeType::Sampler: break;  // samplers need no state; the caller skips them
   }
   return rhi::ResourceState::ShaderResource;
 }

@@ -11,6 +11,7 @@ namespace penumbra::d3d12 {
 DXGI_FORMAT toDxgiFormat(rhi::Format format) {
   switch (format) {
     case rhi::Format::RGBA8_UNORM: return DXGI_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA8_SRGB: return DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
     case rhi::Format::BGRA8_UNORM: return DXGI_FORMAT_B8G8R8A8_UNORM;
     case rhi::Format::RGBA32_FLOAT: return DXGI_FORMAT_R32G32B32A32_FLOAT;
     case rhi::Format::RGB32_FLOAT: return DXGI_FORMAT_R32G32B32_FLOAT;
@@ -120,6 +121,9 @@ DXGI_FORMAT D3D12Texture::format() const { return toDxgiFormat(desc_.format); }
 // D3D12: CreateCommittedResource (TEXTURE2D, one mip) on a DEFAULT heap;
 // storage textures allow unordered access.
 D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : desc_(desc) {
+  // sRGB formats have no UAV support in D3D12 (nor storage-image support in Vulkan).
+  if (desc.format == rhi::Format::RGBA8_SRGB && hasFlag(desc.usage, rhi::TextureUsage::Storage))
+    throw Error(fmt::format("d3d12: texture '{}': RGBA8_SRGB cannot have TextureUsage::Storage", desc.debugName));
   D3D12_RESOURCE_DESC rd{};
   rd.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
   rd.Width = desc.width;
@@ -145,6 +149,40 @@ D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : 
 D3D12Texture::D3D12Texture(const rhi::TextureDesc& desc, ComPtr<ID3D12Resource> resource)
     : desc_(desc), resource_(std::move(resource)) {
   setName(resource_.Get(), desc.debugName);
+}
+
+namespace {
+D3D12_TEXTURE_ADDRESS_MODE toAddressMode(rhi::AddressMode mode) {
+  switch (mode) {
+    case rhi::AddressMode::Repeat: return D3D12_TEXTURE_ADDRESS_MODE_WRAP;
+    case rhi::AddressMode::MirroredRepeat: return D3D12_TEXTURE_ADDRESS_MODE_MIRROR;
+    case rhi::AddressMode::ClampToEdge: return D3D12_TEXTURE_ADDRESS_MODE_CLAMP;
+  }
+  return D3D12_TEXTURE_ADDRESS_MODE_WRAP;
+}
+
+// Point mip filtering always: textures have one mip level.
+D3D12_FILTER toFilter(rhi::Filter minFilter, rhi::Filter magFilter) {
+  const bool minLinear = minFilter == rhi::Filter::Linear, magLinear = magFilter == rhi::Filter::Linear;
+  if (minLinear && magLinear) return D3D12_FILTER_MIN_MAG_LINEAR_MIP_POINT;
+  if (minLinear) return D3D12_FILTER_MIN_LINEAR_MAG_MIP_POINT;
+  if (magLinear) return D3D12_FILTER_MIN_POINT_MAG_LINEAR_MIP_POINT;
+  return D3D12_FILTER_MIN_MAG_MIP_POINT;
+}
+}  // namespace
+
+// D3D12: the D3D12_SAMPLER_DESC binding sets write with CreateSampler; LOD
+// range [0, 0] and no anisotropy, as on Vulkan.
+D3D12Sampler::D3D12Sampler(const rhi::SamplerDesc& desc) : desc_(desc) {
+  samplerDesc_.Filter = toFilter(desc.minFilter, desc.magFilter);
+  samplerDesc_.AddressU = toAddressMode(desc.addressU);
+  samplerDesc_.AddressV = toAddressMode(desc.addressV);
+  samplerDesc_.AddressW = D3D12_TEXTURE_ADDRESS_MODE_CLAMP;
+  samplerDesc_.MipLODBias = 0.0f;
+  samplerDesc_.MaxAnisotropy = 1;
+  samplerDesc_.ComparisonFunc = D3D12_COMPARISON_FUNC_NEVER;
+  samplerDesc_.MinLOD = 0.0f;
+  samplerDesc_.MaxLOD = 0.0f;
 }
 
 // D3D12: GetRaytracingAccelerationStructurePrebuildInfo sizes the result

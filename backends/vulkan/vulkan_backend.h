@@ -81,6 +81,19 @@ class VulkanTexture final : public rhi::ITexture {
   bool ownsImage_ = true;
 };
 
+class VulkanSampler final : public rhi::ISampler {
+ public:
+  VulkanSampler(VulkanDevice& device, const rhi::SamplerDesc& desc);
+  ~VulkanSampler() override;
+  const rhi::SamplerDesc& desc() const override { return desc_; }
+  VkSampler handle() const { return sampler_; }
+
+ private:
+  VulkanDevice& device_;
+  rhi::SamplerDesc desc_;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+};
+
 // The geometry arrays vkCmdBuildAccelerationStructuresKHR and
 // vkGetAccelerationStructureBuildSizesKHR take, derived from an AccelStructDesc.
 struct AccelStructBuildInputs {
@@ -119,6 +132,11 @@ class VulkanPipelineLayout {
   const rhi::PipelineBindingLayout& bindingLayout() const { return layout_; }
   VkPipelineLayout handle() const { return pipelineLayout_; }
   VkDescriptorSetLayout setLayout(uint32_t space) const { return setLayouts_.at(space); }
+  // The bindings of a set layout, with the descriptor counts unbounded arrays
+  // got (binding sets size their descriptor pools from them).
+  const std::vector<VkDescriptorSetLayoutBinding>& setBindings(uint32_t space) const {
+    return setBindings_.at(space);
+  }
   VkShaderStageFlags stages() const { return stages_; }
 
  private:
@@ -126,6 +144,7 @@ class VulkanPipelineLayout {
   rhi::PipelineBindingLayout layout_;
   VkShaderStageFlags stages_;
   std::vector<VkDescriptorSetLayout> setLayouts_;
+  std::vector<std::vector<VkDescriptorSetLayoutBinding>> setBindings_;
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
 };
 
@@ -234,6 +253,7 @@ class VulkanCommandList final : public rhi::ICommandList {
   void open() override;
   void close() override;
   void writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) override;
+  void writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) override;
   void copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
                   uint64_t bytes) override;
   void copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) override;
@@ -289,6 +309,7 @@ class VulkanDevice final : public rhi::IDevice {
   const rhi::AdapterInfo& adapter() const override { return adapter_; }
   rhi::BufferHandle createBuffer(const rhi::BufferDesc& desc) override;
   rhi::TextureHandle createTexture(const rhi::TextureDesc& desc) override;
+  rhi::SamplerHandle createSampler(const rhi::SamplerDesc& desc) override;
   rhi::rt::AccelStructHandle createAccelStruct(const rhi::rt::AccelStructDesc& desc) override;
   rhi::RayTracingPipelineHandle createRayTracingPipeline(const rhi::RayTracingPipelineDesc& desc) override;
   rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
@@ -311,6 +332,9 @@ class VulkanDevice final : public rhi::IDevice {
   uint32_t queueFamily() const { return queueFamily_; }
   uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
   uint64_t scratchAlignment() const { return scratchAlignment_; }
+  // Descriptors an unbounded array of `type` gets in a set layout:
+  // min(rhi::kMaxBindlessDescriptors, the device's per-stage and per-set limits).
+  uint32_t bindlessCapacity(rhi::ResourceType type) const;
   // VK_EXT_debug_utils object name, shown by RenderDoc/Nsight and in validation messages.
   void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
 
@@ -323,6 +347,7 @@ class VulkanDevice final : public rhi::IDevice {
   uint32_t queueFamily_ = 0;
   VkPhysicalDeviceMemoryProperties memoryProperties_{};
   uint64_t scratchAlignment_ = 128;
+  VkPhysicalDeviceLimits limits_{};
   double timestampPeriodNs_ = 1.0;
   uint32_t timestampValidBits_ = 64;
   bool canPresent_ = false;

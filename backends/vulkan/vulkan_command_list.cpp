@@ -191,6 +191,25 @@ void VulkanCommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size
                   &region);
 }
 
+void VulkanCommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) {
+  requireOpen("writeTexture");
+  const auto& d = texture->desc();
+  const uint64_t expected = uint64_t(d.width) * d.height * rhi::formatByteSize(d.format);
+  if (bytes != expected)
+    throw Error(fmt::format("vulkan: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes,
+                            d.debugName, d.width, d.height, expected));
+  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
+                                     0, "writeTexture staging");
+  std::memcpy(staging->mappedData(), data, bytes);
+  setTextureState(texture, rhi::ResourceState::CopyDest);
+  VkBufferImageCopy region{};
+  region.bufferOffset = staging->alignedOffset();
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {d.width, d.height, 1};
+  vkCmdCopyBufferToImage(commandBuffer_, staging->handle(), static_cast<VulkanTexture*>(texture)->image(),
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+}
+
 void VulkanCommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,
                                    uint64_t srcOffset, uint64_t bytes) {
   requireOpen("copyBuffer");
@@ -355,6 +374,11 @@ void VulkanCommandList::transitionBindingSets(const std::vector<rhi::IBindingSet
           setBufferState(item.buffer.get(), rhi::ResourceState::ConstantBuffer);
           break;
         case rhi::ResourceType::StorageTexture: setTextureState(item.texture.get(), shaderState); break;
+        case rhi::ResourceType::SampledTexture:
+          for (const auto& texture : item.textures)
+            setTextureState(texture.get(), rhi::ResourceState::ShaderResource);
+          break;
+        case rhi::ResourceType::Sampler: break;  // no memory behind a sampler
       }
     }
   }

@@ -45,6 +45,7 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(physicalDevice_, &props);
   timestampPeriodNs_ = props.limits.timestampPeriod;
+  limits_ = props.limits;
   vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memoryProperties_);
 
   VkPhysicalDeviceAccelerationStructurePropertiesKHR asProps{
@@ -86,8 +87,28 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   VkPhysicalDeviceAccelerationStructureFeaturesKHR asFeatures{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   asFeatures.accelerationStructure = VK_TRUE;
+  // Bindless texture arrays (rhi::BindingLayoutItem::arraySize == 0) index
+  // runtime-sized arrays of sampled images and samplers with nonuniformEXT,
+  // and bind only the elements a binding set fills.
+  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  supported.pNext = &supported12;
+  vkGetPhysicalDeviceFeatures2(physicalDevice_, &supported);
+  std::string missing;
+  for (auto [have, name] : {std::pair{supported12.runtimeDescriptorArray, "runtimeDescriptorArray"},
+                            std::pair{supported12.shaderSampledImageArrayNonUniformIndexing,
+                                      "shaderSampledImageArrayNonUniformIndexing"},
+                            std::pair{supported12.descriptorBindingPartiallyBound,
+                                      "descriptorBindingPartiallyBound"}})
+    if (!have) missing += (missing.empty() ? "" : ", ") + std::string(name);
+  if (!missing.empty())
+    throw Error(fmt::format("vulkan: {} lacks the descriptor-indexing features bindless textures need: {}",
+                            adapter_.name, missing));
   VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   v12.bufferDeviceAddress = VK_TRUE;
+  v12.runtimeDescriptorArray = VK_TRUE;
+  v12.shaderSampledImageArrayNonUniformIndexing = VK_TRUE;
+  v12.descriptorBindingPartiallyBound = VK_TRUE;
   rtFeatures.pNext = &asFeatures;
   asFeatures.pNext = &v12;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
@@ -140,6 +161,36 @@ rhi::BufferHandle VulkanDevice::createBuffer(const rhi::BufferDesc& desc) {
 
 rhi::TextureHandle VulkanDevice::createTexture(const rhi::TextureDesc& desc) {
   return std::make_shared<VulkanTexture>(*this, desc);
+}
+
+rhi::SamplerHandle VulkanDevice::createSampler(const rhi::SamplerDesc& desc) {
+  return std::make_shared<VulkanSampler>(*this, desc);
+}
+
+uint32_t VulkanDevice::bindlessCapacity(rhi::ResourceType type) const {
+  uint32_t limit = rhi::kMaxBindlessDescriptors;
+  switch (type) {
+    case rhi::ResourceType::SampledTexture:
+      limit = std::min({limit, limits_.maxPerStageDescriptorSampledImages, limits_.maxDescriptorSetSampledImages});
+      break;
+    case rhi::ResourceType::Sampler:
+      limit = std::min({limit, limits_.maxPerStageDescriptorSamplers, limits_.maxDescriptorSetSamplers});
+      break;
+    case rhi::ResourceType::StorageBuffer:
+      limit = std::min({limit, limits_.maxPerStageDescriptorStorageBuffers,
+                        limits_.maxDescriptorSetStorageBuffers});
+      break;
+    case rhi::ResourceType::ConstantBuffer:
+      limit = std::min({limit, limits_.maxPerStageDescriptorUniformBuffers,
+                        limits_.maxDescriptorSetUniformBuffers});
+      break;
+    case rhi::ResourceType::StorageTexture:
+      limit = std::min({limit, limits_.maxPerStageDescriptorStorageImages,
+                        limits_.maxDescriptorSetStorageImages});
+      break;
+    case rhi::ResourceType::AccelStruct: break;
+  }
+  return std::min(limit, limits_.maxPerStageResources);
 }
 
 rhi::rt::AccelStructHandle VulkanDevice::createAccelStruct(const rhi::rt::AccelStructDesc& desc) {

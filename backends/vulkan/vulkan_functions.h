@@ -87,6 +87,9 @@
   X(vkCmdPipelineBarrier)                          \
   X(vkCmdCopyBuffer)                               \
   X(vkCmdCopyImageToBuffer)                        \
+  X(vkCmdCopyBufferToImage)                        \
+  X(vkCreateSampler)                               \
+  X(vkDestroySampler)                              \
   X(vkCmdClearColorImage)                          \
   X(vkCmdFillBuffer)                               \
   X(vkCmdBindPipeline)                             \

@@ -18,6 +18,8 @@ VkDescriptorType toDescriptorType(rhi::ResourceType type) {
     case rhi::ResourceType::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     case rhi::ResourceType::ConstantBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     case rhi::ResourceType::StorageTexture: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case rhi::ResourceType::SampledTexture: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case rhi::ResourceType::Sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
   }
   return VK_DESCRIPTOR_TYPE_MAX_ENUM;
 }
@@ -58,21 +60,34 @@ VulkanPipelineLayout::VulkanPipelineLayout(VulkanDevice& device, rhi::PipelineBi
     : device_(device), layout_(std::move(layout)), stages_(stages) {
   for (const auto& space : layout_.spaces) {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
+    // An unbounded array becomes a fixed-size binding (Vulkan has no
+    // unbounded ones) that binding sets fill only in part: PARTIALLY_BOUND
+    // makes the unwritten elements legal as long as shaders do not read them.
+    std::vector<VkDescriptorBindingFlags> flags;
+    bool anyPartial = false;
     for (const auto& item : space.items) {
       VkDescriptorSetLayoutBinding b{};
       b.binding = item.slot;
       b.descriptorType = toDescriptorType(item.type);
-      b.descriptorCount = item.arraySize;
+      b.descriptorCount = item.arraySize > 0 ? item.arraySize : device_.bindlessCapacity(item.type);
       b.stageFlags = stages_;
       bindings.push_back(b);
+      flags.push_back(item.arraySize == 0 ? VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT : 0);
+      anyPartial = anyPartial || item.arraySize == 0;
     }
+    VkDescriptorSetLayoutBindingFlagsCreateInfo flagsInfo{
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO};
+    flagsInfo.bindingCount = uint32_t(flags.size());
+    flagsInfo.pBindingFlags = flags.data();
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.pNext = anyPartial ? &flagsInfo : nullptr;
     info.bindingCount = uint32_t(bindings.size());
     info.pBindings = bindings.data();
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
     check(vkCreateDescriptorSetLayout(device_.handle(), &info, nullptr, &setLayout),
           "vkCreateDescriptorSetLayout");
     setLayouts_.push_back(setLayout);
+    setBindings_.push_back(std::move(bindings));
   }
   VkPushConstantRange range{stages_, 0, layout_.pushConstantBytes};
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -235,8 +250,11 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
   if (desc.space < layout.bindingLayout().spaces.size())
     layoutItems_ = layout.bindingLayout().spaces[desc.space].items;
 
+  // The pool must hold every descriptor of the set layout, arrays (and the
+  // full capacity of unbounded ones) included, whatever the set writes.
   std::vector<VkDescriptorPoolSize> sizes;
-  for (const auto& item : desc.items) sizes.push_back({toDescriptorType(item.type), 1});
+  if (desc.space < layout.bindingLayout().spaces.size())
+    for (const auto& b : layout.setBindings(desc.space)) sizes.push_back({b.descriptorType, b.descriptorCount});
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = uint32_t(sizes.size());
@@ -260,8 +278,10 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
   std::vector<VkDescriptorImageInfo> imageInfos;
   std::vector<VkWriteDescriptorSetAccelerationStructureKHR> asInfos;
   std::vector<VkAccelerationStructureKHR> asHandles;
+  size_t imageCount = 0;
+  for (const auto& item : desc.items) imageCount += item.elementCount();
   bufferInfos.reserve(desc.items.size());
-  imageInfos.reserve(desc.items.size());
+  imageInfos.reserve(imageCount);
   asInfos.reserve(desc.items.size());
   asHandles.reserve(desc.items.size());
   std::vector<VkWriteDescriptorSet> writes;
@@ -293,6 +313,25 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
         auto* t = static_cast<VulkanTexture*>(item.texture.get());
         imageInfos.push_back({VK_NULL_HANDLE, t->view(), VK_IMAGE_LAYOUT_GENERAL});
         w.pImageInfo = &imageInfos.back();
+        break;
+      }
+      // Arrays: elements 0..n-1 in one write; elements of an unbounded array
+      // past n stay unwritten (PARTIALLY_BOUND). Sampled textures are read in
+      // GENERAL, the layout the command lists give ResourceState::ShaderResource.
+      case rhi::ResourceType::SampledTexture: {
+        w.descriptorCount = uint32_t(item.textures.size());
+        w.pImageInfo = imageInfos.data() + imageInfos.size();
+        for (const auto& texture : item.textures)
+          imageInfos.push_back(
+              {VK_NULL_HANDLE, static_cast<VulkanTexture*>(texture.get())->view(), VK_IMAGE_LAYOUT_GENERAL});
+        break;
+      }
+      case rhi::ResourceType::Sampler: {
+        w.descriptorCount = uint32_t(item.samplerHandles.size());
+        w.pImageInfo = imageInfos.data() + imageInfos.size();
+        for (const auto& sampler : item.samplerHandles)
+          imageInfos.push_back({static_cast<VulkanSampler*>(sampler.get())->handle(), VK_NULL_HANDLE,
+                                VK_IMAGE_LAYOUT_UNDEFINED});
         break;
       }
     }

@@ -10,6 +10,7 @@ namespace penumbra::vk {
 VkFormat toVkFormat(rhi::Format format) {
   switch (format) {
     case rhi::Format::RGBA8_UNORM: return VK_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA8_SRGB: return VK_FORMAT_R8G8B8A8_SRGB;
     case rhi::Format::BGRA8_UNORM: return VK_FORMAT_B8G8R8A8_UNORM;
     case rhi::Format::RGBA32_FLOAT: return VK_FORMAT_R32G32B32A32_SFLOAT;
     case rhi::Format::RGB32_FLOAT: return VK_FORMAT_R32G32B32_SFLOAT;
@@ -101,6 +102,10 @@ void* VulkanBuffer::mappedData() {
 VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
     : device_(device), desc_(desc) {
   using rhi::TextureUsage;
+  // Neither API can write sRGB textures from shaders (no storage sRGB formats).
+  if (desc.format == rhi::Format::RGBA8_SRGB && hasFlag(desc.usage, TextureUsage::Storage))
+    throw Error(fmt::format("vulkan: texture '{}': RGBA8_SRGB cannot have TextureUsage::Storage",
+                            desc.debugName));
   VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (hasFlag(desc.usage, TextureUsage::Storage)) usage |= VK_IMAGE_USAGE_STORAGE_BIT;
   if (hasFlag(desc.usage, TextureUsage::Sampled)) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
@@ -153,6 +158,44 @@ VulkanTexture::~VulkanTexture() {
   vkDestroyImage(dev, image_, nullptr);
   vkFreeMemory(dev, memory_, nullptr);
 }
+
+namespace {
+VkFilter toVkFilter(rhi::Filter filter) {
+  return filter == rhi::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+}
+
+VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode) {
+  switch (mode) {
+    case rhi::AddressMode::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case rhi::AddressMode::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case rhi::AddressMode::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+}  // namespace
+
+// Vulkan: vkCreateSampler. Textures have one mip level, so the LOD range is
+// [0, 0] (mipmapMode NEAREST) and anisotropy stays off (it is a feature the
+// device would have to enable).
+VulkanSampler::VulkanSampler(VulkanDevice& device, const rhi::SamplerDesc& desc)
+    : device_(device), desc_(desc) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = toVkFilter(desc.magFilter);
+  info.minFilter = toVkFilter(desc.minFilter);
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = toVkAddressMode(desc.addressU);
+  info.addressModeV = toVkAddressMode(desc.addressV);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.anisotropyEnable = VK_FALSE;
+  info.maxAnisotropy = 1.0f;
+  info.minLod = 0.0f;
+  info.maxLod = 0.0f;
+  info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+  check(vkCreateSampler(device_.handle(), &info, nullptr, &sampler_), "vkCreateSampler");
+  device_.setName(VK_OBJECT_TYPE_SAMPLER, uint64_t(sampler_), desc.debugName);
+}
+
+VulkanSampler::~VulkanSampler() { vkDestroySampler(device_.handle(), sampler_, nullptr); }
 
 VulkanAccelStruct::VulkanAccelStruct(VulkanDevice& device, const rhi::rt::AccelStructDesc& desc)
     : device_(device), desc_(desc) {

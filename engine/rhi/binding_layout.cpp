@@ -37,6 +37,43 @@ void mergeBindingLayout(PipelineBindingLayout& pipeline, const PipelineBindingLa
   pipeline.pushConstantBytes = std::max(pipeline.pushConstantBytes, shader.pushConstantBytes);
 }
 
+namespace {
+
+// Texture and sampler items carry one handle per array element: exactly
+// arraySize of them for a fixed array, 1..kMaxBindlessDescriptors for an
+// unbounded one, none null, textures created for sampling.
+void validateArrayItem(const std::string& setName, const BindingSetItem& item,
+                       const BindingLayoutItem& expected) {
+  const size_t count = item.elementCount();
+  const char* what = item.type == ResourceType::Sampler ? "samplers" : "textures";
+  if (expected.arraySize == 0) {
+    if (count == 0 || count > kMaxBindlessDescriptors)
+      throw Error(fmt::format("{}: slot {} ('{}') is an unbounded array and takes 1 to {} {}, "
+                              "but {} were bound",
+                              setName, item.slot, expected.name, kMaxBindlessDescriptors, what,
+                              count));
+  } else if (count != expected.arraySize) {
+    throw Error(fmt::format("{}: slot {} ('{}') is an array of {} {} in the shaders, but {} were "
+                            "bound",
+                            setName, item.slot, expected.name, expected.arraySize, what, count));
+  }
+  for (size_t i = 0; i < count; ++i) {
+    const bool null = item.type == ResourceType::Sampler ? !item.samplerHandles[i]
+                                                         : !item.textures[i];
+    if (null)
+      throw Error(fmt::format("{}: slot {} ('{}') element {} is bound to nothing", setName,
+                              item.slot, expected.name, i));
+    if (item.type == ResourceType::SampledTexture &&
+        !hasFlag(item.textures[i]->desc().usage, TextureUsage::Sampled))
+      throw Error(fmt::format("{}: slot {} ('{}') element {}: texture '{}' was not created with "
+                              "TextureUsage::Sampled",
+                              setName, item.slot, expected.name, i,
+                              item.textures[i]->desc().debugName));
+  }
+}
+
+}  // namespace
+
 void validateBindingSet(const BindingSetDesc& set, const PipelineBindingLayout& layout) {
   const std::string setName = set.debugName.empty() ? "binding set" : set.debugName;
   if (set.space >= layout.spaces.size() || layout.spaces[set.space].items.empty()) {
@@ -55,6 +92,8 @@ void validateBindingSet(const BindingSetDesc& set, const PipelineBindingLayout& 
       throw Error(fmt::format("{}: slot {} ('{}') is a {} in the shaders but a {} was bound",
                               setName, item.slot, it->name, resourceTypeName(it->type),
                               resourceTypeName(item.type)));
+    if (item.type == ResourceType::SampledTexture || item.type == ResourceType::Sampler)
+      validateArrayItem(setName, item, *it);
     const bool empty = (item.type == ResourceType::AccelStruct && !item.accelStruct) ||
                        (item.type == ResourceType::StorageTexture && !item.texture) ||
                        ((item.type == ResourceType::StorageBuffer ||

@@ -20,7 +20,9 @@ void addBindingLayoutItem(PipelineBindingLayout& layout, uint32_t space, Binding
                           const std::string& shaderName);
 
 // Checks a binding set against the layout of its space: every slot of the
-// layout filled once with a resource of the right type, no unknown slots.
+// layout filled once with a resource of the right type, no unknown slots;
+// texture and sampler arrays with arraySize elements (fixed arrays) or 1 ..
+// kMaxBindlessDescriptors (unbounded arrays), textures with Sampled usage.
 // Throws penumbra::Error naming the slot and shader variable otherwise.
 void validateBindingSet(const BindingSetDesc& set, const PipelineBindingLayout& layout);
 

@@ -54,6 +54,9 @@ class IDevice {
   virtual BufferHandle createBuffer(const BufferDesc& desc) = 0;
   // D3D12: CreateCommittedResource (texture 2D). Vulkan: vkCreateImage + vkCreateImageView.
   virtual TextureHandle createTexture(const TextureDesc& desc) = 0;
+  // D3D12: a D3D12_SAMPLER_DESC, written into the shader-visible sampler heap by
+  // binding sets (CreateSampler). Vulkan: vkCreateSampler.
+  virtual SamplerHandle createSampler(const SamplerDesc& desc) = 0;
   // Sizes and allocates the storage; the build happens on a command list.
   // D3D12: GetRaytracingAccelerationStructurePrebuildInfo + buffer.
   // Vulkan: vkGetAccelerationStructureBuildSizesKHR + buffer + vkCreateAccelerationStructureKHR.

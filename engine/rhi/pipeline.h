@@ -23,12 +23,26 @@ enum class ResourceType : uint8_t {
   StorageBuffer,   // D3D12: (RW)StructuredBuffer SRV/UAV. Vulkan: STORAGE_BUFFER
   ConstantBuffer,  // D3D12: CBV. Vulkan: UNIFORM_BUFFER
   StorageTexture,  // D3D12: RWTexture2D UAV. Vulkan: STORAGE_IMAGE
+  SampledTexture,  // D3D12: Texture2D SRV. Vulkan: SAMPLED_IMAGE (GLSL texture2D)
+  Sampler,         // D3D12: SamplerState (sampler heap). Vulkan: SAMPLER (GLSL sampler)
 };
 const char* resourceTypeName(ResourceType type);
+
+// The most elements a binding set may put in an unbounded ("bindless") array.
+// Vulkan has no unbounded descriptor-set-layout bindings: such a binding gets
+// min(kMaxBindlessDescriptors, the device's per-stage limit) descriptors,
+// partially bound, so this bounds the layout's size and the descriptor pool.
+// D3D12's shader-visible sampler heap holds 2048 samplers in all, so sampler
+// arrays should stay well below this.
+constexpr uint32_t kMaxBindlessDescriptors = 4096;
 
 struct BindingLayoutItem {
   uint32_t slot = 0;
   ResourceType type = ResourceType::StorageBuffer;
+  // Elements of the array; 0 = an unbounded (runtime-sized, "bindless") array,
+  // `Texture2D t[]` / `uniform texture2D t[]`: a binding set fills 1 ..
+  // kMaxBindlessDescriptors of them. D3D12: a range of NumDescriptors = UINT_MAX
+  // in a descriptor table of its own. Vulkan: a PARTIALLY_BOUND binding.
   uint32_t arraySize = 1;
   bool writable = false;  // UAV rather than SRV on D3D12
   // Storage buffers: bytes per element of the (RW)StructuredBuffer the shader
@@ -54,18 +68,49 @@ struct BindingSetItem {
   BufferHandle buffer;
   TextureHandle texture;
   rt::AccelStructHandle accelStruct;
+  // SampledTexture items: one texture per array element, element i at index i
+  // (a single Texture2D takes exactly one). Textures need TextureUsage::Sampled.
+  std::vector<TextureHandle> textures;
+  // Sampler items, likewise. (Not called `samplers`: C++ does not allow a data
+  // member and the factory below to share a name.)
+  std::vector<SamplerHandle> samplerHandles;
 
   static BindingSetItem storageBuffer(uint32_t slot, BufferHandle b) {
-    return {slot, ResourceType::StorageBuffer, std::move(b), {}, {}};
+    BindingSetItem item{slot, ResourceType::StorageBuffer};
+    item.buffer = std::move(b);
+    return item;
   }
   static BindingSetItem constantBuffer(uint32_t slot, BufferHandle b) {
-    return {slot, ResourceType::ConstantBuffer, std::move(b), {}, {}};
+    BindingSetItem item{slot, ResourceType::ConstantBuffer};
+    item.buffer = std::move(b);
+    return item;
   }
   static BindingSetItem storageTexture(uint32_t slot, TextureHandle t) {
-    return {slot, ResourceType::StorageTexture, {}, std::move(t), {}};
+    BindingSetItem item{slot, ResourceType::StorageTexture};
+    item.texture = std::move(t);
+    return item;
   }
   static BindingSetItem accelStructure(uint32_t slot, rt::AccelStructHandle a) {
-    return {slot, ResourceType::AccelStruct, {}, {}, std::move(a)};
+    BindingSetItem item{slot, ResourceType::AccelStruct};
+    item.accelStruct = std::move(a);
+    return item;
+  }
+  static BindingSetItem sampledTextures(uint32_t slot, std::vector<TextureHandle> t) {
+    BindingSetItem item{slot, ResourceType::SampledTexture};
+    item.textures = std::move(t);
+    return item;
+  }
+  static BindingSetItem samplers(uint32_t slot, std::vector<SamplerHandle> s) {
+    BindingSetItem item{slot, ResourceType::Sampler};
+    item.samplerHandles = std::move(s);
+    return item;
+  }
+  // Descriptors this item writes: the elements of a texture or sampler
+  // array, else one.
+  size_t elementCount() const {
+    if (type == ResourceType::SampledTexture) return textures.size();
+    if (type == ResourceType::Sampler) return samplerHandles.size();
+    return 1;
   }
 };
 

@@ -48,6 +48,30 @@ class ITexture {
 };
 using TextureHandle = std::shared_ptr<ITexture>;
 
+// Samplers are separate objects (HLSL SamplerState, GLSL `sampler`), combined
+// with a texture in the shader, so any texture can be read with any sampler.
+// Textures have one mip level, so there is no mip filter or LOD range.
+enum class Filter : uint8_t { Nearest, Linear };
+enum class AddressMode : uint8_t { Repeat, MirroredRepeat, ClampToEdge };
+
+struct SamplerDesc {
+  Filter minFilter = Filter::Linear;
+  Filter magFilter = Filter::Linear;
+  AddressMode addressU = AddressMode::Repeat;
+  AddressMode addressV = AddressMode::Repeat;
+  std::string debugName;
+};
+
+// D3D12: a sampler descriptor (D3D12_SAMPLER_DESC), written into the
+// shader-visible sampler heap by the binding sets that hold it.
+// Vulkan: VkSampler (mipmapMode NEAREST, LOD range [0, 0], no anisotropy).
+class ISampler {
+ public:
+  virtual ~ISampler() = default;
+  virtual const SamplerDesc& desc() const = 0;
+};
+using SamplerHandle = std::shared_ptr<ISampler>;
+
 namespace rt {
 
 // Row-major 3x4 object-to-world matrix, as DXR and Vulkan both store it.

@@ -5,6 +5,7 @@ namespace penumbra::rhi {
 uint32_t formatByteSize(Format format) {
   switch (format) {
     case Format::RGBA8_UNORM: return 4;
+    case Format::RGBA8_SRGB: return 4;
     case Format::BGRA8_UNORM: return 4;
     case Format::RGBA32_FLOAT: return 16;
     case Format::RGB32_FLOAT: return 12;
@@ -21,6 +22,8 @@ const char* resourceTypeName(ResourceType type) {
     case ResourceType::StorageBuffer: return "storage buffer";
     case ResourceType::ConstantBuffer: return "constant buffer";
     case ResourceType::StorageTexture: return "storage texture";
+    case ResourceType::SampledTexture: return "sampled texture";
+    case ResourceType::Sampler: return "sampler";
   }
   return "?";
 }

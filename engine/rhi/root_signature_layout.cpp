@@ -24,7 +24,11 @@ DescriptorRangeType rangeTypeFor(const BindingLayoutItem& item, uint32_t space) 
     return Error(fmt::format("root signature: '{}' (space {}, slot {} = register {}{}) {}", item.name,
                              space, item.slot, className(reg.registerClass), reg.index, why));
   };
-  if (reg.registerClass == RegisterClass::S) throw fail("is a sampler register; samplers are not supported");
+  if (item.type == ResourceType::Sampler) {
+    if (reg.registerClass != RegisterClass::S) throw fail("is a sampler outside the s registers");
+    return DescriptorRangeType::Sampler;
+  }
+  if (reg.registerClass == RegisterClass::S) throw fail("is not a sampler but lies in the sampler (s) registers");
   switch (item.type) {
     case ResourceType::ConstantBuffer:
       if (reg.registerClass != RegisterClass::B) throw fail("is a constant buffer outside the b registers");
@@ -39,8 +43,27 @@ DescriptorRangeType rangeTypeFor(const BindingLayoutItem& item, uint32_t space) 
       if (reg.registerClass != RegisterClass::T) throw fail("is a storage resource in the b registers");
       if (item.writable) throw fail("is written by the shaders but lies in the read-only t registers");
       return DescriptorRangeType::SRV;
+    case ResourceType::SampledTexture:
+      if (reg.registerClass != RegisterClass::T) throw fail("is a sampled texture outside the t registers");
+      return DescriptorRangeType::SRV;
+    case ResourceType::Sampler: break;
   }
   throw fail("has an unknown resource type");
+}
+
+// An unbounded range claims every register of its class from its base up,
+// so another binding of the class above it in the same space would overlap.
+void checkUnboundedIsLast(const BindingLayoutItem& item, const BindingLayout& space) {
+  const Register reg = registerForBinding(item.slot);
+  for (const auto& other : space.items) {
+    const Register o = registerForBinding(other.slot);
+    if (other.slot != item.slot && o.registerClass == reg.registerClass && o.index > reg.index)
+      throw Error(fmt::format("root signature: unbounded array '{}' (space {}, register {}{}) would overlap "
+                              "'{}' at register {}{}; an unbounded array must have the highest register "
+                              "of its class in its space",
+                              item.name, space.space, className(reg.registerClass), reg.index, other.name,
+                              className(o.registerClass), o.index));
+  }
 }
 
 }  // namespace
@@ -53,7 +76,13 @@ const DescriptorRangeLayout* DescriptorTableLayout::rangeForSlot(uint32_t slot) 
 
 const DescriptorTableLayout* RootSignatureLayout::tableForSpace(uint32_t space) const {
   for (const auto& t : tables)
-    if (t.space == space) return &t;
+    if (t.space == space && t.heap == DescriptorHeapKind::CbvSrvUav && !t.unbounded) return &t;
+  return nullptr;
+}
+
+const DescriptorTableLayout* RootSignatureLayout::tableForSlot(uint32_t space, uint32_t slot) const {
+  for (const auto& t : tables)
+    if (t.space == space && t.rangeForSlot(slot)) return &t;
   return nullptr;
 }
 
@@ -72,21 +101,43 @@ RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layo
     if (space.items.empty()) continue;
     if (space.space == kPushConstantSpace || space.space == kShaderRecordSpace)
       throw Error(fmt::format("root signature: space {} is reserved for root constants", space.space));
-    DescriptorTableLayout table;
-    table.space = space.space;
-    table.rootParameterIndex = parameter++;
+    DescriptorTableLayout views, samplers;
+    views.space = samplers.space = space.space;
+    samplers.heap = DescriptorHeapKind::Sampler;
+    std::vector<DescriptorTableLayout> unbounded;
     for (const auto& item : space.items) {
       DescriptorRangeLayout range;
       range.type = rangeTypeFor(item, space.space);
       range.baseRegister = registerForBinding(item.slot).index;
+      range.slot = item.slot;
+      if (item.arraySize == 0) {
+        checkUnboundedIsLast(item, space);
+        DescriptorTableLayout table;
+        table.space = space.space;
+        table.heap = range.type == DescriptorRangeType::Sampler ? DescriptorHeapKind::Sampler
+                                                                : DescriptorHeapKind::CbvSrvUav;
+        table.unbounded = true;
+        range.count = kUnboundedDescriptors;
+        table.ranges.push_back(range);
+        unbounded.push_back(std::move(table));
+        continue;
+      }
+      auto& table = range.type == DescriptorRangeType::Sampler ? samplers : views;
       range.count = item.arraySize;
       range.offsetInTable = table.descriptorCount;
-      range.slot = item.slot;
       table.descriptorCount += item.arraySize;
       table.ranges.push_back(range);
     }
-    result.tables.push_back(std::move(table));
-    result.dwordCost += 1;
+    // Table order within a space: views, samplers, then the unbounded arrays.
+    std::vector<DescriptorTableLayout> tables;
+    for (auto* table : {&views, &samplers})
+      if (!table->ranges.empty()) tables.push_back(std::move(*table));
+    for (auto& table : unbounded) tables.push_back(std::move(table));
+    for (auto& table : tables) {
+      table.rootParameterIndex = parameter++;
+      result.tables.push_back(std::move(table));
+      result.dwordCost += 1;
+    }
   }
   if (result.dwordCost > kMaxRootSignatureDwords)
     throw Error(fmt::format("root signature: {} DWORDs exceed D3D12's limit of {} (push constants: {} "

@@ -32,12 +32,18 @@ constexpr uint32_t kShaderRecordSpace = 901;
 // a descriptor table one.
 constexpr uint32_t kMaxRootSignatureDwords = 64;
 
-enum class DescriptorRangeType : uint8_t { SRV, UAV, CBV };
+// NumDescriptors of an unbounded range (D3D12's UINT_MAX: "to the end of the heap").
+constexpr uint32_t kUnboundedDescriptors = 0xffffffffu;
+
+enum class DescriptorRangeType : uint8_t { SRV, UAV, CBV, Sampler };
+
+// Which shader-visible heap a table points into.
+enum class DescriptorHeapKind : uint8_t { CbvSrvUav, Sampler };
 
 struct DescriptorRangeLayout {
   DescriptorRangeType type = DescriptorRangeType::SRV;
   uint32_t baseRegister = 0;   // register number within its class
-  uint32_t count = 1;          // descriptors (the item's arraySize)
+  uint32_t count = 1;          // descriptors (the item's arraySize), or kUnboundedDescriptors
   uint32_t offsetInTable = 0;  // descriptors from the table's start
   uint32_t slot = 0;           // the binding slot it came from
 };
@@ -45,7 +51,11 @@ struct DescriptorRangeLayout {
 struct DescriptorTableLayout {
   uint32_t space = 0;  // register space = Vulkan descriptor set
   uint32_t rootParameterIndex = 0;
-  uint32_t descriptorCount = 0;  // size of the heap range a binding set needs
+  DescriptorHeapKind heap = DescriptorHeapKind::CbvSrvUav;
+  // One range of kUnboundedDescriptors: the heap range a binding set needs is
+  // as long as the array it binds there.
+  bool unbounded = false;
+  uint32_t descriptorCount = 0;  // size of the heap range a binding set needs (0 when unbounded)
   std::vector<DescriptorRangeLayout> ranges;
   // The range that holds `slot`, or nullptr.
   const DescriptorRangeLayout* rangeForSlot(uint32_t slot) const;
@@ -63,15 +73,19 @@ struct RootSignatureLayout {
   std::vector<DescriptorTableLayout> tables;
   uint32_t dwordCost = 0;
   uint32_t parameterCount() const { return uint32_t(tables.size()) + (pushConstants ? 1u : 0u); }
-  // The descriptor table of `space`, or nullptr if the shaders declare nothing there.
+  // The CBV/SRV/UAV table of the bounded items of `space`, or nullptr if the
+  // shaders declare none there.
   const DescriptorTableLayout* tableForSpace(uint32_t space) const;
+  // The table holding `slot` of `space` (any kind), or nullptr.
+  const DescriptorTableLayout* tableForSlot(uint32_t space, uint32_t slot) const;
 };
 
 // Throws penumbra::Error when a binding cannot be expressed in D3D12: a
-// constant buffer outside the b registers, an acceleration structure outside
-// t, a writable resource outside u, a sampler register, a push-constant block
-// that is not whole DWORDs, a binding in the reserved spaces, or more than 64
-// DWORDs in all.
+// constant buffer outside the b registers, an acceleration structure or a
+// sampled texture outside t, a writable resource outside u, a sampler outside
+// s or anything else in s, an unbounded array below another register of its
+// class and space, a push-constant block that is not whole DWORDs, a binding
+// in the reserved spaces, or more than 64 DWORDs in all.
 RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layout);
 
 // The local root signature of a shader whose record carries

@@ -10,8 +10,17 @@
 namespace penumbra::rhi {
 namespace {
 
-uint32_t arraySizeOf(const spirv_cross::Compiler& compiler, const spirv_cross::Resource& resource) {
+// SPIRV-Cross gives a runtime array (`texture2D t[]`) the size 0, which is
+// also the RHI's mark of an unbounded array.
+uint32_t arraySizeOf(const spirv_cross::Compiler& compiler, const spirv_cross::Resource& resource,
+                     const std::string& moduleName) {
   const auto& type = compiler.get_type(resource.type_id);
+  if (type.array.size() > 1)
+    throw Error(fmt::format("shader '{}': '{}' is a multi-dimensional array, which the RHI does not model",
+                            moduleName, resource.name));
+  if (!type.array.empty() && !type.array_size_literal[0])
+    throw Error(fmt::format("shader '{}': '{}' is sized by a specialization constant, which the RHI does "
+                            "not model", moduleName, resource.name));
   return type.array.empty() ? 1u : type.array[0];
 }
 
@@ -43,7 +52,7 @@ ShaderReflection reflectSpirvModule(std::span<const uint32_t> spirv, const std::
       BindingLayoutItem item;
       item.slot = compiler.get_decoration(r.id, spv::DecorationBinding);
       item.type = type;
-      item.arraySize = arraySizeOf(compiler, r);
+      item.arraySize = arraySizeOf(compiler, r, moduleName);
       item.name = r.name.empty() ? compiler.get_name(r.base_type_id) : r.name;
       if (storage) {
         const bool readOnly = type == ResourceType::StorageTexture
@@ -60,10 +69,13 @@ ShaderReflection reflectSpirvModule(std::span<const uint32_t> spirv, const std::
   add(resources.storage_buffers, ResourceType::StorageBuffer, true);
   add(resources.uniform_buffers, ResourceType::ConstantBuffer, false);
   add(resources.storage_images, ResourceType::StorageTexture, true);
-  if (!resources.sampled_images.empty() || !resources.separate_images.empty() ||
-      !resources.separate_samplers.empty())
-    throw Error(fmt::format("shader '{}': sampled textures are not supported by the RHI yet",
-                            moduleName));
+  add(resources.separate_images, ResourceType::SampledTexture, false);
+  add(resources.separate_samplers, ResourceType::Sampler, false);
+  // HLSL has no combined image-samplers, so the portable dialect cannot use them.
+  if (!resources.sampled_images.empty())
+    throw Error(fmt::format("shader '{}': '{}' is a combined image sampler (sampler2D); declare a "
+                            "texture2D and a sampler separately (HLSL Texture2D + SamplerState)",
+                            moduleName, resources.sampled_images[0].name));
   for (const auto& pc : resources.push_constant_buffers) {
     const auto& type = compiler.get_type(pc.base_type_id);
     result.layout.pushConstantBytes =

@@ -17,8 +17,10 @@ struct ShaderReflection {
   uint32_t shaderRecordBytes = 0;  // size of the shaderRecordEXT block, 0 if none
 };
 
-// What one SPIR-V module declares. Throws penumbra::Error for resources the
-// RHI does not model (sampled textures, samplers).
+// What one SPIR-V module declares: separate images (texture2D) become
+// SampledTexture items, separate samplers Sampler items, runtime arrays
+// arraySize 0. Throws penumbra::Error for what the RHI does not model
+// (combined image samplers, multi-dimensional or spec-constant-sized arrays).
 ShaderReflection reflectSpirvModule(std::span<const uint32_t> spirv, const std::string& moduleName);
 
 // Adds the resources one SPIR-V module declares to `layout`

@@ -15,6 +15,8 @@ enum class Format : uint8_t {
   RGB32_FLOAT,    // vertex positions only (AS build input)
   R32_UINT,       // index buffers, counters
   R16_UINT,
+  RGBA8_SRGB,     // D3D12: DXGI_FORMAT_R8G8B8A8_UNORM_SRGB Vulkan: VK_FORMAT_R8G8B8A8_SRGB (sampled colour
+                  // textures; the sampler decodes sRGB to linear before filtering)
 };
 uint32_t formatByteSize(Format format);
 

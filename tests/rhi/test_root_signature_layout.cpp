@@ -7,6 +7,7 @@
 
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
+#include "penumbra_test_shaders.h"
 #include "rhi/binding_layout.h"
 #include "rhi/register_shifts.h"
 #include "rhi/root_signature_layout.h"
@@ -124,6 +125,79 @@ TEST_CASE("root signature: spaces become tables in space order, arrays take seve
   CHECK(rs.tableForSpace(2) == &rs.tables[1]);
 }
 
+TEST_CASE("root signature: samplers get a table of their own, unbounded arrays one each",
+          "[rhi][root-signature]") {
+  PipelineBindingLayout layout;
+  layout.pushConstantBytes = 4;
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(1), ResourceType::SampledTexture, false, 2), "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(12), ResourceType::SampledTexture, false, 0), "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_U(0), ResourceType::StorageBuffer, true), "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_S(0), ResourceType::Sampler, false, 0), "test");
+  addBindingLayoutItem(layout, 1, item(PENUMBRA_S(2), ResourceType::Sampler, false, 3), "test");
+  const RootSignatureLayout rs = computeRootSignatureLayout(layout);
+
+  // Space 0: views (t0, t1[2], u0), then the unbounded t12[] and s0[]; space 1: samplers.
+  REQUIRE(rs.tables.size() == 4);
+  CHECK(rs.parameterCount() == 5);
+  CHECK(rs.dwordCost == 1 + 4);
+  const auto& views = rs.tables[0];
+  CHECK(views.space == 0);
+  CHECK(views.rootParameterIndex == 1);
+  CHECK(views.heap == DescriptorHeapKind::CbvSrvUav);
+  CHECK_FALSE(views.unbounded);
+  CHECK(views.descriptorCount == 4);
+  REQUIRE(views.ranges.size() == 3);
+  CHECK(views.ranges[1].type == DescriptorRangeType::SRV);  // Texture2D gTextures[2] : register(t1)
+  CHECK(views.ranges[1].count == 2);
+  CHECK(views.ranges[2].offsetInTable == 3);
+  CHECK(rs.tableForSpace(0) == &views);
+
+  const auto& textures = rs.tables[1];
+  CHECK(textures.space == 0);
+  CHECK(textures.rootParameterIndex == 2);
+  CHECK(textures.heap == DescriptorHeapKind::CbvSrvUav);
+  CHECK(textures.unbounded);
+  CHECK(textures.descriptorCount == 0);
+  REQUIRE(textures.ranges.size() == 1);
+  CHECK(textures.ranges[0].type == DescriptorRangeType::SRV);
+  CHECK(textures.ranges[0].baseRegister == 12);
+  CHECK(textures.ranges[0].count == kUnboundedDescriptors);
+  CHECK(textures.ranges[0].offsetInTable == 0);
+  CHECK(rs.tableForSlot(0, PENUMBRA_T(12)) == &textures);
+
+  const auto& samplers = rs.tables[2];
+  CHECK(samplers.rootParameterIndex == 3);
+  CHECK(samplers.heap == DescriptorHeapKind::Sampler);
+  CHECK(samplers.unbounded);
+  CHECK(samplers.ranges[0].type == DescriptorRangeType::Sampler);
+  CHECK(samplers.ranges[0].baseRegister == 0);
+  CHECK(samplers.ranges[0].count == kUnboundedDescriptors);
+  CHECK(rs.tableForSlot(0, PENUMBRA_S(0)) == &samplers);
+
+  const auto& fixedSamplers = rs.tables[3];
+  CHECK(fixedSamplers.space == 1);
+  CHECK(fixedSamplers.rootParameterIndex == 4);
+  CHECK(fixedSamplers.heap == DescriptorHeapKind::Sampler);
+  CHECK_FALSE(fixedSamplers.unbounded);
+  CHECK(fixedSamplers.descriptorCount == 3);
+  CHECK(fixedSamplers.ranges[0].baseRegister == 2);
+  CHECK(rs.tableForSpace(1) == nullptr);  // no views in space 1
+  CHECK(rs.tableForSlot(1, PENUMBRA_S(2)) == &fixedSamplers);
+  CHECK(rs.tableForSlot(1, PENUMBRA_S(0)) == nullptr);
+}
+
+TEST_CASE("root signature: the bindless texture shader's layout", "[rhi][root-signature]") {
+  const RootSignatureLayout rs =
+      computeRootSignatureLayout(test_shaders::shaderDesc("texture_sample.comp").bindingLayout);
+  REQUIRE(rs.pushConstants);
+  REQUIRE(rs.tables.size() == 3);  // t0 + u0; t12[]; s0[]
+  CHECK(rs.tables[0].descriptorCount == 2);
+  CHECK(rs.tables[1].ranges[0].baseRegister == 12);
+  CHECK(rs.tables[1].ranges[0].count == kUnboundedDescriptors);
+  CHECK(rs.tables[2].heap == DescriptorHeapKind::Sampler);
+}
+
 TEST_CASE("root signature: bindings D3D12 cannot express are refused by name", "[rhi][root-signature]") {
   PipelineBindingLayout layout;
   SECTION("a written resource in the t registers") {
@@ -142,6 +216,20 @@ TEST_CASE("root signature: bindings D3D12 cannot express are refused by name", "
   SECTION("a sampler register") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_S(0), ResourceType::StorageBuffer), "test");
     REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("sampler"));
+  }
+  SECTION("a sampler outside the s registers") {
+    addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::Sampler), "test");
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("sampler outside the s registers"));
+  }
+  SECTION("a sampled texture outside the t registers") {
+    addBindingLayoutItem(layout, 0, item(PENUMBRA_B(1), ResourceType::SampledTexture), "test");
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("sampled texture outside"));
+  }
+  SECTION("an unbounded array below another register of its class") {
+    addBindingLayoutItem(layout, 0, item(PENUMBRA_T(4), ResourceType::SampledTexture, false, 0), "test");
+    addBindingLayoutItem(layout, 0, item(PENUMBRA_T(7), ResourceType::StorageBuffer), "test");
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+                        ContainsSubstring("g36") && ContainsSubstring("overlap") && ContainsSubstring("g39"));
   }
   SECTION("the reserved root-constant space") {
     addBindingLayoutItem(layout, kPushConstantSpace, item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");

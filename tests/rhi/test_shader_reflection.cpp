@@ -117,7 +117,8 @@ TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR
     CHECK(sameLayout(desc.bindingLayout, runtime.layout));
     CHECK(desc.shaderRecordBytes == runtime.shaderRecordBytes);
   }
-  for (const char* name : {"probe.rgen", "probe.rmiss", "probe_alternate.rmiss", "probe.rchit", "sphere.rint"}) {
+  for (const char* name :
+       {"probe.rgen", "probe.rmiss", "probe_alternate.rmiss", "probe.rchit", "sphere.rint", "texture_sample.comp"}) {
     INFO(name);
     const ShaderDesc desc = test_shaders::shaderDesc(name);
     const ShaderReflection runtime = reflectSpirvModule(desc.spirv, name);
@@ -126,6 +127,26 @@ TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR
   }
   CHECK(test_shaders::shaderDesc("probe.rchit").shaderRecordBytes == 4);  // { uint gTag; }
   CHECK(shaders::shaderDesc("triangle.rchit").shaderRecordBytes == 0);
+}
+
+TEST_CASE("reflection derives separate textures and samplers, runtime arrays as unbounded",
+          "[rhi][reflection][textures]") {
+  PipelineBindingLayout layout;
+  reflectSpirv(test_shaders::find("texture_sample.comp"), "texture_sample.comp", layout);
+  REQUIRE(layout.spaces.size() == 1);
+  REQUIRE(layout.spaces[0].items.size() == 4);
+  const auto& textures = slot(layout, PENUMBRA_T(12));
+  CHECK(textures.type == ResourceType::SampledTexture);
+  CHECK(textures.arraySize == 0);
+  CHECK(textures.name == "gTextures");
+  CHECK_FALSE(textures.writable);
+  const auto& samplers = slot(layout, PENUMBRA_S(0));
+  CHECK(samplers.type == ResourceType::Sampler);
+  CHECK(samplers.arraySize == 0);
+  CHECK(samplers.name == "gSamplers");
+  CHECK(slot(layout, PENUMBRA_T(0)).type == ResourceType::StorageBuffer);
+  CHECK(slot(layout, PENUMBRA_T(0)).arraySize == 1);
+  CHECK(layout.pushConstantBytes == 4);
 }
 
 TEST_CASE("reflection records each storage buffer's structure stride for D3D12 views", "[rhi][reflection]") {

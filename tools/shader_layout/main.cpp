@@ -37,6 +37,8 @@ const char* typeName(rhi::ResourceType type) {
     case rhi::ResourceType::StorageBuffer: return "StorageBuffer";
     case rhi::ResourceType::ConstantBuffer: return "ConstantBuffer";
     case rhi::ResourceType::StorageTexture: return "StorageTexture";
+    case rhi::ResourceType::SampledTexture: return "SampledTexture";
+    case rhi::ResourceType::Sampler: return "Sampler";
   }
   throw Error("unknown resource type");
 }
