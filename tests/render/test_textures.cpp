@@ -10,7 +10,9 @@
 
 #include "effects.h"
 #include "render_test_utils.h"
+#include "scene/gltf_loader.h"
 #include "scene/mesh_builders.h"
+#include "test_data.h"
 
 using namespace penumbra;
 
@@ -496,5 +498,53 @@ TEST_CASE("textures: next-event estimation samples a textured emitter's texture"
   INFO("textured " << a << " reference " << b);
   REQUIRE(b > 0.01);
   REQUIRE(std::abs(a - b) < 0.03 * b);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("textures: glTF files render their textures and alpha masks", "[render][gpu][textures][gltf]") {
+  auto device = test::makeTestDevice();
+  SECTION("an emissive checker texture, texel by texel") {
+    auto s = scene::loadGltf(test::dataPath("gltf/textured_quad.gltf"));
+    s.camera = frontCamera();
+    const auto img = test::renderScene(*device, s, kSize, kSize, 4, directOnly());
+    REQUIRE(checkEmittedTexels(img, s) >= 100);
+  }
+  SECTION("an alpha-masked quad over an emitter shows the emitter through transparent texels") {
+    auto s = scene::loadGltf(test::dataPath("gltf/alpha_mask_quad.gltf"));
+    s.camera = frontCamera();
+    s.materials.push_back(scene::Material::lambert("emitter", glm::vec3(0.0f), glm::vec3(1.0f)));
+    s.meshes.push_back(texturedQuad(uint32_t(s.materials.size() - 1), -1.0f, 3.0f));
+    s.instances.push_back({uint32_t(s.meshes.size() - 1), glm::mat4(1.0f)});
+    const auto img = test::renderScene(*device, s, kSize, kSize, 4, directOnly());
+    // The file's texture is alpha 255 where x + y is even: the opposite
+    // parity of alphaChecker(), so opaque here is transparent there.
+    uint32_t seenThrough = 0, blocked = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        std::optional<bool> checkerSaysOpaque;
+        bool uniform = true;
+        for (glm::vec2 film : test::pixelFootprint(x, y)) {
+          const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), kSize, kSize);
+          const glm::dvec3 p = glm::dvec3(s.camera.position) + d * (-3.0 / d.z);
+          const auto here = checkerOpaque(float(p.x), float(p.y));
+          if (!here || (checkerSaysOpaque && *checkerSaysOpaque != *here)) uniform = false;
+          checkerSaysOpaque = here;
+        }
+        if (!uniform) continue;
+        // Transparent texels show the emitter (1); opaque ones the quad's own
+        // colour under no light (its emission is 0).
+        const bool opaque = !*checkerSaysOpaque;
+        INFO("pixel " << x << "," << y);
+        if (opaque) {
+          REQUIRE(img.pixel(x, y)[1] < 1e-4f);
+          ++blocked;
+        } else {
+          REQUIRE(std::abs(img.pixel(x, y)[1] - 1.0f) < 1e-4f);
+          ++seenThrough;
+        }
+      }
+    REQUIRE(blocked >= 100);
+    REQUIRE(seenThrough >= 100);
+  }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
