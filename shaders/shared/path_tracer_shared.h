@@ -28,8 +28,8 @@ namespace penumbra::gpu {
 #define PT_T_TEXCOORDS 9           // float4 per vertex: xy TEXCOORD_0, zw TEXCOORD_1 (0 without)
 #define PT_T_IMPLICITS 10          // ImplicitData by family: InstanceID() + PrimitiveIndex()
 #define PT_T_PROBE_RAYS 11         // ProbeRay: rays of PathTracer::traceProbeRays
-#define PT_T_TEXTURES 12           // Texture2D[] (bindless): Scene::textures, RGBA8 (sRGB or linear)
-#define PT_T_TEXTURE_REFS 13       // TextureRefData: Scene::textureRefs
+#define PT_T_TEXTURE_REFS 12       // TextureRefData: Scene::textureRefs
+#define PT_T_TEXTURES 13           // Texture2D[] (bindless, so the highest t register: D3D12 unbounded ranges cover all above)
 #define PT_S_SAMPLERS 0            // SamplerState[] (bindless): the distinct samplers of the texture refs
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch

@@ -29,12 +29,12 @@ BindingLayoutItem item(uint32_t slot, ResourceType type, bool writable = false, 
 }
 }  // namespace
 
-TEST_CASE("root signature: the path tracer's layout maps to root constants and one table",
+TEST_CASE("root signature: the path tracer's layout maps to root constants, one table and the bindless tables",
           "[rhi][root-signature]") {
   PipelineBindingLayout layout;
   for (const char* name :
        {"path_trace.rgen", "whitted.rgen", "probe.rgen", "path_trace.rmiss", "shadow.rmiss",
-        "triangle.rchit", "implicit.rchit", "implicit_sphere.rint", "implicit_plane_box.rint",
+        "triangle.rchit", "triangle_alpha.rahit", "implicit.rchit", "implicit_sphere.rint", "implicit_plane_box.rint",
         "implicit_sdf.rint", "implicit_fractal.rint"})
     mergeBindingLayout(layout, shaders::shaderDesc(name).bindingLayout, name);
   const RootSignatureLayout rs = computeRootSignatureLayout(layout);
@@ -44,15 +44,26 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
   CHECK(rs.pushConstants->shaderRegister == 0);
   CHECK(rs.pushConstants->registerSpace == kPushConstantSpace);
   CHECK(rs.pushConstants->num32BitValues == sizeof(gpu::FrameConstants) / 4);
-  REQUIRE(rs.tables.size() == 1);
+  // The bounded views, then the bindless textures (t13[], the highest t
+  // register: an unbounded range covers every register above it) and the
+  // bindless samplers, each in a table of its own.
+  REQUIRE(rs.tables.size() == 3);
   const auto& table = rs.tables[0];
   CHECK(table.space == 0);
   CHECK(table.rootParameterIndex == 1);
-  CHECK(table.descriptorCount == 15);
-  CHECK(rs.parameterCount() == 2);
-  CHECK(rs.dwordCost == 32 + 1);  // 128 bytes of root constants + one table
+  CHECK(table.descriptorCount == 16);
+  CHECK(rs.parameterCount() == 4);
+  CHECK(rs.dwordCost == 32 + 3);  // 128 bytes of root constants + three tables
+  const auto* textures = rs.tableForSlot(0, PT_SLOT_TEXTURES);
+  REQUIRE(textures);
+  CHECK(textures->unbounded);
+  CHECK(textures->heap == DescriptorHeapKind::CbvSrvUav);
+  const auto* samplers = rs.tableForSlot(0, PT_SLOT_SAMPLERS);
+  REQUIRE(samplers);
+  CHECK(samplers->unbounded);
+  CHECK(samplers->heap == DescriptorHeapKind::Sampler);
 
-  // t0..t11 are SRVs (TLAS + read-only structured buffers), u0..u2 UAVs, in slot order.
+  // t0..t12 are SRVs (TLAS + read-only structured buffers), u0..u2 UAVs, in slot order.
   const auto* scene = table.rangeForSlot(PT_SLOT_SCENE);
   REQUIRE(scene);
   CHECK(scene->type == DescriptorRangeType::SRV);
@@ -83,21 +94,26 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants and o
   CHECK(probeRays->type == DescriptorRangeType::SRV);
   CHECK(probeRays->baseRegister == 11);
   CHECK(probeRays->offsetInTable == 11);
+  const auto* textureRefs = table.rangeForSlot(PT_SLOT_TEXTURE_REFS);
+  REQUIRE(textureRefs);
+  CHECK(textureRefs->type == DescriptorRangeType::SRV);
+  CHECK(textureRefs->baseRegister == 12);
+  CHECK(textureRefs->offsetInTable == 12);
   const auto* accumulation = table.rangeForSlot(PT_SLOT_ACCUMULATION);
   REQUIRE(accumulation);
   CHECK(accumulation->type == DescriptorRangeType::UAV);
   CHECK(accumulation->baseRegister == 0);
-  CHECK(accumulation->offsetInTable == 12);
+  CHECK(accumulation->offsetInTable == 13);
   const auto* counter = table.rangeForSlot(PT_SLOT_RAY_COUNTER);
   REQUIRE(counter);
   CHECK(counter->type == DescriptorRangeType::UAV);
   CHECK(counter->baseRegister == 1);
-  CHECK(counter->offsetInTable == 13);
+  CHECK(counter->offsetInTable == 14);
   const auto* probeHits = table.rangeForSlot(PT_SLOT_PROBE_HITS);
   REQUIRE(probeHits);
   CHECK(probeHits->type == DescriptorRangeType::UAV);
   CHECK(probeHits->baseRegister == 2);
-  CHECK(probeHits->offsetInTable == 14);
+  CHECK(probeHits->offsetInTable == 15);
 }
 
 TEST_CASE("root signature: spaces become tables in space order, arrays take several descriptors",

@@ -16,7 +16,7 @@ namespace {
 // Every shader a path tracer pipeline can hold (implicit hit groups included).
 const char* const kPathTracerShaders[] = {
     "path_trace.rgen",   "whitted.rgen",         "probe.rgen",
-    "path_trace.rmiss",  "shadow.rmiss",         "triangle.rchit",
+    "path_trace.rmiss",  "shadow.rmiss",         "triangle.rchit",       "triangle_alpha.rahit",
     "implicit.rchit",    "implicit_sphere.rint", "implicit_plane_box.rint",
     "implicit_sdf.rint", "implicit_fractal.rint"};
 
@@ -37,7 +37,7 @@ const BindingLayoutItem& slot(const PipelineBindingLayout& layout, uint32_t s) {
 TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][reflection]") {
   auto layout = reflectPathTracer();
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 15);
+  REQUIRE(layout.spaces[0].items.size() == 18);
   REQUIRE(layout.pushConstantBytes == sizeof(gpu::FrameConstants));
 
   REQUIRE(slot(layout, PT_SLOT_SCENE).type == ResourceType::AccelStruct);
@@ -56,6 +56,12 @@ TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][refl
   REQUIRE_FALSE(slot(layout, PT_SLOT_IMPLICITS).writable);
   REQUIRE_FALSE(slot(layout, PT_SLOT_PROBE_RAYS).writable);
   REQUIRE(slot(layout, PT_SLOT_PROBE_HITS).writable);
+  // Material textures: bindless (unbounded) texture and sampler arrays.
+  REQUIRE(slot(layout, PT_SLOT_TEXTURES).type == ResourceType::SampledTexture);
+  REQUIRE(slot(layout, PT_SLOT_TEXTURES).arraySize == 0u);
+  REQUIRE(slot(layout, PT_SLOT_SAMPLERS).type == ResourceType::Sampler);
+  REQUIRE(slot(layout, PT_SLOT_SAMPLERS).arraySize == 0u);
+  REQUIRE_FALSE(slot(layout, PT_SLOT_TEXTURE_REFS).writable);
 }
 
 TEST_CASE("binding sets are checked against the reflected layout", "[rhi][reflection]") {
