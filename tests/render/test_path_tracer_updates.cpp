@@ -2,7 +2,9 @@
 // materials, size. Each must give exactly the image a new PathTracer built
 // for the changed scene gives (same device, same seed: bit-identical).
 #include <catch2/catch_test_macros.hpp>
+#include <cmath>
 #include <cstring>
+#include <string>
 
 #include "effects.h"
 #include "render_test_utils.h"
@@ -25,6 +27,20 @@ image::Image accumulate(render::PathTracer& tracer, uint32_t spp) {
 bool identical(const image::Image& a, const image::Image& b) {
   return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
 }
+
+// For the failure message: how many values differ, and by how much at most.
+std::string differences(const image::Image& a, const image::Image& b) {
+  if (a.rgba.size() != b.rgba.size()) return "sizes differ";
+  size_t count = 0;
+  float largest = 0.0f;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    if (a.rgba[i] != b.rgba[i]) {
+      ++count;
+      largest = std::max(largest, std::abs(a.rgba[i] - b.rgba[i]));
+    }
+  return std::to_string(count) + " of " + std::to_string(a.rgba.size()) +
+         " values differ, by up to " + std::to_string(largest);
+}
 }  // namespace
 
 TEST_CASE("path tracer: setCamera renders what a scene with that camera renders", "[render][gpu]") {
@@ -37,7 +53,9 @@ TEST_CASE("path tracer: setCamera renders what a scene with that camera renders"
   REQUIRE(tracer.accumulatedSamples() == 0u);
   const auto moved = accumulate(tracer, kSpp);
   render::PathTracer fresh(*device, scene, kSize, kSize);
-  REQUIRE(identical(moved, accumulate(fresh, kSpp)));
+  const auto freshImage = accumulate(fresh, kSpp);
+  INFO(differences(moved, freshImage));
+  REQUIRE(identical(moved, freshImage));
   REQUIRE_FALSE(identical(moved, before));
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
@@ -63,7 +81,9 @@ TEST_CASE("path tracer: updateMaterials matches a new tracer and rebuilds for ne
   const auto updated = accumulate(tracer, kSpp);
   render::PathTracer fresh(*device, scene, kSize, kSize);
   REQUIRE(fresh.pipelineEffects() == tracer.pipelineEffects());
-  REQUIRE(identical(updated, accumulate(fresh, kSpp)));
+  const auto freshImage = accumulate(fresh, kSpp);
+  INFO(differences(updated, freshImage));
+  REQUIRE(identical(updated, freshImage));
 
   // A colour change keeps the pipeline.
   scene.materials[0].baseColor *= 0.5f;
@@ -88,6 +108,8 @@ TEST_CASE("path tracer: resize matches a new tracer of that size", "[render][gpu
   REQUIRE(resized.width == 24u);
   REQUIRE(resized.height == 16u);
   render::PathTracer fresh(*device, scene, 24, 16);
-  REQUIRE(identical(resized, accumulate(fresh, kSpp)));
+  const auto freshImage = accumulate(fresh, kSpp);
+  INFO(differences(resized, freshImage));
+  REQUIRE(identical(resized, freshImage));
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
