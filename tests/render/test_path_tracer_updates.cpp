@@ -1,6 +1,10 @@
 // PathTracer changes after construction, as the viewer makes them: camera,
-// materials, size. Each must give exactly the image a new PathTracer built
-// for the changed scene gives (same device, same seed: bit-identical).
+// materials, size. Each must give the image a new PathTracer built for the
+// changed scene gives (same device, same seed). Tolerance 1e-5 per value,
+// relative to 1 or the value: measured bit-identical on lavapipe; on the
+// NVIDIA H200 a second pipeline in the same process differs in the last bits
+// (6 % of values, by less than 1e-6), as a compiler contracting a * b + c
+// differently would. A wrong camera, material or size differs by far more.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <cstring>
@@ -24,8 +28,11 @@ image::Image accumulate(render::PathTracer& tracer, uint32_t spp) {
   return tracer.readback();
 }
 
-bool identical(const image::Image& a, const image::Image& b) {
-  return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
+bool matches(const image::Image& a, const image::Image& b) {
+  if (a.width != b.width || a.height != b.height) return false;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    if (!(std::abs(a.rgba[i] - b.rgba[i]) <= 1e-5f * std::max(1.0f, std::abs(b.rgba[i])))) return false;
+  return true;
 }
 
 // For the failure message: how many values differ, and by how much at most.
@@ -39,7 +46,7 @@ std::string differences(const image::Image& a, const image::Image& b) {
       largest = std::max(largest, std::abs(a.rgba[i] - b.rgba[i]));
     }
   return std::to_string(count) + " of " + std::to_string(a.rgba.size()) +
-         " values differ, by up to " + std::to_string(largest);
+         " values differ, by up to " + std::to_string(double(largest) * 1e6) + "e-6";
 }
 }  // namespace
 
@@ -55,8 +62,8 @@ TEST_CASE("path tracer: setCamera renders what a scene with that camera renders"
   render::PathTracer fresh(*device, scene, kSize, kSize);
   const auto freshImage = accumulate(fresh, kSpp);
   INFO(differences(moved, freshImage));
-  REQUIRE(identical(moved, freshImage));
-  REQUIRE_FALSE(identical(moved, before));
+  REQUIRE(matches(moved, freshImage));
+  REQUIRE_FALSE(matches(moved, before));
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
@@ -83,7 +90,7 @@ TEST_CASE("path tracer: updateMaterials matches a new tracer and rebuilds for ne
   REQUIRE(fresh.pipelineEffects() == tracer.pipelineEffects());
   const auto freshImage = accumulate(fresh, kSpp);
   INFO(differences(updated, freshImage));
-  REQUIRE(identical(updated, freshImage));
+  REQUIRE(matches(updated, freshImage));
 
   // A colour change keeps the pipeline.
   scene.materials[0].baseColor *= 0.5f;
@@ -110,6 +117,6 @@ TEST_CASE("path tracer: resize matches a new tracer of that size", "[render][gpu
   render::PathTracer fresh(*device, scene, 24, 16);
   const auto freshImage = accumulate(fresh, kSpp);
   INFO(differences(resized, freshImage));
-  REQUIRE(identical(resized, freshImage));
+  REQUIRE(matches(resized, freshImage));
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
