@@ -548,3 +548,44 @@ TEST_CASE("textures: glTF files render their textures and alpha masks", "[render
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
+
+TEST_CASE("textures: an occlusion texture darkens Whitted's ambient term only", "[render][gpu][textures]") {
+  // No lights, ambient 1: every pixel of the quad is kd * ambient * occlusion,
+  // occlusion = 1 + strength * (r - 1).
+  auto device = test::makeTestDevice();
+  auto material = scene::Material::lambert("matte", glm::vec3(0.5f));
+  auto plain = litQuadScene(material);
+  plain.pointLights.clear();
+  plain.ambient = glm::vec3(1.0f);
+  auto occluded = plain;
+  occluded.materials[0].occlusionTexture = 0;
+  occluded.materials[0].occlusionStrength = 0.75f;
+  occluded.textures = {makeTexture(2, 2, false, [](uint32_t, uint32_t) { return glm::u8vec4(64, 200, 200, 255); })};
+  occluded.textureRefs = {scene::TextureRef{}};
+  render::PathTracerSettings whitted;
+  whitted.integrator = render::Integrator::Whitted;
+  whitted.maxDepth = 0;
+  const auto reference = test::renderScene(*device, plain, kSize, kSize, 1, whitted);
+  const auto image = test::renderScene(*device, occluded, kSize, kSize, 1, whitted);
+  const float occlusion = 1.0f + 0.75f * (64.0f / 255.0f - 1.0f);
+  uint32_t quadPixels = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const float r = reference.pixel(x, y)[1];
+      if (r <= 0.0f) continue;  // background
+      INFO("pixel " << x << "," << y);
+      REQUIRE(std::abs(image.pixel(x, y)[1] - r * occlusion) <= 1e-4f * r);
+      ++quadPixels;
+    }
+  REQUIRE(quadPixels >= 400);
+  // The path tracer computes occlusion itself and ignores the texture.
+  render::PathTracerSettings path = oneBounce();
+  auto lit = litQuadScene(material);
+  auto litOccluded = lit;
+  litOccluded.materials = occluded.materials;
+  litOccluded.textures = occluded.textures;
+  litOccluded.textureRefs = occluded.textureRefs;
+  REQUIRE(relativeMaxDifference(test::renderScene(*device, litOccluded, kSize, kSize, 4, path),
+                                test::renderScene(*device, lit, kSize, kSize, 4, path)) < 1e-6f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
