@@ -41,7 +41,9 @@ constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFF
 }  // namespace
 
 bool alphaMasked(const scene::Material& m) {
-  return m.alphaMode == scene::AlphaMode::Mask && m.baseColorTexture != scene::Material::kNoTexture;
+  const bool textured = m.baseColorTexture != scene::Material::kNoTexture;
+  if (m.alphaMode == scene::AlphaMode::Mask) return textured;
+  return m.alphaMode == scene::AlphaMode::Blend && (textured || m.alpha < 1.0f);
 }
 
 uint32_t deriveMaterialEffects(const scene::Material& material) { return materialEffectsOf(material); }

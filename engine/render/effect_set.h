@@ -20,10 +20,11 @@ uint32_t deriveEffects(const scene::Scene& scene);
 // those follow from emission, which deriveEffects adds).
 uint32_t deriveMaterialEffects(const scene::Material& material);
 
-// Whether a material's surface is cut per texel by its base colour's alpha
-// (alphaMode MASK with a base-colour texture): its meshes are non-opaque
-// geometry and the triangles' hit group gets the alpha any-hit shader. MASK
-// without a texture is all or nothing, decided when the scene is loaded.
+// Whether a material's surface is cut by its base colour's alpha: alphaMode
+// MASK with a base-colour texture (per texel), or BLEND with alpha below 1
+// anywhere (stochastic coverage). Its meshes are non-opaque geometry and the
+// triangles' hit group gets the alpha any-hit shader. MASK without a texture
+// is all or nothing, decided when the scene is loaded.
 bool alphaMasked(const scene::Material& material);
 
 // Names of the bits in `effects`, in bit order ("area-lights", "sheen", ...).

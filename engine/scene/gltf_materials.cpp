@@ -51,9 +51,9 @@ void convertAlpha(const tinygltf::Material& src, float alpha, const std::string&
     // With a texture the renderer cuts per texel (alpha factor x texel alpha).
     out.invisible = !textured && alpha < m.alphaCutoff;
   } else if (src.alphaMode == "BLEND") {
+    // Rendered as stochastic coverage (alpha is the chance a ray stops), so
+    // the image converges to the glTF "over" blend of surface and background.
     m.alphaMode = AlphaMode::Blend;
-    if (alpha < 1.0f || textured)
-      warnings.push_back(fmt::format("{}: alphaMode BLEND is rendered opaque", where));
   } else if (src.alphaMode != "OPAQUE") {
     warnings.push_back(fmt::format("{}: alphaMode '{}' is not a glTF alpha mode; OPAQUE used",
                                    where, src.alphaMode));

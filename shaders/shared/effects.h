@@ -16,7 +16,7 @@
 #define PT_EFFECT_CLEARCOAT 16     // clearcoat > 0
 #define PT_EFFECT_SHEEN 32         // sheen > 0
 #define PT_EFFECT_TEXTURES 64      // material textures: base colour, metallic-roughness, emission, normal maps
-#define PT_EFFECT_ALPHA_MASK 128   // alphaMode MASK with a base-colour texture: an any-hit shader cuts texels away
+#define PT_EFFECT_ALPHA_MASK 128   // alphaMode MASK (textured) or BLEND: an any-hit shader cuts the surface
 #define PT_EFFECT_COUNT 8
 #define PT_EFFECTS_ALL 255
 

@@ -74,7 +74,7 @@ namespace penumbra::gpu {
 // MaterialData.textures2.y: glTF alpha modes.
 #define MATERIAL_ALPHA_OPAQUE 0u
 #define MATERIAL_ALPHA_MASK 1u
-#define MATERIAL_ALPHA_BLEND 2u  // rendered opaque
+#define MATERIAL_ALPHA_BLEND 2u  // stochastic coverage: a ray stops with probability alpha
 
 // A MaterialData texture slot without a texture.
 #define PT_NO_TEXTURE 0xffffffffu

@@ -4,6 +4,7 @@
 // no screen-space derivatives and the scene's textures have no mipmaps).
 #ifndef PENUMBRA_TEXTURES_HLSLI
 #define PENUMBRA_TEXTURES_HLSLI
+#include "rng.hlsli"
 
 // The texture coordinates a reference reads: its set (TEXCOORD_0 in uv.xy,
 // TEXCOORD_1 in uv.zw) through its KHR_texture_transform.
@@ -36,6 +37,34 @@ float materialAlpha(MaterialData d, float4 uv) {
   float alpha = d.textureParams.z;
   if (d.textures.x != PT_NO_TEXTURE) alpha *= sampleTextureRef(d.textures.x, uv).w;
   return alpha;
+}
+
+// Whether the alpha any-hit shader keeps a candidate hit: MASK compares alpha
+// with the cutoff; BLEND keeps it with probability alpha (`u` uniform in
+// [0, 1), drawn per ray and primitive by alphaCoverageRandom), so averaged
+// over samples the surface covers alpha of what lies behind it.
+bool alphaKeepsHit(MaterialData d, float4 uv, float u) {
+  if (d.textures2.y == MATERIAL_ALPHA_MASK) return materialAlpha(d, uv) >= d.textureParams.w;
+  if (d.textures2.y == MATERIAL_ALPHA_BLEND) return u < materialAlpha(d, uv);
+  return true;
+}
+
+// A uniform number for BLEND's coverage decision, the same whenever the same
+// ray meets the same primitive (an any-hit shader may run twice for one
+// candidate) and independent between samples: a hash of the pixel, the
+// samples accumulated before this frame, the seed, the ray and the primitive.
+float alphaCoverageRandom(uint2 pixel, uint samplesBefore, uint seed, float3 origin, float3 direction,
+                          uint instance, uint primitive) {
+  uint h = pcgHash(pixel.x + pcgHash(pixel.y + pcgHash(samplesBefore + pcgHash(seed))));
+  h = pcgHash(h ^ asuint(origin.x));
+  h = pcgHash(h ^ asuint(origin.y));
+  h = pcgHash(h ^ asuint(origin.z));
+  h = pcgHash(h ^ asuint(direction.x));
+  h = pcgHash(h ^ asuint(direction.y));
+  h = pcgHash(h ^ asuint(direction.z));
+  h = pcgHash(h ^ instance);
+  h = pcgHash(h ^ primitive);
+  return float(h >> 8u) * (1.0 / 16777216.0);
 }
 
 // The occlusion texture's factor (1 without): 1 + strength * (r - 1).

@@ -589,3 +589,95 @@ TEST_CASE("textures: an occlusion texture darkens Whitted's ambient term only", 
                                 test::renderScene(*device, lit, kSize, kSize, 4, path)) < 1e-6f);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
+
+TEST_CASE("textures: alpha BLEND covers alpha of what lies behind, for camera and shadow rays",
+          "[render][gpu][textures]") {
+  auto device = test::makeTestDevice();
+  // Camera rays: a black BLEND quad in front of an emitter of radiance 1.
+  float alpha = 0.0f;
+  scene::Scene s;
+  s.name = "blend in front of an emitter";
+  auto blend = scene::Material::lambert("blend", glm::vec3(0.0f));
+  blend.alphaMode = scene::AlphaMode::Blend;
+  s.materials = {blend, scene::Material::lambert("emitter", glm::vec3(0.0f), glm::vec3(1.0f))};
+  SECTION("alpha from a base-colour texture") {
+    s.materials[0].baseColorTexture = 0;
+    s.textures = {makeTexture(2, 2, true, [](uint32_t, uint32_t) { return glm::u8vec4(90, 90, 90, 64); })};
+    s.textureRefs = {nearestRef()};
+    alpha = 64.0f / 255.0f;
+  }
+  SECTION("alpha from the factor alone") {
+    s.materials[0].alpha = 0.6f;
+    alpha = 0.6f;
+  }
+  s.meshes = {texturedQuad(0), texturedQuad(1, -1.0f, 3.0f)};
+  s.instances = {{0, glm::mat4(1.0f)}, {1, glm::mat4(1.0f)}};
+  s.camera = frontCamera();
+  const uint32_t spp = 64;
+  const auto img = test::renderScene(*device, s, 16, 16, spp, directOnly());
+  // Pixels well inside the quad (it spans the middle 80 %): each sample sees
+  // the emitter with probability 1 - alpha.
+  double sum = 0;
+  uint32_t n = 0;
+  for (uint32_t y = 4; y < 12; ++y)
+    for (uint32_t x = 4; x < 12; ++x, ++n) {
+      const float v = img.pixel(x, y)[1];
+      INFO("pixel " << x << "," << y << " " << v);
+      // Per pixel: binomial(64, 1 - alpha) / 64, within 5 standard deviations.
+      const double sd = std::sqrt(alpha * (1.0 - alpha) / spp);
+      REQUIRE(std::abs(v - (1.0 - alpha)) < 5.0 * sd);
+      sum += v;
+    }
+  // Over 64 pixels: 4096 samples, standard deviation < 0.008.
+  INFO("mean " << sum / n << " expected " << 1.0 - alpha);
+  REQUIRE(std::abs(sum / n - (1.0 - alpha)) < 0.03);
+
+  // Shadow rays: a point light over a floor, the BLEND quad between them,
+  // seen from the side (camera rays never cross it). Where the floor's shadow
+  // ray crosses the quad it is lit (1 - alpha) as bright as without the quad.
+  auto shadowScene = [&](bool withQuad) {
+    scene::Scene f;
+    f.name = withQuad ? "blend shadow" : "no blocker";
+    f.materials = {s.materials[0], scene::Material::lambert("floor", glm::vec3(0.8f))};
+    f.textures = s.textures;
+    f.textureRefs = s.textureRefs;
+    f.meshes = {texturedQuad(1, 0.0f, 3.0f)};
+    if (withQuad) f.meshes.push_back(texturedQuad(0, 1.0f, 0.4f));
+    for (uint32_t m = 0; m < f.meshes.size(); ++m) f.instances.push_back({m, glm::mat4(1.0f)});
+    scene::PointLight light;
+    light.position = {0.0f, 0.0f, 2.0f};
+    light.intensity = glm::vec3(4.0f);
+    f.pointLights = {light};
+    f.camera.position = {0.0f, -3.0f, 0.5f};
+    f.camera.forward = glm::normalize(glm::vec3(0.0f, 3.0f, -0.5f));
+    f.camera.up = {0, 0, 1};
+    f.camera.verticalFovDegrees = 40.0f;
+    return f;
+  };
+  const auto blocked = shadowScene(true);
+  const auto shadowed = test::renderScene(*device, blocked, 24, 24, spp, oneBounce());
+  const auto open = test::renderScene(*device, shadowScene(false), 24, 24, spp, oneBounce());
+  double ratioSum = 0;
+  uint32_t inShadow = 0;
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 24; ++x) {
+      bool allBehindQuad = true;
+      for (glm::vec2 film : test::pixelFootprint(x, y)) {
+        const glm::dvec3 o(blocked.camera.position);
+        const glm::dvec3 d = test::cameraRayDirection(blocked.camera, glm::dvec2(film), 24, 24);
+        if (d.z >= 0.0) { allBehindQuad = false; break; }
+        const glm::dvec3 floor = o + d * (-o.z / d.z);
+        // The shadow ray to (0, 0, 2) crosses z = 1 half way.
+        const glm::dvec2 crossing = glm::dvec2(floor) * 0.5;
+        if (std::abs(crossing.x) > 0.35 || std::abs(crossing.y) > 0.35) allBehindQuad = false;
+      }
+      if (!allBehindQuad) continue;
+      REQUIRE(open.pixel(x, y)[1] > 0.0f);
+      ratioSum += shadowed.pixel(x, y)[1] / open.pixel(x, y)[1];
+      ++inShadow;
+    }
+  INFO("pixels in the blend's shadow " << inShadow << ", mean ratio " << ratioSum / inShadow);
+  REQUIRE(inShadow >= 20);
+  REQUIRE(std::abs(ratioSum / inShadow - (1.0 - alpha)) < 0.04);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
