@@ -96,6 +96,8 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   scene::Scene scene = scene::loadScene(job.scene);
   if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
   if (!job.vary.empty() || !job.set.empty()) scene::changeMaterialRow(scene, job.vary, job.set);
+  // The viewer's Material-menu edits, on top of the row as the viewer had it.
+  render::applyMaterialOverrides(scene, job.materials, o.settingsFile);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
     return 0;

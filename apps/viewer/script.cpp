@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "render/render_job.h"
 #include "util/error.h"
 
 namespace penumbra::viewer {
@@ -15,7 +16,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
   struct Shape {
     const char* name;
     Kind kind;
-    int numbers;  // numeric arguments; -1: free-form
+    int numbers;  // numeric arguments, first; -1: after the words, one or more
     int words;    // free-form arguments
   };
   static const Shape kShapes[] = {{"wait-frames", Kind::WaitFrames, 1, 0},
@@ -26,6 +27,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
                                   {"set", Kind::Set, 0, 2},
                                   {"scene", Kind::Scene, 0, 1},
                                   {"window-size", Kind::WindowSize, 2, 0},
+                                  {"material", Kind::Material, -1, 2},
                                   {"screenshot", Kind::Screenshot, 0, 1},
                                   {"quit", Kind::Quit, 0, 0}};
   std::vector<ScriptCommand> commands;
@@ -45,11 +47,15 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
       throw Error(fmt::format("{}:{}: {}", source, number, what));
     };
     if (!shape) fail(fmt::format("unknown command '{}'", name));
-    const size_t expected = size_t(shape->numbers + shape->words);
-    if (args.size() != expected)
-      fail(fmt::format("'{}' takes {} argument(s), got {}", name, expected, args.size()));
+    const bool variadic = shape->numbers < 0;  // the words, then one or more numbers
+    const size_t expected = size_t(variadic ? shape->words + 1 : shape->numbers + shape->words);
+    if (variadic ? args.size() < expected : args.size() != expected)
+      fail(fmt::format("'{}' takes {}{} argument(s), got {}", name, expected,
+                       variadic ? " or more" : "", args.size()));
     ScriptCommand command{shape->kind, args, {}, number};
-    for (int i = 0; i < shape->numbers; ++i) {
+    const size_t firstNumber = variadic ? size_t(shape->words) : 0;
+    const size_t endNumber = variadic ? args.size() : size_t(shape->numbers);
+    for (size_t i = firstNumber; i < endNumber; ++i) {
       size_t used = 0;
       float value = 0;
       try {
@@ -65,6 +71,16 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
          shape->kind == Kind::WindowSize) &&
         (command.numbers[0] < 0 || command.numbers[0] != std::floor(command.numbers[0])))
       fail(fmt::format("'{}' needs a whole number >= 0", name));
+    // The parameter and its value count are known now; the material only
+    // once the scene is loaded.
+    if (shape->kind == Kind::Material) {
+      scene::Material probe;
+      try {
+        render::setEditableParameter(probe, args[1], command.numbers);
+      } catch (const Error& e) {
+        fail(e.what());
+      }
+    }
     commands.push_back(std::move(command));
   }
   return commands;

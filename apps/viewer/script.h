@@ -9,6 +9,9 @@
 //   set NAME VALUE         a setting, as in viewer_settings.h ("set spp-per-frame 4")
 //   scene NAME|PATH        load a built-in scene or a scene file
 //   window-size W H        resize the window (the swapchain follows)
+//   material NAME PARAM V  edit a material as the Material menu does: PARAM is
+//                          baseColor (V = R G B) or a Disney/Phong parameter
+//                          ("material white roughness 0.2"); recorded in screenshots
 //   screenshot PATH        .exr (linear) or .png (as displayed), with PATH's .json beside it
 //   quit                   close the viewer (exit status 0)
 #include <string>
@@ -26,12 +29,13 @@ struct ScriptCommand {
     Set,
     Scene,
     WindowSize,
+    Material,
     Screenshot,
     Quit
   };
   Kind kind;
   std::vector<std::string> args;  // as written; numbers already checked
-  std::vector<float> numbers;     // move/turn: the values; wait-*: the count
+  std::vector<float> numbers;     // move/turn/material: the values; wait-*: the count
   int line = 0;
 };
 

@@ -97,7 +97,8 @@ void Viewer::loadScene(const std::string& nameOrPath) {
   sceneName_ = nameOrPath;
   vary_ = scene_.materialRow ? scene_.materialRow->vary : "";
   set_.clear();
-  materialsEdited_ = false;
+  loadedMaterials_ = scene_.materials;
+  loadedRow_ = scene_.materialRow;
   selectedMaterial_ = 0;
   camera_ = std::make_unique<CameraController>(scene_.camera, speedForScene(scene_));
   std::snprintf(scenePath_, sizeof(scenePath_), "%s", nameOrPath.c_str());
@@ -231,6 +232,9 @@ bool Viewer::stepScript() {
         case Kind::WindowSize:
           glfwSetWindowSize(window_.handle(), int(c.numbers[0]), int(c.numbers[1]));
           break;
+        case Kind::Material:
+          editMaterial(c.args[0], c.args[1], c.numbers);
+          break;
         case Kind::Screenshot:
           takeScreenshot(c.args[0]);
           break;
@@ -257,22 +261,39 @@ void Viewer::takeScreenshot(const std::string& path) {
   }
   const std::string record = std::filesystem::path(path).replace_extension(".json").string();
   const RenderSize size{tracer_->width(), tracer_->height()};
-  render::saveRenderJob(record, makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(),
-                                              size, tracer_->accumulatedSamples()));
+  // The record holds the scene by name, the material-test row as --vary/--set
+  // and the Material menu's edits as overrides on top of both.
+  render::RenderJob job = makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(), size,
+                                        tracer_->accumulatedSamples());
+  job.materials = render::materialOverrides(uneditedMaterials(), scene_.materials);
+  render::saveRenderJob(record, job);
   statusLine_ =
       fmt::format("saved {} and {} ({} spp)", path, record, tracer_->accumulatedSamples());
-  // The record holds the scene by name and the material-test row as
-  // --vary/--set; other material edits are not in it.
-  if (materialsEdited_) {
-    statusLine_ += "; material edits are not in the record";
-    log::warning(
-        "{}: material edits made in the viewer are not recorded; penumbra render "
-        "--settings renders the scene's own materials",
-        record);
-  }
   fmt::print("screenshot: {} ({}x{}, {} spp), settings {}\n", path, size.width, size.height,
              tracer_->accumulatedSamples(), record);
   std::fflush(stdout);
+}
+
+void Viewer::editMaterial(const std::string& name, const std::string& parameter,
+                          const std::vector<float>& values) {
+  auto& materials = scene_.materials;
+  const auto found = std::find_if(materials.begin(), materials.end(),
+                                  [&](const scene::Material& m) { return m.name == name; });
+  if (found == materials.end())
+    throw Error(fmt::format("scene '{}' has no material '{}'", sceneName_, name));
+  render::setEditableParameter(*found, parameter, values);
+  selectedMaterial_ = int(found - materials.begin());
+  materialsChanged();  // resets accumulation
+}
+
+std::vector<scene::Material> Viewer::uneditedMaterials() const {
+  scene::Scene loaded;
+  loaded.name = scene_.name;
+  loaded.materials = loadedMaterials_;
+  loaded.materialRow = loadedRow_;
+  // As penumbra render does: the row's --vary/--set on the scene as loaded.
+  if (!vary_.empty() || !set_.empty()) scene::changeMaterialRow(loaded, vary_, set_);
+  return loaded.materials;
 }
 
 void Viewer::renderFrame() {

@@ -61,6 +61,12 @@ class Viewer {
   void drawStats();
   void takeScreenshot(const std::string& path);
   void materialsChanged();
+  // Sets one parameter of the named material, as the Material menu would.
+  void editMaterial(const std::string& name, const std::string& parameter,
+                    const std::vector<float>& values);
+  // The scene's materials as loaded with vary_/set_ applied, without the
+  // Material menu's edits.
+  std::vector<scene::Material> uneditedMaterials() const;
 
   ViewerOptions options_;
   Window window_;
@@ -74,8 +80,11 @@ class Viewer {
   uint64_t frameNumber_ = 0;
 
   std::string sceneName_;
-  std::string vary_, set_;        // material-test row edits, as --vary/--set
-  bool materialsEdited_ = false;  // by the Material menu, beyond vary_/set_
+  std::string vary_, set_;  // material-test row edits, as --vary/--set
+  // The materials and row as loaded: with vary_/set_ applied, what a
+  // screenshot's record compares the Material menu's edits against.
+  std::vector<scene::Material> loadedMaterials_;
+  std::optional<scene::MaterialRow> loadedRow_;
   scene::Scene scene_;
   std::unique_ptr<render::PathTracer> tracer_;
   ViewerSettings settings_;

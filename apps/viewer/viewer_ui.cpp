@@ -198,10 +198,7 @@ void Viewer::drawMaterialMenu() {
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");
-  if (changed) {
-    materialsEdited_ = true;
-    materialsChanged();
-  }
+  if (changed) materialsChanged();
 
   if (scene_.materialRow) {
     ImGui::Separator();

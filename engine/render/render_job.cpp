@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -31,6 +33,45 @@ constexpr Named<SamplingStrategy> kStrategies[] = {{SamplingStrategy::Uniform, "
                                                    {SamplingStrategy::Mis, "mis"}};
 constexpr Named<MisHeuristic> kHeuristics[] = {{MisHeuristic::Power, "power"},
                                                {MisHeuristic::Balance, "balance"}};
+constexpr Named<scene::MaterialModel> kModels[] = {{scene::MaterialModel::Disney, "disney"},
+                                                   {scene::MaterialModel::Lambert, "lambert"},
+                                                   {scene::MaterialModel::Phong, "phong"}};
+
+// The Material menu's scalar parameters (the Disney ones, then Phong's).
+struct FloatField {
+  const char* name;
+  float scene::Material::*field;
+};
+constexpr FloatField kFloatFields[] = {{"metallic", &scene::Material::metallic},
+                                       {"roughness", &scene::Material::roughness},
+                                       {"anisotropic", &scene::Material::anisotropic},
+                                       {"specular", &scene::Material::specular},
+                                       {"specularTint", &scene::Material::specularTint},
+                                       {"sheen", &scene::Material::sheen},
+                                       {"sheenTint", &scene::Material::sheenTint},
+                                       {"clearcoat", &scene::Material::clearcoat},
+                                       {"clearcoatGloss", &scene::Material::clearcoatGloss},
+                                       {"specTrans", &scene::Material::specTrans},
+                                       {"ior", &scene::Material::ior},
+                                       {"subsurface", &scene::Material::subsurface},
+                                       {"ks", &scene::Material::ks},
+                                       {"exponent", &scene::Material::exponent},
+                                       {"reflectivity", &scene::Material::reflectivity},
+                                       {"transparency", &scene::Material::transparency}};
+
+bool sameEditableParameters(const scene::Material& a, const scene::Material& b) {
+  if (a.model != b.model || a.baseColor != b.baseColor || a.thin != b.thin) return false;
+  for (const auto& f : kFloatFields)
+    if (a.*f.field != b.*f.field) return false;
+  return true;
+}
+
+void copyEditableParameters(const scene::Material& from, scene::Material& to) {
+  to.model = from.model;
+  to.baseColor = from.baseColor;
+  to.thin = from.thin;
+  for (const auto& f : kFloatFields) to.*f.field = from.*f.field;
+}
 
 template <class Enum, size_t N>
 const char* nameOf(const Named<Enum> (&table)[N], Enum value) {
@@ -74,6 +115,14 @@ class Reader {
     if (!value) fail(key, fmt::format("'{}' is not a known value", name));
     out = *value;
   }
+  // A number that fits a float: the renderer cannot use NaN or infinity.
+  float finite(const json& value, const std::string& key) const {
+    if (!value.is_number()) fail(key, "must be a number");
+    const double number = value.get<double>();
+    if (!std::isfinite(number) || std::abs(number) > std::numeric_limits<float>::max())
+      fail(key, "must be a finite number");
+    return float(number);
+  }
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     throw Error(fmt::format("{}: \"{}\" {}", source_, key, what));
   }
@@ -82,6 +131,47 @@ class Reader {
   const json& doc_;
   const std::string& source_;
 };
+
+json overrideToJson(const MaterialOverride& o) {
+  const scene::Material& m = o.material;
+  json j = {{"index", o.index},
+            {"name", m.name},
+            {"model", materialModelName(m.model)},
+            {"baseColor", toJson(m.baseColor)},
+            {"thin", m.thin}};
+  for (const auto& f : kFloatFields) j[f.name] = m.*f.field;
+  return j;
+}
+
+// Every field is required: a partial override would leave the rest to
+// whatever the scene holds, which the viewer's image did not show.
+MaterialOverride overrideFromJson(const json& j, const std::string& key, const Reader& r) {
+  if (!j.is_object()) r.fail(key, "must be an object");
+  auto field = [&](const char* name) -> const json& {
+    if (!j.contains(name)) r.fail(key + "." + name, "is missing");
+    return j.at(name);
+  };
+  MaterialOverride o;
+  const json& index = field("index");
+  if (!index.is_number_unsigned() || index.get<uint64_t>() > std::numeric_limits<uint32_t>::max())
+    r.fail(key + ".index", "must be a whole number >= 0");
+  o.index = index.get<uint32_t>();
+  scene::Material& m = o.material;
+  if (!field("name").is_string()) r.fail(key + ".name", "must be a string");
+  m.name = j.at("name").get<std::string>();
+  const json& model = field("model");
+  std::optional<scene::MaterialModel> parsed;
+  if (model.is_string()) parsed = parseMaterialModel(model.get<std::string>());
+  if (!parsed) r.fail(key + ".model", "must be one of disney, lambert, phong");
+  m.model = *parsed;
+  const json& color = field("baseColor");
+  if (!color.is_array() || color.size() != 3) r.fail(key + ".baseColor", "must be an array of 3 numbers");
+  for (int c = 0; c < 3; ++c) m.baseColor[c] = r.finite(color[size_t(c)], key + ".baseColor");
+  for (const auto& f : kFloatFields) m.*f.field = r.finite(field(f.name), key + "." + f.name);
+  if (!field("thin").is_boolean()) r.fail(key + ".thin", "must be true or false");
+  m.thin = j.at("thin").get<bool>();
+  return o;
+}
 
 }  // namespace
 
@@ -102,6 +192,66 @@ std::optional<SamplingStrategy> parseStrategy(std::string_view name) {
 }
 std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
   return parseName(kHeuristics, name);
+}
+
+const char* materialModelName(scene::MaterialModel model) {
+  return nameOf(kModels, model);
+}
+std::optional<scene::MaterialModel> parseMaterialModel(std::string_view name) {
+  return parseName(kModels, name);
+}
+
+const std::vector<std::string>& editableMaterialParameters() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const auto& f : kFloatFields) list.push_back(f.name);
+    return list;
+  }();
+  return names;
+}
+
+void setEditableParameter(scene::Material& material, std::string_view name,
+                          const std::vector<float>& values) {
+  const size_t expected = name == "baseColor" ? 3 : 1;
+  float* target = name == "baseColor" ? &material.baseColor.x : nullptr;
+  for (const auto& f : kFloatFields)
+    if (name == f.name) target = &(material.*f.field);
+  if (!target) {
+    std::string known = "baseColor";
+    for (const auto& f : kFloatFields) known += std::string(", ") + f.name;
+    throw Error(fmt::format("unknown material parameter '{}' ({})", name, known));
+  }
+  if (values.size() != expected)
+    throw Error(fmt::format("material parameter '{}' takes {} number(s), got {}", name, expected,
+                            values.size()));
+  if (expected == 3)
+    material.baseColor = {values[0], values[1], values[2]};
+  else
+    *target = values[0];
+}
+
+std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Material>& loaded,
+                                                const std::vector<scene::Material>& edited) {
+  std::vector<MaterialOverride> overrides;
+  for (size_t i = 0; i < edited.size() && i < loaded.size(); ++i)
+    if (!sameEditableParameters(loaded[i], edited[i])) overrides.push_back({uint32_t(i), edited[i]});
+  return overrides;
+}
+
+void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverride>& overrides,
+                            const std::string& source) {
+  for (size_t i = 0; i < overrides.size(); ++i) {
+    const MaterialOverride& o = overrides[i];
+    if (o.index >= scene.materials.size())
+      throw Error(fmt::format("{}: \"materials[{}].index\" {} is out of range: scene '{}' has {} materials",
+                              source, i, o.index, scene.name, scene.materials.size()));
+    scene::Material& target = scene.materials[o.index];
+    if (target.name != o.material.name)
+      throw Error(fmt::format(
+          "{}: \"materials[{}].name\" '{}' does not match material {} of scene '{}' ('{}')", source,
+          i, o.material.name, o.index, scene.name, target.name));
+    copyEditableParameters(o.material, target);
+  }
 }
 
 std::string renderJobToJson(const RenderJob& job) {
@@ -133,6 +283,11 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["exposure"] = job.toneMapping.exposure;
   doc["toneMapping"] = toneMapOperatorName(job.toneMapping.toneOperator);
   doc["allEffects"] = job.allEffects;
+  if (!job.materials.empty()) {
+    json materials = json::array();
+    for (const auto& o : job.materials) materials.push_back(overrideToJson(o));
+    doc["materials"] = materials;
+  }
   // nlohmann writes floats with max_digits10 digits: they read back exactly.
   return doc.dump(2) + "\n";
 }
@@ -186,6 +341,12 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
   r.read("exposure", job.toneMapping.exposure);
   r.readEnum("toneMapping", job.toneMapping.toneOperator, &parseToneMapOperator);
   r.read("allEffects", job.allEffects);
+  if (doc.contains("materials")) {
+    const json& materials = doc["materials"];
+    if (!materials.is_array()) r.fail("materials", "must be an array");
+    for (size_t i = 0; i < materials.size(); ++i)
+      job.materials.push_back(overrideFromJson(materials[i], fmt::format("materials[{}]", i), r));
+  }
   if (job.width < 1 || job.width > 16384 || job.height < 1 || job.height > 16384)
     r.fail("width/height", "must be 1..16384");
   if (job.spp < 1) r.fail("spp", "must be at least 1");

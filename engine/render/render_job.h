@@ -11,16 +11,41 @@
 //     "integrator": "path", "strategy": "mis", "misHeuristic": "power",
 //     "maxDepth": 8, "russianRoulette": true, "rouletteStartDepth": 3,
 //     "radianceClamp": 0, "seed": 0,
-//     "exposure": 1, "toneMapping": "clamp", "allEffects": false }
+//     "exposure": 1, "toneMapping": "clamp", "allEffects": false,
+//     "materials": [ { "index": 0, "name": "white", "model": "lambert",
+//                      "baseColor": [r,g,b], "metallic": 0, "roughness": 0.5,
+//                      "anisotropic": 0, "specular": 0.5, "specularTint": 0,
+//                      "sheen": 0, "sheenTint": 0.5, "clearcoat": 0,
+//                      "clearcoatGloss": 1, "specTrans": 0, "ior": 1.5,
+//                      "subsurface": 0, "thin": false, "ks": 0, "exponent": 32,
+//                      "reflectivity": 0, "transparency": 0 } ] }
 // Floats are written with enough digits to read back bit-identical.
+//
+// "materials" records the viewer's Material-menu edits: every material whose
+// editable parameters differ from the scene as loaded with vary/set applied,
+// by index into the scene's materials. It is absent when nothing was edited.
+// The name is checked when the record is applied, so a record applied to
+// another scene fails instead of recolouring the wrong objects. Emission is
+// not editable (emitters are tabulated when the scene loads), and textures and
+// alpha stay the scene's.
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "render/path_tracer.h"
 #include "render/tone_mapping.h"
 #include "scene/scene.h"
 
 namespace penumbra::render {
+
+// One edited material. `material` holds the edited values, but only its
+// editable parameters (model, baseColor, the Disney and Phong parameters) are
+// recorded and applied; its name identifies it.
+struct MaterialOverride {
+  uint32_t index = 0;  // into scene.materials
+  scene::Material material;
+};
 
 struct RenderJob {
   std::string scene = "cornell-box";    // built-in name or scene file path
@@ -32,6 +57,7 @@ struct RenderJob {
   PathTracerSettings settings;
   ToneMapping toneMapping;
   bool allEffects = false;
+  std::vector<MaterialOverride> materials;  // applied after vary/set
 };
 
 const char* integratorName(Integrator integrator);
@@ -40,6 +66,26 @@ const char* misHeuristicName(MisHeuristic heuristic);
 std::optional<Integrator> parseIntegrator(std::string_view name);
 std::optional<SamplingStrategy> parseStrategy(std::string_view name);
 std::optional<MisHeuristic> parseMisHeuristic(std::string_view name);
+
+const char* materialModelName(scene::MaterialModel model);
+std::optional<scene::MaterialModel> parseMaterialModel(std::string_view name);
+
+// The scalar parameters the viewer can edit, by their record (and scene file)
+// names; baseColor is the one vector.
+const std::vector<std::string>& editableMaterialParameters();
+// Sets an editable parameter: 3 values for baseColor, 1 otherwise. Throws
+// penumbra::Error naming the parameter on an unknown name or a bad count.
+void setEditableParameter(scene::Material& material, std::string_view name,
+                          const std::vector<float>& values);
+// The overrides that turn `loaded` into `edited` (same materials, same order):
+// one per material whose editable parameters differ.
+std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Material>& loaded,
+                                                const std::vector<scene::Material>& edited);
+// Copies each override's editable parameters onto the scene's material,
+// keeping its emission, textures and alpha. Throws penumbra::Error naming
+// `source` and the field if an index is out of range or the name differs.
+void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverride>& overrides,
+                            const std::string& source);
 
 std::string renderJobToJson(const RenderJob& job);
 // Throws penumbra::Error naming `source` and the field on a malformed document.

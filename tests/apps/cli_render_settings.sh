@@ -25,4 +25,18 @@ echo '{"format": "penumbra-render", "version": 1, "strategy": "best"}' > "$work/
 if "$penumbra" render --settings "$work/bad.json" --out "$work/c.exr" 2>"$work/err"; then exit 1; fi
 grep -q "bad.json: \"strategy\" 'best' is not a known value" "$work/err"
 [ ! -e "$work/c.exr" ]
+# A material override names its material: applied to another scene (or a
+# changed one) the record fails instead of editing the wrong material.
+cat > "$work/other.json" <<JSON
+{ "format": "penumbra-render", "version": 1, "scene": "cornell-box", "width": 8, "height": 8,
+  "materials": [ { "index": 0, "name": "marble", "model": "disney", "baseColor": [1, 0, 0],
+    "metallic": 0, "roughness": 0.5, "anisotropic": 0, "specular": 0.5, "specularTint": 0,
+    "sheen": 0, "sheenTint": 0.5, "clearcoat": 0, "clearcoatGloss": 1, "specTrans": 0,
+    "ior": 1.5, "subsurface": 0, "thin": false, "ks": 0, "exponent": 32, "reflectivity": 0,
+    "transparency": 0 } ] }
+JSON
+if "$penumbra" render --settings "$work/other.json" --out "$work/d.exr" 2>"$work/err"; then exit 1; fi
+grep -q "other.json: \"materials\[0\].name\" 'marble' does not match material 0 of scene" "$work/err"
+[ "$(wc -l < "$work/err")" -eq 1 ]
+[ ! -e "$work/d.exr" ]
 echo "render --settings ok"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The viewer end to end under a virtual X server (Xvfb) on lavapipe, with the
 # validation layer: a scripted session moves the camera, changes settings,
-# waits for 16 samples and saves a screenshot with its settings record;
-# `penumbra render --settings` must reproduce that screenshot.
+# waits for 16 samples and saves a screenshot with its settings record, then
+# edits two materials as the Material menu does and saves another;
+# `penumbra render --settings` must reproduce that screenshot, edits included.
 #
 # Tolerance: both run the same frames (4 spp each, same sample indices, same
 # seed) on the same device, so the images are expected bit-identical; measured
@@ -26,6 +27,11 @@ move 0.05 0.02 0.1      # right, up, forward (metres)
 turn 4 -2               # degrees right, up
 wait-frames 2
 wait-samples 16
+screenshot $work/unedited.exr
+material white baseColor 0.9 0.5 0.2
+material green metallic 0.6
+wait-frames 2
+wait-samples 16
 screenshot $work/shot.exr
 set tonemap aces
 screenshot $work/shot.png
@@ -47,6 +53,15 @@ grep -q '"spp": 16' "$work/shot.json"
 grep -q '"sppPerFrame": 4' "$work/shot.json"
 grep -q '"maxDepth": 6' "$work/shot.json"
 grep -q '"toneMapping": "aces"' "$work/shot.json"
+# The edits are in the record, and only in the edited one.
+grep -q '"materials"' "$work/shot.json"
+grep -q '"name": "white"' "$work/shot.json"
+grep -q '"name": "green"' "$work/shot.json"
+grep -q '"metallic": 0.6' "$work/shot.json"
+if grep -q '"materials"' "$work/unedited.json"; then
+  echo "viewer test: a record without material edits lists materials" >&2
+  exit 1
+fi
 
 "$penumbra" render --settings "$work/shot.json" --validation --out "$work/headless.exr" | tee "$work/render.log"
 grep -q "96x64, 16 spp, seed 3" "$work/render.log"
@@ -57,6 +72,11 @@ grep -q "^within tolerance$" "$work/compare"
   --out "$work/unmoved.exr" >/dev/null
 if "$penumbra" compare "$work/shot.exr" "$work/unmoved.exr" --tolerance 1e-6 >/dev/null; then
   echo "viewer test: the scripted camera move did not change the image" >&2
+  exit 1
+fi
+# The edits changed the image: reproducing shot.exr needs them applied.
+if "$penumbra" compare "$work/shot.exr" "$work/unedited.exr" --tolerance 1e-6 >/dev/null; then
+  echo "viewer test: the scripted material edits did not change the image" >&2
   exit 1
 fi
 echo "viewer screenshot ok"

@@ -77,3 +77,94 @@ TEST_CASE("render job: malformed records name the file and the field", "[render]
           R"({"format":"penumbra-render","version":1,"camera":{"position":[1,2]}})", "d.json"),
       "d.json: \"camera.forward\" is missing");
 }
+
+TEST_CASE("render job: material overrides round trip bit for bit", "[render]") {
+  render::RenderJob job;
+  scene::Material m = scene::Material::lambert("white", glm::vec3(0.1f, 1.0f / 3.0f, 0.7f));
+  m.model = scene::MaterialModel::Phong;
+  m.roughness = 0.2f;
+  m.ior = 1.4142135f;
+  m.exponent = 77.7f;
+  m.transparency = 0.3f;
+  m.thin = true;
+  job.materials.push_back({2, m});
+  const std::string text = render::renderJobToJson(job);
+  CHECK_THAT(text, Catch::Matchers::ContainsSubstring("\"materials\""));
+  const auto back = render::renderJobFromJson(text, "round trip");
+  REQUIRE(back.materials.size() == 1);
+  const auto& o = back.materials[0];
+  CHECK(o.index == 2u);
+  CHECK(o.material.name == "white");
+  CHECK(o.material.model == scene::MaterialModel::Phong);
+  CHECK(o.material.baseColor == m.baseColor);
+  CHECK(o.material.roughness == 0.2f);
+  CHECK(o.material.ior == 1.4142135f);
+  CHECK(o.material.exponent == 77.7f);
+  CHECK(o.material.transparency == 0.3f);
+  CHECK(o.material.thin);
+  // No edits: no "materials" key, and a record without one (older) loads.
+  CHECK_THAT(render::renderJobToJson(render::RenderJob{}),
+             !Catch::Matchers::ContainsSubstring("materials"));
+  CHECK(render::renderJobFromJson(R"({"format":"penumbra-render","version":1})", "old.json")
+            .materials.empty());
+}
+
+TEST_CASE("render job: overrides apply the edited parameters and keep the rest", "[render]") {
+  scene::Scene loaded;
+  loaded.name = "box";
+  loaded.materials = {scene::Material::lambert("white", glm::vec3(0.8f)),
+                      scene::Material::lambert("red", glm::vec3(0.6f, 0.05f, 0.05f))};
+  loaded.materials[1].baseColorTexture = 4;
+  loaded.materials[1].alpha = 0.5f;
+  auto edited = loaded.materials;
+  render::setEditableParameter(edited[1], "baseColor", {0.2f, 0.3f, 0.4f});
+  render::setEditableParameter(edited[1], "metallic", {1.0f});
+  const auto overrides = render::materialOverrides(loaded.materials, edited);
+  REQUIRE(overrides.size() == 1);
+  CHECK(overrides[0].index == 1u);
+
+  scene::Scene box = loaded;
+  render::applyMaterialOverrides(box, overrides, "shot.json");
+  CHECK(box.materials[1].baseColor == glm::vec3(0.2f, 0.3f, 0.4f));
+  CHECK(box.materials[1].metallic == 1.0f);
+  CHECK(box.materials[1].baseColorTexture == 4u);
+  CHECK(box.materials[1].alpha == 0.5f);
+  CHECK(box.materials[0].baseColor == glm::vec3(0.8f));
+  REQUIRE_THROWS_WITH(render::setEditableParameter(edited[0], "baseColor", {1.0f}),
+                      "material parameter 'baseColor' takes 3 number(s), got 1");
+}
+
+TEST_CASE("render job: bad material overrides name the file and the field", "[render]") {
+  scene::Scene box;
+  box.name = "box";
+  box.materials = {scene::Material::lambert("white", glm::vec3(0.8f))};
+  render::MaterialOverride outOfRange{3, box.materials[0]};
+  REQUIRE_THROWS_WITH(render::applyMaterialOverrides(box, {outOfRange}, "e.json"),
+                      "e.json: \"materials[0].index\" 3 is out of range: scene 'box' has 1 materials");
+  render::MaterialOverride renamed{0, box.materials[0]};
+  renamed.material.name = "floor";
+  REQUIRE_THROWS_WITH(
+      render::applyMaterialOverrides(box, {renamed}, "f.json"),
+      "f.json: \"materials[0].name\" 'floor' does not match material 0 of scene 'box' ('white')");
+
+  // A valid override's JSON with one field broken at a time.
+  render::RenderJob job;
+  job.materials.push_back({0, box.materials[0]});
+  const std::string good = render::renderJobToJson(job);
+  auto broken = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    const size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+  };
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"roughness\": 1.0", "\"roughness\": 1e39"), "g.json"),
+                      "g.json: \"materials[0].roughness\" must be a finite number");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"metallic\": 0.0", "\"metallic\": null"), "h.json"),
+                      "h.json: \"materials[0].metallic\" must be a number");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"index\": 0", "\"index\": -1"), "i.json"),
+                      "i.json: \"materials[0].index\" must be a whole number >= 0");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"lambert\"", "\"glass\""), "j.json"),
+                      "j.json: \"materials[0].model\" must be one of disney, lambert, phong");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"thin\": false,", ""), "k.json"),
+                      "k.json: \"materials[0].thin\" is missing");
+}

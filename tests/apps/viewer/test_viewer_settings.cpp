@@ -134,3 +134,26 @@ TEST_CASE("viewer script: commands parse with their arguments, errors name the l
   REQUIRE_THROWS_WITH(viewer::parseScript("wait-frames 1.5\n", "s"),
                       "s:1: 'wait-frames' needs a whole number >= 0");
 }
+
+TEST_CASE("viewer script: material edits parse, errors name the line", "[viewer]") {
+  const auto script = viewer::parseScript(
+      "material white roughness 0.2\n"
+      "material red baseColor 0.9 0.5 0.25\n",
+      "m.script");
+  REQUIRE(script.size() == 2);
+  using Kind = viewer::ScriptCommand::Kind;
+  CHECK(script[0].kind == Kind::Material);
+  CHECK(script[0].args[0] == "white");
+  CHECK(script[0].args[1] == "roughness");
+  CHECK(script[0].numbers == std::vector<float>{0.2f});
+  CHECK(script[1].numbers == std::vector<float>{0.9f, 0.5f, 0.25f});
+  CHECK(script[1].line == 2);
+  REQUIRE_THROWS_WITH(viewer::parseScript("material white roughness\n", "s"),
+                      "s:1: 'material' takes 3 or more argument(s), got 2");
+  REQUIRE_THROWS_WITH(viewer::parseScript("\nmaterial white roughness x\n", "s"),
+                      "s:2: 'x' is not a number");
+  REQUIRE_THROWS_WITH(viewer::parseScript("material white baseColor 1 0\n", "s"),
+                      "s:1: material parameter 'baseColor' takes 3 number(s), got 2");
+  REQUIRE_THROWS_WITH(viewer::parseScript("material white shininess 3\n", "s"),
+                      Catch::Matchers::StartsWith("s:1: unknown material parameter 'shininess'"));
+}
