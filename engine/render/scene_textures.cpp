@@ -12,9 +12,12 @@ rhi::Filter filter(scene::TextureFilter f) {
 
 rhi::AddressMode addressMode(scene::TextureWrap w) {
   switch (w) {
-    case scene::TextureWrap::Repeat: return rhi::AddressMode::Repeat;
-    case scene::TextureWrap::MirroredRepeat: return rhi::AddressMode::MirroredRepeat;
-    case scene::TextureWrap::ClampToEdge: return rhi::AddressMode::ClampToEdge;
+    case scene::TextureWrap::Repeat:
+      return rhi::AddressMode::Repeat;
+    case scene::TextureWrap::MirroredRepeat:
+      return rhi::AddressMode::MirroredRepeat;
+    case scene::TextureWrap::ClampToEdge:
+      return rhi::AddressMode::ClampToEdge;
   }
   return rhi::AddressMode::Repeat;
 }

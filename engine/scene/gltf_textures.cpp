@@ -309,7 +309,7 @@ uint32_t TextureImporter::texture(int image, bool srgb, const std::string& where
 }
 
 const tinygltf::Image& TextureImporter::decodeBufferView(int image, const std::string& what,
-                                                        tinygltf::Image& out) const {
+                                                         tinygltf::Image& out) const {
   const int index = model_.images[size_t(image)].bufferView;
   if (size_t(index) >= model_.bufferViews.size())
     throw Error(fmt::format("{}: buffer view {} does not exist ({} buffer views)", what, index,

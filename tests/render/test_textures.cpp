@@ -88,8 +88,10 @@ scene::Scene emissiveTextureScene(scene::Texture texture, scene::TextureRef ref)
 
 float wrap(float t, scene::TextureWrap mode) {
   switch (mode) {
-    case scene::TextureWrap::Repeat: return t - std::floor(t);
-    case scene::TextureWrap::ClampToEdge: return std::clamp(t, 0.0f, 1.0f);
+    case scene::TextureWrap::Repeat:
+      return t - std::floor(t);
+    case scene::TextureWrap::ClampToEdge:
+      return std::clamp(t, 0.0f, 1.0f);
     case scene::TextureWrap::MirroredRepeat: {
       const float p = t - 2.0f * std::floor(t * 0.5f);  // [0, 2)
       return p <= 1.0f ? p : 2.0f - p;
@@ -127,10 +129,13 @@ uint32_t checkEmittedTexels(const image::Image& img, const scene::Scene& s) {
       std::optional<glm::uvec2> texel;
       bool uniform = true;
       for (glm::vec2 film : test::pixelFootprint(x, y)) {
-        const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), img.width, img.height);
-        const glm::dvec3 p = glm::dvec3(s.camera.position) + d * (-double(s.camera.position.z) / d.z);
+        const glm::dvec3 d =
+            test::cameraRayDirection(s.camera, glm::dvec2(film), img.width, img.height);
+        const glm::dvec3 p =
+            glm::dvec3(s.camera.position) + d * (-double(s.camera.position.z) / d.z);
         std::optional<glm::uvec2> here;
-        if (std::abs(p.x) < 0.98 && std::abs(p.y) < 0.98) here = nearestTexel(ref, tex, float(p.x), float(p.y));
+        if (std::abs(p.x) < 0.98 && std::abs(p.y) < 0.98)
+          here = nearestTexel(ref, tex, float(p.x), float(p.y));
         if (!here || (texel && *texel != *here)) uniform = false;
         texel = here;
       }
@@ -138,7 +143,8 @@ uint32_t checkEmittedTexels(const image::Image& img, const scene::Scene& s) {
       const uint8_t* c = &tex.rgba8[(size_t(texel->y) * tex.width + texel->x) * 4];
       for (int ch = 0; ch < 3; ++ch) {
         const float expected = srgbToLinear(c[ch] / 255.0f);
-        INFO("pixel " << x << "," << y << " texel " << texel->x << "," << texel->y << " channel " << ch);
+        INFO("pixel " << x << "," << y << " texel " << texel->x << "," << texel->y << " channel "
+                      << ch);
         REQUIRE(std::abs(img.pixel(x, y)[ch] - expected) <= 2e-3f + 2e-3f * expected);
       }
       ++checked;
@@ -177,7 +183,9 @@ TEST_CASE("textures: a nearest-filtered emissive texture shows each texel where 
     ref.transform1 = {0.0f, 2.0f};
     ref.sampler.wrapU = ref.sampler.wrapV = scene::TextureWrap::MirroredRepeat;
   }
-  SECTION("TEXCOORD_1") { ref.texCoord = 1; }
+  SECTION("TEXCOORD_1") {
+    ref.texCoord = 1;
+  }
 
   const auto s = emissiveTextureScene(texture, ref);
   const auto img = test::renderScene(*device, s, kSize, kSize, 4, directOnly());
@@ -235,8 +243,9 @@ scene::Material glossyMaterial() {
 
 }  // namespace
 
-TEST_CASE("textures: base-colour and metallic-roughness textures scale their factors channel by channel",
-          "[render][gpu][textures]") {
+TEST_CASE(
+    "textures: base-colour and metallic-roughness textures scale their factors channel by channel",
+    "[render][gpu][textures]") {
   auto device = test::makeTestDevice();
   scene::Material plain = glossyMaterial();
   scene::Material textured = plain;
@@ -259,21 +268,27 @@ TEST_CASE("textures: base-colour and metallic-roughness textures scale their fac
   auto withTexture = litQuadScene(textured);
   withTexture.textures = {texture};
   withTexture.textureRefs = {scene::TextureRef{}};
-  const auto reference = test::renderScene(*device, litQuadScene(plain), kSize, kSize, 4, oneBounce());
+  const auto reference =
+      test::renderScene(*device, litQuadScene(plain), kSize, kSize, 4, oneBounce());
   const auto image = test::renderScene(*device, withTexture, kSize, kSize, 4, oneBounce());
   // 8-bit and sRGB decoding on the GPU against the host's float arithmetic.
   REQUIRE(relativeMaxDifference(image, reference) < 2e-3f);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("textures: a normal map shades as the vertex normals it encodes", "[render][gpu][textures]") {
+TEST_CASE("textures: a normal map shades as the vertex normals it encodes",
+          "[render][gpu][textures]") {
   auto device = test::makeTestDevice();
   const glm::u8vec4 texel(200, 100, 230, 255);
   float handedness = 1.0f;
   float scale = 0.7f;
   SECTION("right-handed tangent frame") {}
-  SECTION("left-handed tangent frame (tangent w = -1) mirrors the bitangent") { handedness = -1.0f; }
-  SECTION("normal scale 0 leaves the surface normal") { scale = 0.0f; }
+  SECTION("left-handed tangent frame (tangent w = -1) mirrors the bitangent") {
+    handedness = -1.0f;
+  }
+  SECTION("normal scale 0 leaves the surface normal") {
+    scale = 0.0f;
+  }
   // The encoded tangent-space normal, xy scaled (glTF normalTexture.scale);
   // on the quad the tangent is +x, the normal +z, the bitangent +y * w.
   glm::vec3 m = glm::vec3(texel) / 255.0f * 2.0f - 1.0f;
@@ -294,7 +309,8 @@ TEST_CASE("textures: a normal map shades as the vertex normals it encodes", "[re
   const auto image = test::renderScene(*device, mapped, kSize, kSize, 4, oneBounce());
   REQUIRE(relativeMaxDifference(image, expected) < 2e-3f);
   // And the map changes the image at all: the flat quad differs.
-  const auto flat = test::renderScene(*device, litQuadScene(material), kSize, kSize, 4, oneBounce());
+  const auto flat =
+      test::renderScene(*device, litQuadScene(material), kSize, kSize, 4, oneBounce());
   if (scale > 0.0f) REQUIRE(relativeMaxDifference(image, flat) > 0.05f);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
@@ -335,7 +351,8 @@ std::optional<bool> checkerOpaque(float x, float y) {
 
 }  // namespace
 
-TEST_CASE("textures: alpha MASK cuts camera rays through transparent texels", "[render][gpu][textures]") {
+TEST_CASE("textures: alpha MASK cuts camera rays through transparent texels",
+          "[render][gpu][textures]") {
   auto device = test::makeTestDevice();
   scene::Scene s;
   s.name = "mask in front of an emitter";
@@ -376,7 +393,8 @@ TEST_CASE("textures: alpha MASK cuts camera rays through transparent texels", "[
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels", "[render][gpu][textures]") {
+TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels",
+          "[render][gpu][textures]") {
   // A floor at z = 0, a masked quad at z = 1 over it, a point light above and
   // the camera looking down: each pixel sees the floor through a hole or the
   // black mask, and a floor point is lit if its ray to the light passes a
@@ -385,7 +403,8 @@ TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels", "[
   scene::Scene s;
   s.name = "mask shadow";
   const float albedo = 0.8f;
-  s.materials = {maskedBlack(scene::AlphaMode::Mask), scene::Material::lambert("floor", glm::vec3(albedo))};
+  s.materials = {maskedBlack(scene::AlphaMode::Mask),
+                 scene::Material::lambert("floor", glm::vec3(albedo))};
   s.materials[1].specular = 0.0f;
   s.textures = {alphaChecker()};
   s.textureRefs = {nearestRef()};
@@ -413,17 +432,25 @@ TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels", "[
         const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), kSize, kSize);
         const glm::dvec3 atMask = o + d * ((1.0 - o.z) / d.z);
         const auto maskOpaque = checkerOpaque(float(atMask.x), float(atMask.y));
-        if (!maskOpaque) { decided = false; break; }
+        if (!maskOpaque) {
+          decided = false;
+          break;
+        }
         float value = 0.0f;
         if (!*maskOpaque) {
           const glm::dvec3 floor = o + d * (-o.z / d.z);
           const glm::dvec3 toLight = glm::dvec3(light.position) - floor;
           const glm::dvec3 crossing = floor + toLight * (1.0 / toLight.z);
           const auto shadowOpaque = checkerOpaque(float(crossing.x), float(crossing.y));
-          if (!shadowOpaque) { decided = false; break; }
+          if (!shadowOpaque) {
+            decided = false;
+            break;
+          }
           const double dist = glm::length(toLight);
-          value = *shadowOpaque ? 0.0f
-                                : float(albedo / M_PI * light.intensity.y * (toLight.z / dist) / (dist * dist));
+          value =
+              *shadowOpaque
+                  ? 0.0f
+                  : float(albedo / M_PI * light.intensity.y * (toLight.z / dist) / (dist * dist));
         }
         lo = std::min(lo, value);
         hi = std::max(hi, value);
@@ -483,8 +510,12 @@ TEST_CASE("textures: next-event estimation samples a textured emitter's texture"
   };
   render::PathTracerSettings settings;
   settings.maxDepth = 1;
-  SECTION("NEE alone") { settings.strategy = render::SamplingStrategy::Nee; }
-  SECTION("MIS") { settings.strategy = render::SamplingStrategy::Mis; }
+  SECTION("NEE alone") {
+    settings.strategy = render::SamplingStrategy::Nee;
+  }
+  SECTION("MIS") {
+    settings.strategy = render::SamplingStrategy::Mis;
+  }
   const auto textured = test::renderScene(*device, makeScene(true), 24, 24, 64, settings);
   const auto reference = test::renderScene(*device, makeScene(false), 24, 24, 64, settings);
   // Mean over the lower half (the floor): noise averages out over 288 pixels.
@@ -501,7 +532,8 @@ TEST_CASE("textures: next-event estimation samples a textured emitter's texture"
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("textures: glTF files render their textures and alpha masks", "[render][gpu][textures][gltf]") {
+TEST_CASE("textures: glTF files render their textures and alpha masks",
+          "[render][gpu][textures][gltf]") {
   auto device = test::makeTestDevice();
   SECTION("an emissive checker texture, texel by texel") {
     auto s = scene::loadGltf(test::dataPath("gltf/textured_quad.gltf"));
@@ -549,7 +581,8 @@ TEST_CASE("textures: glTF files render their textures and alpha masks", "[render
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("textures: an occlusion texture darkens Whitted's ambient term only", "[render][gpu][textures]") {
+TEST_CASE("textures: an occlusion texture darkens Whitted's ambient term only",
+          "[render][gpu][textures]") {
   // No lights, ambient 1: every pixel of the quad is kd * ambient * occlusion,
   // occlusion = 1 + strength * (r - 1).
   auto device = test::makeTestDevice();
@@ -560,7 +593,8 @@ TEST_CASE("textures: an occlusion texture darkens Whitted's ambient term only", 
   auto occluded = plain;
   occluded.materials[0].occlusionTexture = 0;
   occluded.materials[0].occlusionStrength = 0.75f;
-  occluded.textures = {makeTexture(2, 2, false, [](uint32_t, uint32_t) { return glm::u8vec4(64, 200, 200, 255); })};
+  occluded.textures = {
+      makeTexture(2, 2, false, [](uint32_t, uint32_t) { return glm::u8vec4(64, 200, 200, 255); })};
   occluded.textureRefs = {scene::TextureRef{}};
   render::PathTracerSettings whitted;
   whitted.integrator = render::Integrator::Whitted;
@@ -602,7 +636,8 @@ TEST_CASE("textures: alpha BLEND covers alpha of what lies behind, for camera an
   s.materials = {blend, scene::Material::lambert("emitter", glm::vec3(0.0f), glm::vec3(1.0f))};
   SECTION("alpha from a base-colour texture") {
     s.materials[0].baseColorTexture = 0;
-    s.textures = {makeTexture(2, 2, true, [](uint32_t, uint32_t) { return glm::u8vec4(90, 90, 90, 64); })};
+    s.textures = {
+        makeTexture(2, 2, true, [](uint32_t, uint32_t) { return glm::u8vec4(90, 90, 90, 64); })};
     s.textureRefs = {nearestRef()};
     alpha = 64.0f / 255.0f;
   }
@@ -665,7 +700,10 @@ TEST_CASE("textures: alpha BLEND covers alpha of what lies behind, for camera an
       for (glm::vec2 film : test::pixelFootprint(x, y)) {
         const glm::dvec3 o(blocked.camera.position);
         const glm::dvec3 d = test::cameraRayDirection(blocked.camera, glm::dvec2(film), 24, 24);
-        if (d.z >= 0.0) { allBehindQuad = false; break; }
+        if (d.z >= 0.0) {
+          allBehindQuad = false;
+          break;
+        }
         const glm::dvec3 floor = o + d * (-o.z / d.z);
         // The shadow ray to (0, 0, 2) crosses z = 1 half way.
         const glm::dvec2 crossing = glm::dvec2(floor) * 0.5;

@@ -4,12 +4,12 @@
 // with an unbounded sampler array, indices chosen per invocation, and the
 // results are checked against a host model of nearest/linear filtering, the
 // address modes and the sRGB decode.
-#include <catch2/catch_test_macros.hpp>
-#include <catch2/matchers/catch_matchers_string.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -63,12 +63,14 @@ struct HostTexture {
 uint32_t wrap(int i, uint32_t size, AddressMode mode) {
   const int n = int(size);
   switch (mode) {
-    case AddressMode::Repeat: return uint32_t(((i % n) + n) % n);
+    case AddressMode::Repeat:
+      return uint32_t(((i % n) + n) % n);
     case AddressMode::MirroredRepeat: {
       const int t = ((i % (2 * n)) + 2 * n) % (2 * n);
       return uint32_t(t < n ? t : 2 * n - 1 - t);
     }
-    case AddressMode::ClampToEdge: return uint32_t(std::clamp(i, 0, n - 1));
+    case AddressMode::ClampToEdge:
+      return uint32_t(std::clamp(i, 0, n - 1));
   }
   return 0;
 }
@@ -79,7 +81,8 @@ uint32_t wrap(int i, uint32_t size, AddressMode mode) {
 Color sampleHost(const HostTexture& t, const SamplerDesc& s, float u, float v) {
   const float x = u * float(t.width), y = v * float(t.height);
   if (s.magFilter == Filter::Nearest)
-    return t.fetch(wrap(int(std::floor(x)), t.width, s.addressU), wrap(int(std::floor(y)), t.height, s.addressV));
+    return t.fetch(wrap(int(std::floor(x)), t.width, s.addressU),
+                   wrap(int(std::floor(y)), t.height, s.addressV));
   const float fx = x - 0.5f, fy = y - 0.5f;
   const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
   const float a = fx - float(x0), b = fy - float(y0);
@@ -89,7 +92,8 @@ Color sampleHost(const HostTexture& t, const SamplerDesc& s, float u, float v) {
   const Color c11 = t.fetch(wrap(x0 + 1, t.width, s.addressU), wrap(y0 + 1, t.height, s.addressV));
   Color c;
   for (int i = 0; i < 4; ++i)
-    c[i] = (1 - a) * (1 - b) * c00[i] + a * (1 - b) * c10[i] + (1 - a) * b * c01[i] + a * b * c11[i];
+    c[i] =
+        (1 - a) * (1 - b) * c00[i] + a * (1 - b) * c10[i] + (1 - a) * b * c01[i] + a * b * c11[i];
   return c;
 }
 
@@ -99,8 +103,9 @@ std::vector<HostTexture> makeHostTextures() {
   for (uint32_t y = 0; y < 4; ++y)
     for (uint32_t x = 0; x < 4; ++x) {
       const uint8_t k = uint8_t(y * 4 + x);
-      unorm.texels.insert(unorm.texels.end(), {uint8_t(8 + 16 * k), uint8_t(247 - 16 * k),
-                                                uint8_t(8 + 16 * ((k * 5) % 16)), uint8_t(128 + 8 * k)});
+      unorm.texels.insert(unorm.texels.end(),
+                          {uint8_t(8 + 16 * k), uint8_t(247 - 16 * k),
+                           uint8_t(8 + 16 * ((k * 5) % 16)), uint8_t(128 + 8 * k)});
     }
   HostTexture srgb{2, 2, true, {}};
   srgb.texels = {20, 200, 90, 255, 240, 30, 160, 100, 130, 250, 10, 40, 60, 110, 230, 180};
@@ -110,11 +115,13 @@ std::vector<HostTexture> makeHostTextures() {
 std::vector<SamplerDesc> makeSamplerDescs() {
   std::vector<SamplerDesc> descs;
   for (Filter f : {Filter::Nearest, Filter::Linear})
-    for (AddressMode m : {AddressMode::Repeat, AddressMode::MirroredRepeat, AddressMode::ClampToEdge}) {
+    for (AddressMode m :
+         {AddressMode::Repeat, AddressMode::MirroredRepeat, AddressMode::ClampToEdge}) {
       SamplerDesc d;
       d.minFilter = d.magFilter = f;
       d.addressU = d.addressV = m;
-      d.debugName = fmt::format("{} sampler {}", f == Filter::Nearest ? "nearest" : "linear", int(m));
+      d.debugName =
+          fmt::format("{} sampler {}", f == Filter::Nearest ? "nearest" : "linear", int(m));
       descs.push_back(d);
     }
   SamplerDesc mixed;  // U and V address modes apart
@@ -179,8 +186,10 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
   cmd->open();
   std::vector<TextureHandle> textures;
   for (size_t i = 0; i < hostTextures.size(); ++i) {
-    textures.push_back(createSampledTexture(*device, hostTextures[i], i == 0 ? "unorm 4x4" : "srgb 2x2"));
-    cmd->writeTexture(textures.back().get(), hostTextures[i].texels.data(), hostTextures[i].texels.size());
+    textures.push_back(
+        createSampledTexture(*device, hostTextures[i], i == 0 ? "unorm 4x4" : "srgb 2x2"));
+    cmd->writeTexture(textures.back().get(), hostTextures[i].texels.data(),
+                      hostTextures[i].texels.size());
   }
   std::vector<SamplerHandle> samplers;
   for (const auto& d : samplerDescs) samplers.push_back(device->createSampler(d));
@@ -253,13 +262,15 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
     const Color expected = sampleHost(t, s, q.u, q.v);
     const bool linear = s.magFilter == Filter::Linear;
     for (int c = 0; c < 4; ++c) {
-      const float tolerance = (linear ? 2.0f / 256 : 0.0f) +
-                              (t.srgb ? 1e-3f + 2e-3f * expected[c] : (linear ? 1.0f / 255 : 1e-5f));
+      const float tolerance =
+          (linear ? 2.0f / 256 : 0.0f) +
+          (t.srgb ? 1e-3f + 2e-3f * expected[c] : (linear ? 1.0f / 255 : 1e-5f));
       if (std::abs(got[i][c] - expected[c]) <= tolerance) continue;
       if (++failures <= 10)
-        UNSCOPED_INFO(fmt::format("query {}: texture {} sampler '{}' uv ({}, {}) channel {}: got {} expected {} "
-                                  "(tolerance {})",
-                                  i, q.textureIndex, s.debugName, q.u, q.v, c, got[i][c], expected[c], tolerance));
+        UNSCOPED_INFO(fmt::format(
+            "query {}: texture {} sampler '{}' uv ({}, {}) channel {}: got {} expected {} "
+            "(tolerance {})",
+            i, q.textureIndex, s.debugName, q.u, q.v, c, got[i][c], expected[c], tolerance));
     }
   }
   CHECK(failures == 0u);
@@ -267,14 +278,17 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
   // The model itself must tell the filters and address modes apart on these
   // coordinates, or the comparison above would prove little.
   const auto& unorm = hostTextures[0];
-  CHECK(sampleHost(unorm, samplerDescs[0], -0.1f, 0.3f)[0] != sampleHost(unorm, samplerDescs[1], -0.1f, 0.3f)[0]);
-  CHECK(sampleHost(unorm, samplerDescs[0], -0.1f, 0.3f)[0] != sampleHost(unorm, samplerDescs[2], -0.1f, 0.3f)[0]);
+  CHECK(sampleHost(unorm, samplerDescs[0], -0.1f, 0.3f)[0] !=
+        sampleHost(unorm, samplerDescs[1], -0.1f, 0.3f)[0]);
+  CHECK(sampleHost(unorm, samplerDescs[0], -0.1f, 0.3f)[0] !=
+        sampleHost(unorm, samplerDescs[2], -0.1f, 0.3f)[0]);
   CHECK(std::abs(sampleHost(unorm, samplerDescs[0], 0.3f, 0.3f)[0] -
                  sampleHost(unorm, samplerDescs[3], 0.3f, 0.3f)[0]) > 0.02f);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("textures: binding sets with bad texture or sampler arrays are clear errors", "[rhi][gpu][textures]") {
+TEST_CASE("textures: binding sets with bad texture or sampler arrays are clear errors",
+          "[rhi][gpu][textures]") {
   auto device = test::makeTestDevice();
   auto pipeline = createSamplePipeline(*device);
   auto texture = createSampledTexture(*device, makeHostTextures()[0], "unorm 4x4");
@@ -325,13 +339,15 @@ TEST_CASE("textures: binding sets with bad texture or sampler arrays are clear e
     desc.usage = TextureUsage::Storage;
     desc.debugName = "storage only";
     set.items[2].textures = {texture, device->createTexture(desc)};
-    REQUIRE_THROWS_WITH(device->createBindingSet(set, *pipeline),
-                        ContainsSubstring("storage only") && ContainsSubstring("TextureUsage::Sampled"));
+    REQUIRE_THROWS_WITH(
+        device->createBindingSet(set, *pipeline),
+        ContainsSubstring("storage only") && ContainsSubstring("TextureUsage::Sampled"));
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("textures: writeTexture sizes and sRGB storage textures are checked", "[rhi][gpu][textures]") {
+TEST_CASE("textures: writeTexture sizes and sRGB storage textures are checked",
+          "[rhi][gpu][textures]") {
   auto device = test::makeTestDevice();
   auto texture = createSampledTexture(*device, makeHostTextures()[0], "unorm 4x4");
   auto cmd = device->createCommandList();
