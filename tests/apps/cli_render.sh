@@ -23,7 +23,11 @@ grep -q "^pipeline effects: area-lights$" "$work/log"
 # bench times both pipelines in one run and finds their images identical.
 "$penumbra" bench --size 16x16 --frames 2 | tee "$work/bench"
 grep -qE "^full / specialized GPU time \(medians\): [0-9.]+$" "$work/bench"
-grep -qE "^images: max \|difference\| 0," "$work/bench"
+# Identical on lavapipe; GPUs may contract a * b + c differently in the two
+# variants (measured on the H200: 6e-8), so up to 1e-5 passes.
+diff=$(sed -nE 's/^images: max \|difference\| ([0-9.e+-]+),.*/\1/p' "$work/bench")
+awk -v d="$diff" 'BEGIN { exit !(d != "" && d + 0 <= 1e-5) }'
+
 # The material test with a varied parameter and constants from the command line.
 "$penumbra" render --scene material-test --vary metallic --set roughness=0.3,baseColor=0.9,0.6,0.2 \
   --size 48x16 --spp 2 --validation --out "$work/row.png" >/dev/null
