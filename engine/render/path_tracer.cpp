@@ -81,7 +81,7 @@ struct PathTracer::SceneBuffers {
   rhi::rt::AccelStructHandle topLevel;
   rhi::BufferHandle implicits, implicitAabbs;
   std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
-  std::vector<ImplicitFamily> implicitFamilies;                  // hit group 1 + i is family i's
+  std::vector<ImplicitFamily> implicitFamilies;                  // hit groups PT_RAY_TYPES * (1 + i) on are family i's
 };
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
@@ -364,7 +364,7 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
     d.instanceID = range.firstObject;
     d.instanceMask = 0xff;
     const auto slot = std::find(s.implicitFamilies.begin(), s.implicitFamilies.end(), range.family);
-    d.instanceContributionToHitGroupIndex = 1 + uint32_t(slot - s.implicitFamilies.begin());
+    d.instanceContributionToHitGroupIndex = PT_RAY_TYPES * (1 + uint32_t(slot - s.implicitFamilies.begin()));
     d.bottomLevelAddress = s.implicitBottomLevels.back()->deviceAddress();
     tlasInstances.push_back(d);
   }
@@ -389,20 +389,29 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
   triangleHit.exportName = "triangle.rchit";
   desc.shaders = {rayGenShader, shaders::shaderDesc("path_trace.rmiss"),
                   shaders::shaderDesc("shadow.rmiss"), triangleHit};
-  // Hit group 0 is the triangles' (with the alpha any-hit when the scene has
-  // masked materials); then one per implicit family the scene uses, in the
-  // order of the TLAS instances' hit-group offsets: a pipeline holds only the
+  // PT_RAY_TYPES hit groups per geometry kind, radiance then shadow (the
+  // shadow ones without closest hit: shadow rays skip it). The triangles'
+  // come first, with the alpha any-hit when the scene has alpha-cut
+  // materials; then each implicit family the scene uses, in the order of the
+  // TLAS instances' hit-group offsets: a pipeline holds only the
   // intersection shaders of the geometry its scene contains.
   const bool alphaMask = (pipelineEffects_ & PT_EFFECT_ALPHA_MASK) != 0;
-  desc.hitGroups = {{"triangles", "triangle.rchit", alphaMask ? "triangle_alpha.rahit" : "", "", false}};
-  if (alphaMask) desc.shaders.push_back(shaders::shaderDesc("triangle_alpha.rahit"));
+  desc.hitGroups = {
+      {"triangles", "triangle.rchit", alphaMask ? "triangle_alpha.rahit" : "", "", false},
+      {"triangles.shadow", "", alphaMask ? "triangle_alpha_shadow.rahit" : "", "", false}};
+  if (alphaMask) {
+    desc.shaders.push_back(shaders::shaderDesc("triangle_alpha.rahit"));
+    desc.shaders.push_back(shaders::shaderDesc("triangle_alpha_shadow.rahit"));
+  }
   if (!scene_->implicitFamilies.empty())
     desc.shaders.push_back(shaders::shaderDesc("implicit.rchit"));
   for (ImplicitFamily family : scene_->implicitFamilies) {
+    const std::string name = implicitHitGroupName(family);
     desc.shaders.push_back(shaders::shaderDesc(implicitIntersectionShader(family)));
-    desc.hitGroups.push_back({implicitHitGroupName(family), "implicit.rchit", "",
-                              implicitIntersectionShader(family), true});
+    desc.hitGroups.push_back({name, "implicit.rchit", "", implicitIntersectionShader(family), true});
+    desc.hitGroups.push_back({name + ".shadow", "", "", implicitIntersectionShader(family), true});
   }
+  static_assert(PT_RAY_TYPES == 2 && PT_RAY_RADIANCE == 0, "hit groups are listed radiance, shadow");
   desc.maxPayloadBytes = 76;    // SurfaceHit (surface_hit.hlsli)
   desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
   desc.maxRecursionDepth = 1;   // only the ray generation shader traces

@@ -16,6 +16,6 @@ void main() {
   ray.TMin = 0.0;
   ray.TMax = probe.origin.w;
   SurfaceHit hit = surfaceMiss();
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, 0, 1, PT_MISS_RADIANCE, ray, hit);
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, hit);
   gProbeHits[index] = packProbeHit(hit);
 }

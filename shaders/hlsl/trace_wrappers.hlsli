@@ -16,8 +16,7 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   ray.TMin = 0.0;
   ray.TMax = 1e30;
   SurfaceHit hit = surfaceMiss();
-  // Hit group offset 0, geometry multiplier 1, as in the GLSL twin.
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, 0, 1, PT_MISS_RADIANCE, ray, hit);
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, hit);
   return hit;
 }
 
@@ -33,7 +32,7 @@ bool traceVisibility(float3 origin, float3 direction, float tMax) {
   TraceRay(gScene,
            RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH |
                RAY_FLAG_SKIP_CLOSEST_HIT_SHADER,
-           0xff, 0, 1, PT_MISS_SHADOW, ray, shadow);
+           0xff, PT_RAY_SHADOW, PT_RAY_TYPES, PT_MISS_SHADOW, ray, shadow);
   return shadow.visible != 0u;
 }
 

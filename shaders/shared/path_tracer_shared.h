@@ -53,6 +53,15 @@ namespace penumbra::gpu {
 #define PT_SLOT_RAY_COUNTER PENUMBRA_U(PT_U_RAY_COUNTER)
 #define PT_SLOT_PROBE_HITS PENUMBRA_U(PT_U_PROBE_HITS)
 
+// Ray types: each geometry kind has one hit group per ray type, adjacent in
+// the shader table, so TraceRay's ray contribution is the ray type and its
+// geometry multiplier PT_RAY_TYPES (every BLAS holds one geometry). Shadow
+// rays get hit groups of their own because DXR requires an any-hit shader's
+// payload type to be the tracing ray's.
+#define PT_RAY_RADIANCE 0
+#define PT_RAY_SHADOW 1
+#define PT_RAY_TYPES 2
+
 // FrameConstants.sampling.w bits.
 #define PT_FLAG_NEE 1u               // next-event estimation on emissive triangles and point lights
 #define PT_FLAG_MIS 2u               // MIS between NEE and BSDF sampling (area lights only)
