@@ -118,6 +118,23 @@ std::optional<glm::uvec2> nearestTexel(const scene::TextureRef& ref, const scene
   return glm::uvec2(std::min(uint32_t(u), tex.width - 1), std::min(uint32_t(v), tex.height - 1));
 }
 
+// What `classify` says of the z = 0 plane point each ray of pixel (x, y)'s
+// footprint meets, when it says the same for all of them; nothing otherwise
+// (the pixel straddles an edge, or some point is undecided).
+template <class T, class Classify>
+std::optional<T> sameOverFootprint(const scene::Camera& camera, uint32_t x, uint32_t y, uint32_t w,
+                                   uint32_t h, Classify classify) {
+  std::optional<T> result;
+  for (glm::vec2 film : test::pixelFootprint(x, y)) {
+    const glm::dvec3 d = test::cameraRayDirection(camera, glm::dvec2(film), w, h);
+    const glm::dvec3 p = glm::dvec3(camera.position) + d * (-double(camera.position.z) / d.z);
+    const std::optional<T> here = classify(p);
+    if (!here || (result && *result != *here)) return std::nullopt;
+    result = here;
+  }
+  return result;
+}
+
 // Checks every pixel whose footprint falls inside one texel of the quad shows
 // exactly that texel (sRGB decoded); returns how many pixels were checked.
 uint32_t checkEmittedTexels(const image::Image& img, const scene::Scene& s) {
@@ -126,20 +143,12 @@ uint32_t checkEmittedTexels(const image::Image& img, const scene::Scene& s) {
   uint32_t checked = 0;
   for (uint32_t y = 0; y < img.height; ++y)
     for (uint32_t x = 0; x < img.width; ++x) {
-      std::optional<glm::uvec2> texel;
-      bool uniform = true;
-      for (glm::vec2 film : test::pixelFootprint(x, y)) {
-        const glm::dvec3 d =
-            test::cameraRayDirection(s.camera, glm::dvec2(film), img.width, img.height);
-        const glm::dvec3 p =
-            glm::dvec3(s.camera.position) + d * (-double(s.camera.position.z) / d.z);
-        std::optional<glm::uvec2> here;
-        if (std::abs(p.x) < 0.98 && std::abs(p.y) < 0.98)
-          here = nearestTexel(ref, tex, float(p.x), float(p.y));
-        if (!here || (texel && *texel != *here)) uniform = false;
-        texel = here;
-      }
-      if (!uniform) continue;
+      const auto texel = sameOverFootprint<glm::uvec2>(
+          s.camera, x, y, img.width, img.height, [&](glm::dvec3 p) -> std::optional<glm::uvec2> {
+            if (std::abs(p.x) >= 0.98 || std::abs(p.y) >= 0.98) return std::nullopt;
+            return nearestTexel(ref, tex, float(p.x), float(p.y));
+          });
+      if (!texel) continue;
       const uint8_t* c = &tex.rgba8[(size_t(texel->y) * tex.width + texel->x) * 4];
       for (int ch = 0; ch < 3; ++ch) {
         const float expected = srgbToLinear(c[ch] / 255.0f);
@@ -373,16 +382,10 @@ TEST_CASE("textures: alpha MASK cuts camera rays through transparent texels",
   uint32_t seenThrough = 0, blocked = 0;
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize; ++x) {
-      std::optional<bool> opaque;
-      bool uniform = true;
-      for (glm::vec2 film : test::pixelFootprint(x, y)) {
-        const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), kSize, kSize);
-        const glm::dvec3 p = glm::dvec3(s.camera.position) + d * (-3.0 / d.z);
-        const auto here = checkerOpaque(float(p.x), float(p.y));
-        if (!here || (opaque && *opaque != *here)) uniform = false;
-        opaque = here;
-      }
-      if (!uniform) continue;
+      const auto opaque = sameOverFootprint<bool>(s.camera, x, y, kSize, kSize, [](glm::dvec3 p) {
+        return checkerOpaque(float(p.x), float(p.y));
+      });
+      if (!opaque) continue;
       const float expected = (*opaque || !masked) ? 0.0f : 1.0f;
       INFO("pixel " << x << "," << y);
       REQUIRE(std::abs(img.pixel(x, y)[1] - expected) < 1e-4f);
@@ -553,16 +556,10 @@ TEST_CASE("textures: glTF files render their textures and alpha masks",
     uint32_t seenThrough = 0, blocked = 0;
     for (uint32_t y = 0; y < kSize; ++y)
       for (uint32_t x = 0; x < kSize; ++x) {
-        std::optional<bool> checkerSaysOpaque;
-        bool uniform = true;
-        for (glm::vec2 film : test::pixelFootprint(x, y)) {
-          const glm::dvec3 d = test::cameraRayDirection(s.camera, glm::dvec2(film), kSize, kSize);
-          const glm::dvec3 p = glm::dvec3(s.camera.position) + d * (-3.0 / d.z);
-          const auto here = checkerOpaque(float(p.x), float(p.y));
-          if (!here || (checkerSaysOpaque && *checkerSaysOpaque != *here)) uniform = false;
-          checkerSaysOpaque = here;
-        }
-        if (!uniform) continue;
+        const auto checkerSaysOpaque = sameOverFootprint<bool>(
+            s.camera, x, y, kSize, kSize,
+            [](glm::dvec3 p) { return checkerOpaque(float(p.x), float(p.y)); });
+        if (!checkerSaysOpaque) continue;
         // Transparent texels show the emitter (1); opaque ones the quad's own
         // colour under no light (its emission is 0).
         const bool opaque = !*checkerSaysOpaque;
