@@ -58,14 +58,93 @@ Frame shadingFrame(SurfaceHit hit, float3 n) {
   return f;
 }
 
+// A shadow ray prepared at a path vertex and traced once the vertex is
+// done: its contribution counts if nothing blocks the segment.
+struct ShadowRay {
+  float3 origin;
+  float3 direction;
+  float tMax;          // 0: no ray
+  float3 contribution;
+};
+
+ShadowRay noShadowRay() {
+  ShadowRay r;
+  r.origin = zero3();
+  r.direction = float3(0.0, 0.0, 1.0);
+  r.tMax = 0.0;
+  r.contribution = zero3();
+  return r;
+}
+
+// The next direction at a path vertex by the strategy in `flags` (BSDF
+// sampling, or uniform / cosine directions for study), with the throughput
+// update and Russian roulette; false ends the path.
+bool scatter(FrameConstants c, DisneyMaterial material, Frame frame, float3 ng, float3 direction,
+             float3 wo, uint depth, inout Rng rng, inout float3 throughput, inout float previousPdf,
+             inout bool previousDelta, out float3 wiWorld) {
+  uint flags = c.sampling.w;
+  uint directions = (flags >> PT_DIRECTIONS_SHIFT) & 3u;
+  wiWorld = direction;
+  float u0 = rngNext(rng);
+  float u1 = rngNext(rng);
+  float u2 = rngNext(rng);
+  BsdfSample s;
+  if (directions == PT_DIRECTIONS_BSDF || disneyHasDeltaLobe(material)) {
+    s = disneySample(material, wo, u0, u1, u2);
+  } else {
+    s = disneyNoSample();
+    float3 wiLocal;
+    float pdf;
+    if (directions == PT_DIRECTIONS_UNIFORM) {
+      // The hemisphere of wo, or the whole sphere if the material transmits.
+      wiLocal = sampleUniformSphere(u1, u2);
+      pdf = 0.25 * kInvPi;
+      if (material.specTrans <= 0.0 || material.metallic >= 1.0) {
+        wiLocal.z = wo.z > 0.0 ? abs(wiLocal.z) : -abs(wiLocal.z);
+        pdf = 0.5 * kInvPi;
+      }
+    } else {
+      wiLocal = sampleCosineHemisphere(u1, u2);
+      wiLocal.z = wo.z > 0.0 ? wiLocal.z : -wiLocal.z;
+      pdf = cosineHemispherePdf(abs(wiLocal.z));
+    }
+    if (pdf > 0.0 && wiLocal.z != 0.0) {
+      BsdfEval e = disneyEval(material, wo, wiLocal);
+      s.wi = wiLocal;
+      s.pdf = pdf;
+      s.weight = e.f * (abs(wiLocal.z) / pdf);
+      s.lobe = BSDF_LOBE_DIFFUSE;
+    }
+  }
+  if (s.lobe == BSDF_LOBE_NONE || !(maxComponent(s.weight) > 0.0)) return false;
+  wiWorld = normalize(frameToWorld(frame, s.wi));
+  if (!shadingConsistent(ng, -direction, wiWorld, wo.z, s.wi.z) || dot(wiWorld, ng) == 0.0) return false;
+  throughput *= s.weight;
+  if (!isFiniteColor(throughput)) return false;
+  previousPdf = s.pdf;
+  previousDelta = s.isDelta;
+  if ((flags & PT_FLAG_RUSSIAN_ROULETTE) != 0u && depth + 1u >= c.sampling.z) {
+    float survive = min(maxComponent(throughput), 0.95);
+    if (rngNext(rng) >= survive) return false;
+    throughput /= survive;
+  }
+  return true;
+}
+
 // Radiance arriving along (origin, direction).
+//
+// Each vertex first prepares its shadow rays (the light sample and the BSDF
+// value towards it), then samples the next direction, and traces the shadow
+// rays last, so that what is alive across each trace call is the path state
+// alone (throughput, radiance, the next ray, the random stream), not the hit,
+// material and shading frame: whatever is alive across a trace is saved and
+// restored around it. The random numbers are drawn in the same order as
+// when the shadow ray was traced before the bounce was sampled.
 float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rng) {
   // Locals are not `const`: GLSL allows const only for constant expressions.
   uint flags = c.sampling.w;
-  uint directions = (flags >> PT_DIRECTIONS_SHIFT) & 3u;
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
   bool useMis = useNee && (flags & PT_FLAG_MIS) != 0u;
-  bool useRoulette = (flags & PT_FLAG_RUSSIAN_ROULETTE) != 0u;
   uint maxDepth = c.sampling.y;
   float clampLimit = c.shading.w;
 
@@ -114,6 +193,7 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
     float3 wo = frameToLocal(frame, -direction);
     if (wo.z == 0.0 || dot(direction, ng) == 0.0) break;  // exactly grazing: no side to scatter into
 
+    ShadowRay areaShadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
     if (useNee && c.lights.x > 0u) {
       float u0 = rngNext(rng);
@@ -134,85 +214,60 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
           float3 target = offsetRayOrigin(light.position, light.normal);
           float3 shadowDir = target - spawn;
           float shadowLength = length(shadowDir);
-          if (shadowLength > 0.0 && traceVisibility(spawn, shadowDir / shadowLength, shadowLength)) {
+          if (shadowLength > 0.0) {
             float lightPdf = areaToSolidAnglePdf(light.pdfArea, distance, cosAtLight);
             float weight = useMis ? misWeight(flags, lightPdf, e.pdf) : 1.0;
-            float3 contribution =
-                throughput * e.f * light.radiance * (abs(wiLocal.z) * weight / lightPdf);
-            radiance += clampContribution(contribution, clampLimit);
+            areaShadow.origin = spawn;
+            areaShadow.direction = shadowDir / shadowLength;
+            areaShadow.tMax = shadowLength;
+            areaShadow.contribution = clampContribution(
+                throughput * e.f * light.radiance * (abs(wiLocal.z) * weight / lightPdf), clampLimit);
           }
         }
       }
     }
 #endif
+    ShadowRay deltaShadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-    if (useNee) {
-      for (uint l = 0u; l < c.lights.y; l += 1u) {
-        PointLight pl = loadPointLight(l);
-        float3 wi;
-        float distance;
-        float3 incident = pointLightIncident(pl, hit.position, wi, distance);
-        float3 wiLocal = frameToLocal(frame, wi);
-        if (maxComponent(incident) <= 0.0 || wiLocal.z == 0.0 ||
-            !shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z))
-          continue;
+    // One point or spot light per vertex, chosen uniformly (weight: the
+    // count), so each vertex traces at most two shadow rays.
+    if (useNee && c.lights.y > 0u) {
+      uint l = c.lights.y == 1u ? 0u : min(uint(rngNext(rng) * float(c.lights.y)), c.lights.y - 1u);
+      PointLight pl = loadPointLight(l);
+      float3 wi;
+      float distance;
+      float3 incident = pointLightIncident(pl, hit.position, wi, distance);
+      float3 wiLocal = frameToLocal(frame, wi);
+      if (maxComponent(incident) > 0.0 && wiLocal.z != 0.0 &&
+          shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z)) {
         BsdfEval e = disneyEval(material, wo, wiLocal);
-        if (maxComponent(e.f) <= 0.0) continue;
-        float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
-        float3 toLight = pl.position.xyz - spawn;
-        float shadowLength = length(toLight);
-        if (traceVisibility(spawn, toLight / shadowLength, shadowLength))
-          radiance += clampContribution(throughput * e.f * incident * abs(wiLocal.z), clampLimit);
+        if (maxComponent(e.f) > 0.0) {
+          float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
+          float3 toLight = pl.position.xyz - spawn;
+          float shadowLength = length(toLight);
+          deltaShadow.origin = spawn;
+          deltaShadow.direction = toLight / shadowLength;
+          deltaShadow.tMax = shadowLength;
+          deltaShadow.contribution =
+              clampContribution(throughput * e.f * incident * (abs(wiLocal.z) * float(c.lights.y)), clampLimit);
+        }
       }
     }
 #endif
 
-    // Next direction.
-    float u0 = rngNext(rng);
-    float u1 = rngNext(rng);
-    float u2 = rngNext(rng);
-    BsdfSample s;
-    if (directions == PT_DIRECTIONS_BSDF || disneyHasDeltaLobe(material)) {
-      s = disneySample(material, wo, u0, u1, u2);
-    } else {
-      s = disneyNoSample();
-      float3 wiLocal;
-      float pdf;
-      if (directions == PT_DIRECTIONS_UNIFORM) {
-        // The hemisphere of wo, or the whole sphere if the material transmits.
-        wiLocal = sampleUniformSphere(u1, u2);
-        pdf = 0.25 * kInvPi;
-        if (material.specTrans <= 0.0 || material.metallic >= 1.0) {
-          wiLocal.z = wo.z > 0.0 ? abs(wiLocal.z) : -abs(wiLocal.z);
-          pdf = 0.5 * kInvPi;
-        }
-      } else {
-        wiLocal = sampleCosineHemisphere(u1, u2);
-        wiLocal.z = wo.z > 0.0 ? wiLocal.z : -wiLocal.z;
-        pdf = cosineHemispherePdf(abs(wiLocal.z));
-      }
-      if (pdf > 0.0 && wiLocal.z != 0.0) {
-        BsdfEval e = disneyEval(material, wo, wiLocal);
-        s.wi = wiLocal;
-        s.pdf = pdf;
-        s.weight = e.f * (abs(wiLocal.z) / pdf);
-        s.lobe = BSDF_LOBE_DIFFUSE;
-      }
-    }
-    if (s.lobe == BSDF_LOBE_NONE || !(maxComponent(s.weight) > 0.0)) break;
-    float3 wiWorld = normalize(frameToWorld(frame, s.wi));
-    if (!shadingConsistent(ng, -direction, wiWorld, wo.z, s.wi.z) || dot(wiWorld, ng) == 0.0) break;
-    throughput *= s.weight;
-    if (!isFiniteColor(throughput)) break;
-    previousPdf = s.pdf;
-    previousDelta = s.isDelta;
+    float3 wiWorld;
+    bool continues =
+        scatter(c, material, frame, ng, direction, wo, depth, rng, throughput, previousPdf, previousDelta, wiWorld);
+    float3 nextOrigin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
 
-    if (useRoulette && depth + 1u >= c.sampling.z) {
-      float survive = min(maxComponent(throughput), 0.95);
-      if (rngNext(rng) >= survive) break;
-      throughput /= survive;
+    // One trace call site for every shadow ray of the vertex.
+    for (uint k = 0u; k < 2u; k += 1u) {
+      ShadowRay shadow = k == 0u ? areaShadow : deltaShadow;
+      if (shadow.tMax > 0.0 && traceVisibility(shadow.origin, shadow.direction, shadow.tMax))
+        radiance += shadow.contribution;
     }
-    origin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
+    if (!continues) break;
+    origin = nextOrigin;
     direction = wiWorld;
   }
   return radiance;
