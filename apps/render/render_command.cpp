@@ -1,7 +1,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <memory>
 #include <regex>
 #include <tuple>
 
@@ -9,6 +11,7 @@
 #include "commands.h"
 #include "image/image_io.h"
 #include "progress.h"
+#include "render/denoiser.h"
 #include "render/effect_set.h"
 #include "render/path_tracer.h"
 #include "render/render_job.h"
@@ -44,7 +47,79 @@ struct RenderOptions {
   float exposure = 1.0f;
   render::ToneMapOperator toneOperator = render::ToneMapOperator::Clamp;
   std::string settingsFile;
+  render::DenoiseMode denoise = render::DenoiseMode::Off;
+  bool noFireflyClamp = false;
+  std::string aov;
 };
+
+// The auxiliary outputs --aov can write as EXR layers.
+const std::vector<std::string> kAovNames = {"albedo",   "normal", "depth",
+                                            "emission", "motion", "variance"};
+
+std::vector<std::string> parseAovs(const std::string& list, const std::string& out) {
+  std::vector<std::string> aovs;
+  if (list.empty()) return aovs;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    if (std::find(kAovNames.begin(), kAovNames.end(), name) == kAovNames.end())
+      throw Error(fmt::format(
+          "--aov '{}': unknown output '{}' (albedo, normal, depth, emission, motion, variance)",
+          list, name));
+    if (std::find(aovs.begin(), aovs.end(), name) == aovs.end()) aovs.push_back(name);
+    start = comma + 1;
+  }
+  if (image::formatFromPath(out) != image::FileFormat::Exr)
+    throw Error(
+        fmt::format("--aov: '{}' is not an .exr file; auxiliary outputs are EXR layers", out));
+  return aovs;
+}
+
+// The layers --aov asks for, from the tracer's guide buffers (running means
+// over all samples) and the denoiser's motion vectors (zero without it: one
+// camera, nothing moves).
+std::vector<image::ExrLayer> aovLayers(const std::vector<std::string>& aovs,
+                                       render::PathTracer& tracer, const render::Denoiser* denoiser,
+                                       uint32_t samples) {
+  std::vector<image::ExrLayer> layers;
+  const auto& g = tracer.guides();
+  for (const auto& name : aovs) {
+    image::ExrLayer layer;
+    layer.name = name;
+    if (name == "albedo" || name == "emission") {
+      layer.channels = {"R", "G", "B"};
+      layer.image = tracer.readback(name == "albedo" ? g.albedo : g.emission);
+    } else if (name == "normal" || name == "depth") {
+      image::Image nd = tracer.readback(g.normalDepth);
+      layer.image = nd;
+      if (name == "normal") {
+        layer.channels = {"X", "Y", "Z"};
+        for (size_t i = 0; i < nd.rgba.size(); i += 4) {
+          const float* n = &nd.rgba[i];
+          const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          for (int k = 0; k < 3; ++k) layer.image.rgba[i + k] = len > 0.0f ? n[k] / len : 0.0f;
+        }
+      } else {
+        layer.channels = {"Z"};
+        for (size_t i = 0; i < nd.rgba.size(); i += 4) layer.image.rgba[i] = nd.rgba[i + 3];
+      }
+    } else if (name == "motion") {
+      layer.channels = {"X", "Y"};
+      layer.image = denoiser ? tracer.readback(denoiser->motion())
+                             : image::Image(tracer.width(), tracer.height());
+    } else {  // variance of the pixel's mean luminance (radiance minus emission)
+      layer.channels = {"Y"};
+      image::Image m = tracer.readback(g.moments);
+      layer.image = image::Image(tracer.width(), tracer.height());
+      for (size_t i = 0; i < m.rgba.size(); i += 4)
+        layer.image.rgba[i] =
+            std::max(0.0f, m.rgba[i + 1] - m.rgba[i] * m.rgba[i]) / float(samples);
+    }
+    layers.push_back(std::move(layer));
+  }
+  return layers;
+}
 
 }  // namespace
 
@@ -99,9 +174,13 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   // The viewer's Material-menu edits, on top of the row as the viewer had it.
   render::applyMaterialOverrides(scene, job.materials, o.settingsFile);
   if (o.printEffects) {
-    for (const auto& name : render::effectNames(render::deriveEffects(scene))) fmt::print("{}\n", name);
+    for (const auto& name : render::effectNames(render::deriveEffects(scene)))
+      fmt::print("{}\n", name);
     return 0;
   }
+  const std::vector<std::string> aovs = parseAovs(o.aov, o.out);
+  if (o.denoise != render::DenoiseMode::Off && job.settings.integrator != render::Integrator::Path)
+    throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
   image::checkWritable(o.out);
 
   rhi::DeviceCreateInfo info;
@@ -112,7 +191,8 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   fmt::print("device: {} ({}, {}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              adapter.apiVersion, device->backendName());
   fmt::print("scene: {} ({} triangles, {} implicit objects), {}x{}, {} spp, seed {}\n", scene.name,
-             scene.triangleCount(), scene.implicits.size(), width, height, job.spp, job.settings.seed);
+             scene.triangleCount(), scene.implicits.size(), width, height, job.spp,
+             job.settings.seed);
   if (job.settings.radianceClamp > 0.0f)
     fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n",
                job.settings.radianceClamp);
@@ -129,27 +209,54 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
              job.allEffects ? " (--all-effects)" : "");
   const render::PathTracerSettings& settings = job.settings;
 
+  std::unique_ptr<render::Denoiser> denoiser;
+  render::DenoiserSettings denoise;
+  denoise.mode = o.denoise;
+  denoise.fireflyClamp = !o.noFireflyClamp;
+  if (o.denoise != render::DenoiseMode::Off)
+    denoiser = std::make_unique<render::Denoiser>(*device, width, height);
+  const scene::Camera camera = tracer.camera();
+
   Progress progress(job.spp);
-  double gpuSeconds = 0;
+  double gpuSeconds = 0, denoiseSeconds = 0;
   uint64_t rays = 0;
-  while (tracer.accumulatedSamples() < job.spp) {
-    const uint32_t n = std::min(job.sppPerFrame, job.spp - tracer.accumulatedSamples());
+  uint32_t done = 0;
+  while (done < job.spp) {
+    const uint32_t n = std::min(job.sppPerFrame, job.spp - done);
+    // The temporal denoiser integrates frames itself: each frame holds only
+    // its own samples.
+    if (o.denoise == render::DenoiseMode::Svgf) tracer.resetAccumulation();
     auto stats = tracer.renderFrame(settings, n);
     gpuSeconds += stats.gpuSeconds;
     rays += stats.rays;
-    progress.update(tracer.accumulatedSamples());
+    done += n;
+    if (o.denoise == render::DenoiseMode::Svgf)
+      denoiseSeconds += denoiser->run(tracer, camera, n, denoise);
+    progress.update(done);
   }
   progress.finish();
+  if (o.denoise == render::DenoiseMode::Atrous)
+    denoiseSeconds += denoiser->run(tracer, camera, tracer.accumulatedSamples(), denoise);
+  const rhi::TextureHandle& result = denoiser ? denoiser->output() : tracer.accumulation();
 
   if (image::formatFromPath(o.out) == image::FileFormat::Exr) {
-    image::saveExr(o.out, tracer.readback());
+    std::vector<image::ExrLayer> layers =
+        aovLayers(aovs, tracer, denoiser.get(), std::max(1u, tracer.accumulatedSamples()));
+    if (denoiser && !aovs.empty()) layers.push_back({"noisy", {"R", "G", "B"}, tracer.readback()});
+    if (layers.empty())
+      image::saveExr(o.out, tracer.readback(result));
+    else
+      image::saveExrLayers(o.out, tracer.readback(result), layers);
   } else {
     render::Tonemapper tonemapper(*device);
-    image::savePng(o.out, tonemapper.run(tracer.accumulation(), job.toneMapping.exposure,
-                                         job.toneMapping.toneOperator));
+    image::savePng(o.out,
+                   tonemapper.run(result, job.toneMapping.exposure, job.toneMapping.toneOperator));
   }
   fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
              gpuSeconds * 1e3, gpuSeconds * 1e3 / job.spp);
+  if (denoiser)
+    fmt::print("denoiser ({}): {:.3f} ms GPU time\n", render::denoiseModeName(o.denoise),
+               denoiseSeconds * 1e3);
   fmt::print("rays: {} ({:.2f} Mrays/s)\n", rays, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0);
   fmt::print("wrote {}\n", o.out);
   if (o.validation && device->validationMessageCount() > 0) {
@@ -163,7 +270,8 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
+  auto* cmd =
+      app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
   cmd->add_option("--scene", o->scene,
                   "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)")
       ->capture_default_str();
@@ -171,50 +279,82 @@ Command addRenderCommand(CLI::App& app) {
                   "Render from the scene's camera of this name (glTF camera or node name; "
                   "default: the first camera in node order)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 20))->capture_default_str();
+  cmd->add_option("--spp", o->spp, "Samples per pixel")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
   cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")
-      ->check(CLI::Range(1u, 16u))->capture_default_str();
+      ->check(CLI::Range(1u, 16u))
+      ->capture_default_str();
   cmd->add_option("--out", o->out, "Output image: .exr (linear float) or .png (tone-mapped sRGB)")
       ->capture_default_str();
   cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
-  cmd->add_option("--device", o->device, "Device index from 'penumbra devices' (default: best with ray tracing)");
+  cmd->add_option("--device", o->device,
+                  "Device index from 'penumbra devices' (default: best with ray tracing)");
   cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")->check(CLI::Range(0u, 1024u))->capture_default_str();
-  const std::map<std::string, render::Integrator> integrators{{"path", render::Integrator::Path},
-                                                              {"whitted", render::Integrator::Whitted}};
+  cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")
+      ->check(CLI::Range(0u, 1024u))
+      ->capture_default_str();
+  const std::map<std::string, render::Integrator> integrators{
+      {"path", render::Integrator::Path}, {"whitted", render::Integrator::Whitted}};
   cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
-      ->transform(CLI::CheckedTransformer(integrators))->default_str("path");
+      ->transform(CLI::CheckedTransformer(integrators))
+      ->default_str("path");
   const std::map<std::string, render::SamplingStrategy> strategies{
-      {"uniform", render::SamplingStrategy::Uniform}, {"cosine", render::SamplingStrategy::Cosine},
-      {"bsdf", render::SamplingStrategy::Bsdf}, {"nee", render::SamplingStrategy::Nee},
+      {"uniform", render::SamplingStrategy::Uniform},
+      {"cosine", render::SamplingStrategy::Cosine},
+      {"bsdf", render::SamplingStrategy::Bsdf},
+      {"nee", render::SamplingStrategy::Nee},
       {"mis", render::SamplingStrategy::Mis}};
   cmd->add_option("--strategy", o->strategy,
                   "Path sampling: uniform | cosine | bsdf (no light sampling) | nee | mis")
-      ->transform(CLI::CheckedTransformer(strategies))->default_str("mis");
+      ->transform(CLI::CheckedTransformer(strategies))
+      ->default_str("mis");
   const std::map<std::string, render::MisHeuristic> heuristics{
       {"power", render::MisHeuristic::Power}, {"balance", render::MisHeuristic::Balance}};
   cmd->add_option("--mis-heuristic", o->heuristic, "MIS weights: power | balance")
-      ->transform(CLI::CheckedTransformer(heuristics))->default_str("power");
+      ->transform(CLI::CheckedTransformer(heuristics))
+      ->default_str("power");
   cmd->add_option("--clamp", o->clamp, "Clamp each sample's radiance to this value (0 = off)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
-  cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")->capture_default_str();
+  cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")
+      ->capture_default_str();
   std::map<std::string, render::ToneMapOperator> toneOperators;
   for (auto op : render::allToneMapOperators()) toneOperators[render::toneMapOperatorName(op)] = op;
-  cmd->add_option("--tonemap", o->toneOperator, "Tone curve for PNG output: clamp | reinhard | aces")
-      ->transform(CLI::CheckedTransformer(toneOperators))->default_str("clamp");
+  cmd->add_option("--tonemap", o->toneOperator,
+                  "Tone curve for PNG output: clamp | reinhard | aces")
+      ->transform(CLI::CheckedTransformer(toneOperators))
+      ->default_str("clamp");
   cmd->add_option("--settings", o->settingsFile,
                   "Render settings JSON (written beside each viewer screenshot); options given "
                   "explicitly override its values");
   cmd->add_option("--vary", o->vary,
                   "material-test: the Disney parameter that goes from 0 to 1 along the row");
-  cmd->add_option("--set", o->set,
-                  "material-test: the shared material's constants, e.g. metallic=1,baseColor=0.9,0.6,0.2");
+  cmd->add_option(
+      "--set", o->set,
+      "material-test: the shared material's constants, e.g. metallic=1,baseColor=0.9,0.6,0.2");
   cmd->add_flag("--all-effects", o->allEffects,
                 "Build the full pipeline instead of only the effects the scene calls for");
   cmd->add_flag("--print-effects", o->printEffects,
                 "List the effects the scene calls for, one per line, and exit");
-  cmd->add_flag("--validation", o->validation, "Enable the API validation layer; fail on any message");
+  cmd->add_flag("--validation", o->validation,
+                "Enable the API validation layer; fail on any message");
+  const std::map<std::string, render::DenoiseMode> denoisers{
+      {"off", render::DenoiseMode::Off},
+      {"atrous", render::DenoiseMode::Atrous},
+      {"svgf", render::DenoiseMode::Svgf}};
+  cmd->add_option(
+         "--denoise", o->denoise,
+         "Denoiser: off | atrous (single frame, on the final image) | svgf (temporal, every frame)")
+      ->transform(CLI::CheckedTransformer(denoisers))
+      ->default_str("off");
+  cmd->add_flag("--no-firefly-clamp", o->noFireflyClamp,
+                "Denoiser: keep pixels brighter than all their neighbours (no firefly clamp)");
+  cmd->add_option(
+      "--aov", o->aov,
+      "Auxiliary outputs as EXR layers, comma separated: albedo, normal, depth, emission, "
+      "motion, variance");
   return [o, cmd] { return runRender(*o, *cmd); };
 }
 

@@ -16,7 +16,8 @@ namespace {
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -78,7 +79,8 @@ void saveExr(const std::string& path, const Image& image) {
   writeAtomically(path, [&](const std::string& tmp, std::string& reason) {
     const char* err = nullptr;
     // tinyexr: 4 components, FP32 storage (save_as_fp16 = 0).
-    int r = SaveEXR(image.rgba.data(), int(image.width), int(image.height), 4, 0, tmp.c_str(), &err);
+    int r =
+        SaveEXR(image.rgba.data(), int(image.width), int(image.height), 4, 0, tmp.c_str(), &err);
     if (r != TINYEXR_SUCCESS) {
       reason = err ? err : "tinyexr could not write the file";
       if (err) FreeEXRErrorMessage(err);
@@ -86,6 +88,109 @@ void saveExr(const std::string& path, const Image& image) {
     }
     return true;
   });
+}
+
+void saveExrLayers(const std::string& path, const Image& beauty,
+                   const std::vector<ExrLayer>& layers) {
+  struct Channel {
+    std::string name;
+    const Image* image;
+    int component;
+  };
+  std::vector<Channel> channels;
+  const char* rgba[] = {"R", "G", "B", "A"};
+  for (int k = 0; k < 4; ++k) channels.push_back({rgba[k], &beauty, k});
+  for (const auto& layer : layers) {
+    if (layer.channels.empty() || layer.channels.size() > 4)
+      throw Error(fmt::format("image '{}': layer '{}' needs 1 to 4 channels", path, layer.name));
+    if (layer.image.width != beauty.width || layer.image.height != beauty.height)
+      throw Error(fmt::format("image '{}': layer '{}' is {}x{}, the image {}x{}", path, layer.name,
+                              layer.image.width, layer.image.height, beauty.width, beauty.height));
+    for (size_t k = 0; k < layer.channels.size(); ++k)
+      channels.push_back({layer.name + "." + layer.channels[k], &layer.image, int(k)});
+  }
+  std::sort(channels.begin(), channels.end(),
+            [](const Channel& a, const Channel& b) { return a.name < b.name; });
+  for (size_t i = 1; i < channels.size(); ++i)
+    if (channels[i].name == channels[i - 1].name)
+      throw Error(fmt::format("image '{}': two channels named '{}'", path, channels[i].name));
+
+  const size_t pixels = size_t(beauty.width) * beauty.height;
+  std::vector<std::vector<float>> planes(channels.size(), std::vector<float>(pixels));
+  std::vector<unsigned char*> planePointers;
+  std::vector<EXRChannelInfo> infos(channels.size());
+  std::vector<int> pixelTypes(channels.size(), TINYEXR_PIXELTYPE_FLOAT);
+  for (size_t c = 0; c < channels.size(); ++c) {
+    for (size_t i = 0; i < pixels; ++i)
+      planes[c][i] = channels[c].image->rgba[i * 4 + channels[c].component];
+    planePointers.push_back(reinterpret_cast<unsigned char*>(planes[c].data()));
+    std::snprintf(infos[c].name, sizeof(infos[c].name), "%s", channels[c].name.c_str());
+  }
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.num_channels = int(channels.size());
+  header.channels = infos.data();
+  header.pixel_types = pixelTypes.data();
+  header.requested_pixel_types = pixelTypes.data();
+  header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+  EXRImage exr;
+  InitEXRImage(&exr);
+  exr.num_channels = int(channels.size());
+  exr.width = int(beauty.width);
+  exr.height = int(beauty.height);
+  exr.images = planePointers.data();
+  writeAtomically(path, [&](const std::string& tmp, std::string& reason) {
+    const char* err = nullptr;
+    if (SaveEXRImageToFile(&exr, &header, tmp.c_str(), &err) != TINYEXR_SUCCESS) {
+      reason = err ? err : "tinyexr could not write the file";
+      if (err) FreeEXRErrorMessage(err);
+      return false;
+    }
+    return true;
+  });
+}
+
+const std::vector<float>* ExrChannels::find(const std::string& name) const {
+  for (const auto& [n, values] : channels)
+    if (n == name) return &values;
+  return nullptr;
+}
+
+ExrChannels loadExrChannels(const std::string& path) {
+  EXRVersion version;
+  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS || version.multipart ||
+      version.tiled)
+    throw Error(fmt::format("image '{}': not a single-part scanline OpenEXR file", path));
+  EXRHeader header;
+  InitEXRHeader(&header);
+  const char* err = nullptr;
+  auto fail = [&](const char* what) {
+    std::string reason = err ? err : what;
+    if (err) FreeEXRErrorMessage(err);
+    throw Error(fmt::format("image '{}': {}", path, reason));
+  };
+  if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS)
+    fail("unreadable header");
+  for (int c = 0; c < header.num_channels; ++c)
+    header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+  EXRImage exr;
+  InitEXRImage(&exr);
+  if (LoadEXRImageFromFile(&exr, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    FreeEXRHeader(&header);
+    fail("unreadable pixels");
+  }
+  ExrChannels result;
+  result.width = uint32_t(exr.width);
+  result.height = uint32_t(exr.height);
+  const size_t pixels = size_t(exr.width) * exr.height;
+  for (int c = 0; c < header.num_channels; ++c) {
+    const float* plane = reinterpret_cast<const float*>(exr.images[c]);
+    result.channels.emplace_back(header.channels[c].name,
+                                 std::vector<float>(plane, plane + pixels));
+  }
+  FreeEXRImage(&exr);
+  FreeEXRHeader(&header);
+  return result;
 }
 
 Image loadExr(const std::string& path) {

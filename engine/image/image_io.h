@@ -3,6 +3,8 @@
 // temporary file beside the target, renamed into place only when complete, so
 // a failure never leaves a partial file.
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "image/image.h"
 
@@ -20,6 +22,27 @@ void checkWritable(const std::string& path);
 // Linear float RGB(A) as OpenEXR (32-bit float channels, ZIP compressed).
 void saveExr(const std::string& path, const Image& image);
 Image loadExr(const std::string& path);
+
+// A named group of channels of a layered EXR: channel k of `image` is
+// written as "<name>.<channels[k]>" (e.g. "albedo.R"), one to four of them.
+struct ExrLayer {
+  std::string name;
+  std::vector<std::string> channels;  // e.g. {"R", "G", "B"}, {"X", "Y", "Z"}, {"Z"}
+  Image image;  // same size as the beauty image; the first channels.size() used
+};
+// The beauty image as R, G, B, A (what plain EXR readers show) plus the
+// layers' channels, all 32-bit float, ZIP compressed, channels sorted by name
+// as OpenEXR requires. Atomic like saveExr.
+void saveExrLayers(const std::string& path, const Image& beauty,
+                   const std::vector<ExrLayer>& layers);
+// Every channel of an EXR file by its full name, as float rows (top row
+// first), with the image size.
+struct ExrChannels {
+  uint32_t width = 0, height = 0;
+  std::vector<std::pair<std::string, std::vector<float>>> channels;
+  const std::vector<float>* find(const std::string& name) const;
+};
+ExrChannels loadExrChannels(const std::string& path);
 // 8-bit sRGB-encoded RGBA as PNG.
 void savePng(const std::string& path, const Image8& image);
 

@@ -35,8 +35,7 @@ struct EntryPointBits {
   uint32_t bits;
 };
 constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFFECT_BITS},
-                                           {"whitted.rgen", PT_WHITTED_EFFECT_BITS},
-                                           {"triangle.rchit", PT_TRIANGLE_HIT_EFFECT_BITS}};
+                                           {"whitted.rgen", PT_WHITTED_EFFECT_BITS}};
 
 }  // namespace
 

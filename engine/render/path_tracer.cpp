@@ -19,13 +19,33 @@
 namespace penumbra::render {
 namespace {
 
-gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
+gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) {
+  return {v.x, v.y, v.z, w};
+}
 
 rhi::rt::AffineTransform toAffine(const glm::mat4& m) {
   rhi::rt::AffineTransform t{};
   for (int row = 0; row < 3; ++row)
     for (int col = 0; col < 4; ++col) t[row * 4 + col] = m[col][row];  // glm is column-major
   return t;
+}
+
+// InstanceData for a mesh instance: the TLAS transform and its inverse (in
+// double, so the inverse is as exact as float storage allows), as rows.
+gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
+                               uint32_t firstEmissiveTriangle, const glm::mat4& objectToWorld) {
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(objectToWorld));
+  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {},
+                      {},         {},          {}};
+  gpu::float4* forward[3] = {&d.objectToWorld0, &d.objectToWorld1, &d.objectToWorld2};
+  gpu::float4* backward[3] = {&d.worldToObject0, &d.worldToObject1, &d.worldToObject2};
+  for (int row = 0; row < 3; ++row) {  // glm is column-major: m[column][row]
+    *forward[row] = {objectToWorld[0][row], objectToWorld[1][row], objectToWorld[2][row],
+                     objectToWorld[3][row]};
+    *backward[row] = {float(inverse[0][row]), float(inverse[1][row]), float(inverse[2][row]),
+                      float(inverse[3][row])};
+  }
+  return d;
 }
 
 template <class T>
@@ -42,9 +62,11 @@ rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& 
 gpu::PointLight packPointLight(const scene::PointLight& l) {
   gpu::PointLight p;
   const bool spot = l.outerConeDegrees < 180.0f;
-  p.position = toFloat4(l.position, std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
+  p.position = toFloat4(l.position,
+                        std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
   p.intensity = toFloat4(l.intensity);
-  p.spot = toFloat4(glm::normalize(l.direction), spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
+  p.spot = toFloat4(glm::normalize(l.direction),
+                    spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
   return p;
 }
 
@@ -81,11 +103,12 @@ struct PathTracer::SceneBuffers {
   rhi::rt::AccelStructHandle topLevel;
   rhi::BufferHandle implicits, implicitAabbs;
   std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
-  std::vector<ImplicitFamily> implicitFamilies;                  // hit groups PT_RAY_TYPES * (1 + i) on are family i's
+  std::vector<ImplicitFamily>
+      implicitFamilies;  // hit groups PT_RAY_TYPES * (1 + i) on are family i's
 };
 
-PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
-                       const PipelineOptions& options)
+PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
+                       uint32_t height, const PipelineOptions& options)
     : device_(device), width_(width), height_(height), options_(options), camera_(scene.camera) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
@@ -118,6 +141,14 @@ void PathTracer::createAccumulation() {
   tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
   tex.debugName = "accumulation";
   accumulation_ = device_.createTexture(tex);
+  tex.debugName = "guide albedo";
+  guides_.albedo = device_.createTexture(tex);
+  tex.debugName = "guide normal and depth";
+  guides_.normalDepth = device_.createTexture(tex);
+  tex.debugName = "guide emission";
+  guides_.emission = device_.createTexture(tex);
+  tex.debugName = "guide moments";
+  guides_.moments = device_.createTexture(tex);
 }
 
 void PathTracer::resize(uint32_t width, uint32_t height) {
@@ -131,7 +162,8 @@ void PathTracer::resize(uint32_t width, uint32_t height) {
   createAccumulation();
   for (int i = 0; i < 2; ++i)
     if (pipelines_[i].pipeline)
-      pipelines_[i].bindings = createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
+      pipelines_[i].bindings =
+          createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
   resetAccumulation();
 }
 
@@ -161,7 +193,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   std::vector<gpu::MaterialData> materials;
   for (const auto& m : scene.materials) materials.push_back(packMaterial(m));
   materials_ = scene.materials;
-  for (const auto& inst : scene.instances) drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
+  for (const auto& inst : scene.instances)
+    drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
   for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
   std::vector<gpu::PointLight> pointLights;
   for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l));
@@ -176,8 +209,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   for (const auto& inst : scene.instances) {
     const auto& mesh = scene.meshes[inst.mesh];
     const auto& material = scene.materials[mesh.material];
-    gpu::InstanceData data{firstIndex[inst.mesh], firstVertex[inst.mesh], mesh.material,
-                           PT_NO_EMISSION};
+    gpu::InstanceData data = instanceData(firstIndex[inst.mesh], firstVertex[inst.mesh],
+                                          mesh.material, PT_NO_EMISSION, inst.transform);
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = uint32_t(emissive.size());
       // A mirroring transform reverses the winding of the world-space corners;
@@ -186,11 +219,13 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
       // A textured emitter is chosen by its mean radiance; the shader
       // multiplies the texture in where it samples.
       const bool textured = material.emissiveTexture != scene::Material::kNoTexture;
-      const scene::TextureRef* emissionRef = textured ? &scene.textureRefs[material.emissiveTexture] : nullptr;
+      const scene::TextureRef* emissionRef =
+          textured ? &scene.textureRefs[material.emissiveTexture] : nullptr;
       const glm::vec3 meanEmission =
           textured ? material.emission * meanLinearColor(scene.textures[emissionRef->texture])
                    : material.emission;
-      const double lum = 0.2126 * meanEmission.x + 0.7152 * meanEmission.y + 0.0722 * meanEmission.z;
+      const double lum =
+          0.2126 * meanEmission.x + 0.7152 * meanEmission.y + 0.0722 * meanEmission.z;
       const auto& uvSet = emissionRef && emissionRef->texCoord == 1 ? mesh.uv1 : mesh.uv0;
       uint32_t emissionTexture = textured ? material.emissiveTexture : PT_NO_TEXTURE;
       float emissionTextureBits;
@@ -222,7 +257,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   }
   for (const auto& object : scene.implicits) {
     const bool emits = scene.materials[object.material].isEmissive();
-    instances.push_back({0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION});
+    instances.push_back(instanceData(
+        0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION, glm::mat4(1.0f)));
   }
   double totalPower = 0;
   for (double p : power) totalPower += p;
@@ -268,12 +304,16 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   }
   if (!indices.empty())
     cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
-  cmd->writeBuffer(s.instances.get(), instances.data(), instances.size() * sizeof(gpu::InstanceData));
-  cmd->writeBuffer(s.materials.get(), materials.data(), materials.size() * sizeof(gpu::MaterialData));
+  cmd->writeBuffer(s.instances.get(), instances.data(),
+                   instances.size() * sizeof(gpu::InstanceData));
+  cmd->writeBuffer(s.materials.get(), materials.data(),
+                   materials.size() * sizeof(gpu::MaterialData));
   if (!emissive.empty())
-    cmd->writeBuffer(s.emissive.get(), emissive.data(), emissive.size() * sizeof(gpu::EmissiveTriangle));
+    cmd->writeBuffer(s.emissive.get(), emissive.data(),
+                     emissive.size() * sizeof(gpu::EmissiveTriangle));
   if (!pointLights.empty())
-    cmd->writeBuffer(s.pointLights.get(), pointLights.data(), pointLights.size() * sizeof(gpu::PointLight));
+    cmd->writeBuffer(s.pointLights.get(), pointLights.data(),
+                     pointLights.size() * sizeof(gpu::PointLight));
   s.textures = uploadSceneTextures(device_, *cmd, scene);
   s.textureRefs = makeStorageBuffer(device_, s.textures.refs, BufferUsage::None, "texture refs");
   cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
@@ -319,7 +359,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   tlas.topLevelMaxInstances = uint32_t(tlasInstances.size());
   tlas.debugName = "TLAS " + scene.name;
   s.topLevel = device_.createAccelStruct(tlas);
-  cmd->buildTopLevelAccelStruct(s.topLevel.get(), tlasInstances.data(), uint32_t(tlasInstances.size()));
+  cmd->buildTopLevelAccelStruct(s.topLevel.get(), tlasInstances.data(),
+                                uint32_t(tlasInstances.size()));
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
@@ -337,7 +378,8 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
   // The full pipeline holds every family's hit group, in enum order, whether
   // the scene uses it or not; a specialized one only the families present.
   if (pipelineEffects_ == uint32_t(PT_EFFECTS_ALL))
-    for (uint32_t f = 0; f < kImplicitFamilyCount; ++f) s.implicitFamilies.push_back(ImplicitFamily(f));
+    for (uint32_t f = 0; f < kImplicitFamilyCount; ++f)
+      s.implicitFamilies.push_back(ImplicitFamily(f));
   else
     for (const auto& range : layout.families) s.implicitFamilies.push_back(range.family);
   if (layout.data.empty()) return;
@@ -364,7 +406,8 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
     d.instanceID = range.firstObject;
     d.instanceMask = 0xff;
     const auto slot = std::find(s.implicitFamilies.begin(), s.implicitFamilies.end(), range.family);
-    d.instanceContributionToHitGroupIndex = PT_RAY_TYPES * (1 + uint32_t(slot - s.implicitFamilies.begin()));
+    d.instanceContributionToHitGroupIndex =
+        PT_RAY_TYPES * (1 + uint32_t(slot - s.implicitFamilies.begin()));
     d.bottomLevelAddress = s.implicitBottomLevels.back()->deviceAddress();
     tlasInstances.push_back(d);
   }
@@ -377,18 +420,15 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
   const char* rayGen = kNames[int(rayGeneration)];
   // The shading ray-generation shaders are what the effect set specializes;
   // their export names stay the plain ones.
-  rhi::ShaderDesc rayGenShader =
-      rayGeneration == RayGeneration::Probe
-          ? shaders::shaderDesc(rayGen)
-          : shaders::shaderDesc(effectVariant(rayGen, pipelineEffects_));
+  rhi::ShaderDesc rayGenShader = rayGeneration == RayGeneration::Probe
+                                     ? shaders::shaderDesc(rayGen)
+                                     : shaders::shaderDesc(effectVariant(rayGen, pipelineEffects_));
   rayGenShader.exportName = rayGen;
 
   rhi::RayTracingPipelineDesc desc;
   desc.debugName = fmt::format("{} (effects {:#x})", rayGen, pipelineEffects_);
-  rhi::ShaderDesc triangleHit = shaders::shaderDesc(effectVariant("triangle.rchit", pipelineEffects_));
-  triangleHit.exportName = "triangle.rchit";
   desc.shaders = {rayGenShader, shaders::shaderDesc("path_trace.rmiss"),
-                  shaders::shaderDesc("shadow.rmiss"), triangleHit};
+                  shaders::shaderDesc("shadow.rmiss"), shaders::shaderDesc("triangle.rchit")};
   // PT_RAY_TYPES hit groups per geometry kind, radiance then shadow (the
   // shadow ones without closest hit: shadow rays skip it). The triangles'
   // come first, with the alpha any-hit when the scene has alpha-cut
@@ -408,11 +448,13 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
   for (ImplicitFamily family : scene_->implicitFamilies) {
     const std::string name = implicitHitGroupName(family);
     desc.shaders.push_back(shaders::shaderDesc(implicitIntersectionShader(family)));
-    desc.hitGroups.push_back({name, "implicit.rchit", "", implicitIntersectionShader(family), true});
+    desc.hitGroups.push_back(
+        {name, "implicit.rchit", "", implicitIntersectionShader(family), true});
     desc.hitGroups.push_back({name + ".shadow", "", "", implicitIntersectionShader(family), true});
   }
-  static_assert(PT_RAY_TYPES == 2 && PT_RAY_RADIANCE == 0, "hit groups are listed radiance, shadow");
-  desc.maxPayloadBytes = 76;    // SurfaceHit (surface_hit.hlsli)
+  static_assert(PT_RAY_TYPES == 2 && PT_RAY_RADIANCE == 0,
+                "hit groups are listed radiance, shadow");
+  desc.maxPayloadBytes = 24;    // HitRecord (hit_record.hlsli)
   desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
   desc.maxRecursionDepth = 1;   // only the ray generation shader traces
   const auto start = std::chrono::steady_clock::now();
@@ -435,23 +477,26 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
                                                  const rhi::BufferHandle& probeHits,
                                                  const char* name) {
   using Item = rhi::BindingSetItem;
-  std::vector<Item> items = {
-      Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
-      Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
-      Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
-      Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
-      Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
-      Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
-      Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
-      Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
-      Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
-      Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
-      Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
-      Item::storageBuffer(PT_SLOT_TEXTURE_REFS, scene_->textureRefs),
-      Item::sampledTextures(PT_SLOT_TEXTURES, scene_->textures.textures),
-      Item::samplers(PT_SLOT_SAMPLERS, scene_->textures.samplers),
-      Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
-      Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
+  std::vector<Item> items = {Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
+                             Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
+                             Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
+                             Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
+                             Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
+                             Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
+                             Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
+                             Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
+                             Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
+                             Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
+                             Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
+                             Item::storageBuffer(PT_SLOT_TEXTURE_REFS, scene_->textureRefs),
+                             Item::sampledTextures(PT_SLOT_TEXTURES, scene_->textures.textures),
+                             Item::samplers(PT_SLOT_SAMPLERS, scene_->textures.samplers),
+                             Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
+                             Item::storageTexture(PT_SLOT_GUIDE_ALBEDO, guides_.albedo),
+                             Item::storageTexture(PT_SLOT_GUIDE_NORMAL_DEPTH, guides_.normalDepth),
+                             Item::storageTexture(PT_SLOT_GUIDE_EMISSION, guides_.emission),
+                             Item::storageTexture(PT_SLOT_GUIDE_MOMENTS, guides_.moments),
+                             Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
   if (probeRays) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_RAYS, probeRays));
   if (probeHits) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_HITS, probeHits));
   // Bind what this pipeline's shaders declare (each ray-generation shader
@@ -460,7 +505,8 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
   rhi::BindingSetDesc set;
   set.debugName = name;
   for (const auto& item : items)
-    if (std::any_of(declared.begin(), declared.end(), [&](const auto& d) { return d.slot == item.slot; }))
+    if (std::any_of(declared.begin(), declared.end(),
+                    [&](const auto& d) { return d.slot == item.slot; }))
       set.items.push_back(item);
   return device_.createBindingSet(set, pipeline);
 }
@@ -476,15 +522,17 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
                             materials.size(), materials_.size()));
   for (size_t i = 0; i < materials.size(); ++i)
     if (materials[i].emission != materials_[i].emission)
-      throw Error(fmt::format("path tracer: material '{}' changes its emission; emitters are fixed "
-                              "when the scene is uploaded",
-                              materials[i].name));
+      throw Error(
+          fmt::format("path tracer: material '{}' changes its emission; emitters are fixed "
+                      "when the scene is uploaded",
+                      materials[i].name));
   materials_ = materials;
   std::vector<gpu::MaterialData> packed;
   for (const auto& m : materials_) packed.push_back(packMaterial(m));
   auto* cmd = commandList_.get();
   cmd->open();
-  cmd->writeBuffer(scene_->materials.get(), packed.data(), packed.size() * sizeof(gpu::MaterialData));
+  cmd->writeBuffer(scene_->materials.get(), packed.data(),
+                   packed.size() * sizeof(gpu::MaterialData));
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
@@ -503,15 +551,32 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   return true;
 }
 
+CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height) {
+  const glm::vec3 forward = glm::normalize(camera.forward);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  return {toFloat4(camera.position, std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f)),
+          toFloat4(right, float(width) / float(height)), toFloat4(up), toFloat4(forward)};
+}
+
 uint32_t frameFlags(const PathTracerSettings& s) {
   uint32_t flags = 0;
   uint32_t directions = PT_DIRECTIONS_BSDF;
   switch (s.strategy) {
-    case SamplingStrategy::Uniform: directions = PT_DIRECTIONS_UNIFORM; break;
-    case SamplingStrategy::Cosine: directions = PT_DIRECTIONS_COSINE; break;
-    case SamplingStrategy::Bsdf: break;
-    case SamplingStrategy::Nee: flags |= PT_FLAG_NEE; break;
-    case SamplingStrategy::Mis: flags |= PT_FLAG_NEE | PT_FLAG_MIS; break;
+    case SamplingStrategy::Uniform:
+      directions = PT_DIRECTIONS_UNIFORM;
+      break;
+    case SamplingStrategy::Cosine:
+      directions = PT_DIRECTIONS_COSINE;
+      break;
+    case SamplingStrategy::Bsdf:
+      break;
+    case SamplingStrategy::Nee:
+      flags |= PT_FLAG_NEE;
+      break;
+    case SamplingStrategy::Mis:
+      flags |= PT_FLAG_NEE | PT_FLAG_MIS;
+      break;
   }
   if (s.misHeuristic == MisHeuristic::Balance) flags |= PT_FLAG_BALANCE_HEURISTIC;
   if (s.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
@@ -540,23 +605,22 @@ FrameQueries PathTracer::createFrameQueries() {
   return queries;
 }
 
-void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& settings, uint32_t samples,
-                             FrameQueries& queries) {
+void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& settings,
+                             uint32_t samples, FrameQueries& queries) {
   if (!(settings.radianceClamp >= 0.0f))
     throw Error("path tracer: the radiance clamp must be >= 0 (0 = off)");
   if (samples < 1 || samples > kMaxSamplesPerFrame)
     throw Error(fmt::format("path tracer: {} samples per frame is outside 1..{}", samples,
                             kMaxSamplesPerFrame));
   gpu::FrameConstants c;
-  const glm::vec3 forward = glm::normalize(camera_.forward);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  c.cameraPosition = toFloat4(camera_.position, std::tan(glm::radians(camera_.verticalFovDegrees) * 0.5f));
-  c.cameraRight = toFloat4(right, float(width_) / float(height_));
-  c.cameraUp = toFloat4(up);
-  c.cameraForward = toFloat4(forward);
+  const CameraFrame camera = cameraFrame(camera_, width_, height_);
+  c.cameraPosition = camera.position;
+  c.cameraRight = camera.right;
+  c.cameraUp = camera.up;
+  c.cameraForward = camera.forward;
   c.image = {width_, height_, samples, accumulatedSamples_};
-  c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth, frameFlags(settings)};
+  c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth,
+                frameFlags(settings)};
   c.lights = {emissiveTriangleCount_, pointLightCount_, 0, 0};
   c.shading = toFloat4(ambient_, settings.radianceClamp);
 
@@ -585,6 +649,13 @@ FrameStats PathTracer::frameStats(FrameQueries& queries) {
 }
 
 image::Image PathTracer::readback() {
+  return readback(accumulation_);
+}
+
+image::Image PathTracer::readback(const rhi::TextureHandle& texture) {
+  if (texture->desc().format != rhi::Format::RGBA32_FLOAT || texture->desc().width != width_ ||
+      texture->desc().height != height_)
+    throw Error("path tracer: readback needs an RGBA32F texture of the image's size");
   rhi::BufferDesc desc;
   desc.byteSize = uint64_t(width_) * height_ * 16;
   desc.usage = rhi::BufferUsage::CopyDest;
@@ -593,7 +664,7 @@ image::Image PathTracer::readback() {
   auto buffer = device_.createBuffer(desc);
   auto* cmd = commandList_.get();
   cmd->open();
-  cmd->copyTextureToBuffer(accumulation_.get(), buffer.get());
+  cmd->copyTextureToBuffer(texture.get(), buffer.get());
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();

@@ -35,7 +35,7 @@ struct PathTracerSettings {
   uint32_t maxDepth = 8;            // bounces after the camera ray (Whitted: recursion depth)
   uint32_t rouletteStartDepth = 3;  // Russian roulette from this bounce on
   bool russianRoulette = true;
-  float radianceClamp = 0.0f;       // largest channel of one sample's contribution; 0 = off
+  float radianceClamp = 0.0f;  // largest channel of one sample's contribution; 0 = off
   uint32_t seed = 0;
 };
 
@@ -60,6 +60,13 @@ struct FrameQueries {
   uint32_t samples = 0;
 };
 
+// The camera as the shaders see it (FrameConstants' first four rows): xyz
+// position, w tan(vertical fov / 2); unit right (w aspect), up, forward.
+struct CameraFrame {
+  gpu::float4 position, right, up, forward;
+};
+CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height);
+
 // FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);
 
@@ -83,6 +90,17 @@ struct SurfaceHit {
   bool isHit() const { return hitT >= 0.0f; }
 };
 
+// The denoiser's guide buffers, written by the path tracer beside the
+// accumulation (running means over the same samples; PT_U_GUIDE_* in
+// path_tracer_shared.h says what each channel holds). The Whitted
+// integrator leaves them untouched.
+struct GuideBuffers {
+  rhi::TextureHandle albedo;
+  rhi::TextureHandle normalDepth;
+  rhi::TextureHandle emission;
+  rhi::TextureHandle moments;
+};
+
 class PathTracer {
  public:
   static constexpr uint32_t kMaxSamplesPerFrame = 16;
@@ -98,8 +116,8 @@ class PathTracer {
   // The same frame recorded into the caller's open command list, nothing
   // submitted or waited for: the viewer renders, displays and presents in one
   // list and keeps several frames in flight. `queries` must not be in flight.
-  void recordFrame(rhi::ICommandList& commandList, const PathTracerSettings& settings, uint32_t samples,
-                   FrameQueries& queries);
+  void recordFrame(rhi::ICommandList& commandList, const PathTracerSettings& settings,
+                   uint32_t samples, FrameQueries& queries);
   FrameQueries createFrameQueries();
   // The statistics of the frame last recorded with `queries`; the GPU must
   // have finished it (its command list's next open() waits for that).
@@ -128,7 +146,10 @@ class PathTracer {
 
   // The running mean, linear RGB (alpha 1).
   image::Image readback();
+  // Any of this tracer's images (accumulation or a guide buffer), RGBA float.
+  image::Image readback(const rhi::TextureHandle& texture);
   const rhi::TextureHandle& accumulation() const { return accumulation_; }
+  const GuideBuffers& guides() const { return guides_; }
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   uint32_t emissiveTriangleCount() const { return emissiveTriangleCount_; }
@@ -174,6 +195,7 @@ class PathTracer {
   glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;
+  GuideBuffers guides_;
   rhi::BufferHandle rayCounter_;
   RayGenerationPipeline pipelines_[3];
   rhi::CommandListHandle commandList_;

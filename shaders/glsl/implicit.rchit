@@ -4,12 +4,14 @@
 #include "implicit.hlsli"
 
 // Closest hit of every implicit family: the intersection shader already
-// found the distance and the object-space normal.
-layout(location = PT_PAYLOAD_RADIANCE) rayPayloadInEXT SurfaceHit gHit;
+// found the distance and the object-space normal; the ray generation shader
+// rebuilds the surface (surface_from_record.hlsli).
+layout(location = PT_PAYLOAD_RADIANCE) rayPayloadInEXT HitRecord gHit;
 hitAttributeEXT ImplicitAttributes gAttributes;
 
 void main() {
-  ImplicitData object = loadImplicit(uint(gl_InstanceCustomIndexEXT) + uint(gl_PrimitiveID));
-  gHit = implicitSurfaceHit(object, gl_WorldRayOriginEXT, gl_WorldRayDirectionEXT, gl_HitTEXT,
-                            gAttributes.objectNormal);
+  gHit.hitT = gl_HitTEXT;
+  gHit.instance = 0u;
+  gHit.primitive = PT_HIT_IMPLICIT | (uint(gl_InstanceCustomIndexEXT) + uint(gl_PrimitiveID));
+  gHit.attributes = gAttributes.objectNormal;
 }

@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_tracing : require
 #include "hlsl_prelude.glsl"
-#include "surface_hit.hlsli"
+#include "hit_record.hlsli"
 
-layout(location = 0) rayPayloadInEXT SurfaceHit gHit;
+layout(location = 0) rayPayloadInEXT HitRecord gHit;
 
-void main() { gHit = surfaceMiss(); }
+void main() { gHit = hitRecordMiss(); }

@@ -4,6 +4,7 @@
 #include "hlsl_prelude.glsl"
 #include "path_tracer_shared.h"
 #include "math.hlsli"
+#include "hit_record.hlsli"
 #include "surface_hit.hlsli"
 
 #define PT_PAYLOAD_RADIANCE 0
@@ -55,3 +56,8 @@ uint3 triangleVertices(InstanceData instance, uint primitive) {
   uint base = instance.firstIndex + 3u * primitive;
   return uint3(gIndices[base], gIndices[base + 1u], gIndices[base + 2u]) + instance.firstVertex;
 }
+float3 loadVertexPosition(uint vertex) { return gVertices[vertex].xyz; }
+float3 loadVertexNormal(uint vertex) { return gNormals[vertex].xyz; }
+float4 loadVertexTangent(uint vertex) { return gTangents[vertex]; }
+float4 loadVertexTexCoords(uint vertex) { return gTexCoords[vertex]; }
+#include "surface_from_record.hlsli"

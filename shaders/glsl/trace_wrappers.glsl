@@ -1,5 +1,5 @@
 // traceClosest / traceVisibility for ray-generation shaders that declare the
-// gHit and gVisible payloads and the gRaysThisLaunch counter, plus the
+// gHit (HitRecord) and gVisible payloads and the gRaysThisLaunch counter, plus the
 // running-mean accumulation into gAccumulation.
 // No opaque ray flag: geometry decides, and only alpha-masked meshes are
 // non-opaque (their any-hit shader cuts texels away for both kinds of ray).
@@ -7,7 +7,7 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   gRaysThisLaunch += 1u;
   traceRayEXT(gScene, gl_RayFlagsNoneEXT, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, origin,
               0.0, direction, 1e30, PT_PAYLOAD_RADIANCE);
-  return gHit;
+  return surfaceFromRecord(origin, direction, gHit);
 }
 
 bool traceVisibility(float3 origin, float3 direction, float tMax) {

@@ -55,6 +55,12 @@ InstanceData loadInstanceData(uint index) {
   m.firstVertex = 0u;
   m.materialIndex = 0u;
   m.firstEmissiveTriangle = 0u;
+  m.objectToWorld0 = float4(1.0, 0.0, 0.0, 0.0);
+  m.objectToWorld1 = float4(0.0, 1.0, 0.0, 0.0);
+  m.objectToWorld2 = float4(0.0, 0.0, 1.0, 0.0);
+  m.worldToObject0 = m.objectToWorld0;
+  m.worldToObject1 = m.objectToWorld1;
+  m.worldToObject2 = m.objectToWorld2;
   return m;
 }
 
@@ -109,6 +115,16 @@ TextureRefData loadTextureRef(uint index) {
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) { return float4(1.0, 1.0, 1.0, 1.0); }
 #include "textures.hlsli"
 
+// The harness has no meshes; these only let the record decoding of the ray
+// generation shaders (surface_from_record.hlsli) compile through this front-end.
+ImplicitData loadImplicit(uint index) { return (ImplicitData)0; }
+uint3 triangleVertices(InstanceData instance, uint primitive) { return uint3(0u, 1u, 2u); }
+float3 loadVertexPosition(uint vertex) { return float3(float(vertex == 1u), float(vertex == 2u), 0.0); }
+float3 loadVertexNormal(uint vertex) { return float3(0.0, 0.0, 1.0); }
+float4 loadVertexTangent(uint vertex) { return float4(1.0, 0.0, 0.0, 1.0); }
+float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
+#include "surface_from_record.hlsli"
+
 #include "camera.hlsli"
 #include "path_tracer.hlsli"
 
@@ -123,7 +139,8 @@ void main(uint3 id : SV_DispatchThreadID) {
     Rng rng = rngCreate(pixel, s, c.sampling.x);
     float2 jitter = jitteredPixelSample(s, c.image.z, rngNext(rng), rngNext(rng));
     float3 direction = cameraRayDirection(c, float2(pixel) + jitter);
-    sum += tracePath(c, c.cameraPosition.xyz, direction, rng);
+    PathGuides guides;
+    sum += tracePath(c, c.cameraPosition.xyz, direction, rng, guides);
   }
   gOutput[pixelIndex] = float4(sum / float(c.image.z), 1.0);
 }

@@ -4,8 +4,9 @@
 #include "implicit.hlsli"
 
 [shader("closesthit")]
-void main(inout SurfaceHit hit, in ImplicitAttributes attributes) {
-  ImplicitData object = loadImplicit(InstanceID() + PrimitiveIndex());
-  hit = implicitSurfaceHit(object, WorldRayOrigin(), WorldRayDirection(), RayTCurrent(),
-                           attributes.objectNormal);
+void main(inout HitRecord hit, in ImplicitAttributes attributes) {
+  hit.hitT = RayTCurrent();
+  hit.instance = 0u;
+  hit.primitive = PT_HIT_IMPLICIT | (InstanceID() + PrimitiveIndex());
+  hit.attributes = attributes.objectNormal;
 }

@@ -13,7 +13,9 @@ void main() {
   ImplicitData object = loadImplicit(InstanceID() + PrimitiveIndex());
   ObjectRay ray =
       objectRay(object, WorldRayOrigin(), WorldRayDirection(), RayTMin(), RayTCurrent());
-  ImplicitHit hit = sphereTrace(object, ray);
+  // Shadow rays skip the closest-hit shader, so they need no normal.
+  bool needNormal = (RayFlags() & RAY_FLAG_SKIP_CLOSEST_HIT_SHADER) == 0u;
+  ImplicitHit hit = sphereTrace(object, ray, needNormal);
   if (hit.s >= 0.0) {
     ImplicitAttributes attributes;
     attributes.objectNormal = hit.normal;

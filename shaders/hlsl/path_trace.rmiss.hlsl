@@ -2,4 +2,4 @@
 #include "payloads.hlsli"
 
 [shader("miss")]
-void main(inout SurfaceHit hit) { hit = surfaceMiss(); }
+void main(inout HitRecord hit) { hit = hitRecordMiss(); }

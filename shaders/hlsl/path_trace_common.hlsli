@@ -51,5 +51,10 @@ uint3 triangleVertices(InstanceData instance, uint primitive) {
   uint base = instance.firstIndex + 3u * primitive;
   return uint3(gIndices[base], gIndices[base + 1u], gIndices[base + 2u]) + instance.firstVertex;
 }
+float3 loadVertexPosition(uint vertex) { return gVertices[vertex].xyz; }
+float3 loadVertexNormal(uint vertex) { return gNormals[vertex].xyz; }
+float4 loadVertexTangent(uint vertex) { return gTangents[vertex]; }
+float4 loadVertexTexCoords(uint vertex) { return gTexCoords[vertex]; }
+#include "surface_from_record.hlsli"
 
 #endif

@@ -15,7 +15,7 @@ void main() {
   ray.Direction = probe.direction.xyz;
   ray.TMin = 0.0;
   ray.TMax = probe.origin.w;
-  SurfaceHit hit = surfaceMiss();
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, hit);
-  gProbeHits[index] = packProbeHit(hit);
+  HitRecord record = hitRecordMiss();
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, record);
+  gProbeHits[index] = packProbeHit(surfaceFromRecord(ray.Origin, ray.Direction, record));
 }

@@ -15,9 +15,9 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   ray.Direction = direction;
   ray.TMin = 0.0;
   ray.TMax = 1e30;
-  SurfaceHit hit = surfaceMiss();
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, hit);
-  return hit;
+  HitRecord record = hitRecordMiss();
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, record);
+  return surfaceFromRecord(origin, direction, record);
 }
 
 bool traceVisibility(float3 origin, float3 direction, float tMax) {

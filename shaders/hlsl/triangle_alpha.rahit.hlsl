@@ -3,6 +3,6 @@
 #include "alpha_any_hit.hlsli"
 
 [shader("anyhit")]
-void main(inout SurfaceHit hit, in BuiltInTriangleIntersectionAttributes attributes) {
+void main(inout HitRecord hit, in BuiltInTriangleIntersectionAttributes attributes) {
   if (!alphaAnyHitKeeps(attributes)) IgnoreHit();
 }

@@ -76,6 +76,31 @@ ShadowRay noShadowRay() {
   return r;
 }
 
+// The shadow ray towards a point or spot light from a path vertex at
+// `position`, carrying the light's contribution if nothing blocks it.
+ShadowRay pointLightShadowRay(PointLight light, DisneyMaterial material, Frame frame, float3 position,
+                              float3 ng, float3 direction, float3 wo, float3 throughput, float clampLimit) {
+  ShadowRay r = noShadowRay();
+  float3 wi;
+  float distance;
+  float3 incident = pointLightIncident(light, position, wi, distance);
+  float3 wiLocal = frameToLocal(frame, wi);
+  if (maxComponent(incident) <= 0.0 || wiLocal.z == 0.0 ||
+      !shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z))
+    return r;
+  BsdfEval e = disneyEval(material, wo, wiLocal);
+  if (maxComponent(e.f) <= 0.0) return r;
+  float3 spawn = offsetRayOrigin(position, dot(wi, ng) > 0.0 ? ng : -ng);
+  float3 toLight = light.position.xyz - spawn;
+  float shadowLength = length(toLight);
+  if (!(shadowLength > 0.0)) return r;
+  r.origin = spawn;
+  r.direction = toLight / shadowLength;
+  r.tMax = shadowLength;
+  r.contribution = clampContribution(throughput * e.f * incident * abs(wiLocal.z), clampLimit);
+  return r;
+}
+
 // The next direction at a path vertex by the strategy in `flags` (BSDF
 // sampling, or uniform / cosine directions for study), with the throughput
 // update and Russian roulette; false ends the path.
@@ -131,7 +156,27 @@ bool scatter(FrameConstants c, DisneyMaterial material, Frame frame, float3 ng, 
   return true;
 }
 
-// Radiance arriving along (origin, direction).
+// What the denoiser needs of one sample's path, at its first non-delta
+// vertex: a mirror or smooth glass passes the guides on to the surface seen
+// through it ("primary surface replacement"), so a reflection is filtered
+// with the reflected surface's albedo, normal and depth.
+struct PathGuides {
+  float3 albedo;    // demodulation albedo (base colour) times the throughput of the delta chain before it
+  float3 normal;    // world shading normal; zero where the path found no surface
+  float3 emission;  // the part of the radiance emitted along the chain, up to and including it
+  float distance;   // length of the unfolded path from the camera to it; 0: no surface
+};
+
+PathGuides noGuides() {
+  PathGuides g;
+  g.albedo = zero3();
+  g.normal = zero3();
+  g.emission = zero3();
+  g.distance = 0.0;
+  return g;
+}
+
+// Radiance arriving along (origin, direction), and the path's guides.
 //
 // Each vertex first prepares its shadow rays (the light sample and the BSDF
 // value towards it), then samples the next direction, and traces the shadow
@@ -140,7 +185,7 @@ bool scatter(FrameConstants c, DisneyMaterial material, Frame frame, float3 ng, 
 // material and shading frame: whatever is alive across a trace is saved and
 // restored around it. The random numbers are drawn in the same order as
 // when the shadow ray was traced before the bounce was sampled.
-float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rng) {
+float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rng, out PathGuides guides) {
   // Locals are not `const`: GLSL allows const only for constant expressions.
   uint flags = c.sampling.w;
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
@@ -152,10 +197,15 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
   float3 throughput = splat3(1.0);
   float previousPdf = 0.0;
   bool previousDelta = true;  // the camera ray counts as a delta "bounce"
+  guides = noGuides();
+  bool guidesOpen = true;  // every vertex so far was delta: the guides are still ahead
+  float3 chainThroughput = splat3(1.0);
+  float chainLength = 0.0;
 
   for (uint depth = 0u;; depth += 1u) {
     SurfaceHit hit = traceClosest(origin, direction);
     if (hit.hitT < 0.0) break;  // no environment light yet
+    float3 radianceBefore = radiance;
     InstanceData instance = loadInstanceData(hit.instanceIndex);
     MaterialData data = loadMaterial(instance.materialIndex);
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
@@ -182,9 +232,17 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
       // NEE without MIS: this light was already counted by a shadow ray.
     }
 #endif
+    DisneyMaterial material = unpackDisney(data);
+    if (guidesOpen) {
+      // Provisionally this vertex; a delta scatter below passes them on.
+      chainLength += hit.hitT;
+      guides.emission += radiance - radianceBefore;
+      guides.albedo = chainThroughput * material.baseColor;
+      guides.normal = shadingNormalFor(hit, -direction);
+      guides.distance = chainLength;
+    }
     if (depth >= maxDepth) break;
 
-    DisneyMaterial material = unpackDisney(data);
     // The BSDF sees the shading frame; rays leave from the geometric surface,
     // and every direction must be on the same geometric side as the shading
     // frame says (shadingConsistent), so interpolated normals leak no light.
@@ -227,42 +285,30 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
       }
     }
 #endif
-    ShadowRay deltaShadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-    // One point or spot light per vertex, chosen uniformly (weight: the
-    // count), so each vertex traces at most two shadow rays.
-    if (useNee && c.lights.y > 0u) {
-      uint l = c.lights.y == 1u ? 0u : min(uint(rngNext(rng) * float(c.lights.y)), c.lights.y - 1u);
-      PointLight pl = loadPointLight(l);
-      float3 wi;
-      float distance;
-      float3 incident = pointLightIncident(pl, hit.position, wi, distance);
-      float3 wiLocal = frameToLocal(frame, wi);
-      if (maxComponent(incident) > 0.0 && wiLocal.z != 0.0 &&
-          shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z)) {
-        BsdfEval e = disneyEval(material, wo, wiLocal);
-        if (maxComponent(e.f) > 0.0) {
-          float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
-          float3 toLight = pl.position.xyz - spawn;
-          float shadowLength = length(toLight);
-          deltaShadow.origin = spawn;
-          deltaShadow.direction = toLight / shadowLength;
-          deltaShadow.tMax = shadowLength;
-          deltaShadow.contribution =
-              clampContribution(throughput * e.f * incident * (abs(wiLocal.z) * float(c.lights.y)), clampLimit);
-        }
-      }
-    }
+    float3 vertexThroughput = throughput;  // the point lights' shadow rays are built after the scatter
 #endif
 
     float3 wiWorld;
     bool continues =
         scatter(c, material, frame, ng, direction, wo, depth, rng, throughput, previousPdf, previousDelta, wiWorld);
     float3 nextOrigin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
+    guidesOpen = guidesOpen && continues && previousDelta;
+    chainThroughput = throughput;
 
-    // One trace call site for every shadow ray of the vertex.
-    for (uint k = 0u; k < 2u; k += 1u) {
-      ShadowRay shadow = k == 0u ? areaShadow : deltaShadow;
+    // One trace call site for every shadow ray of the vertex: the area
+    // light's, then one per point or spot light.
+    uint shadowRays = 1u;
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+    if (useNee) shadowRays += c.lights.y;
+#endif
+    for (uint k = 0u; k < shadowRays; k += 1u) {
+      ShadowRay shadow = areaShadow;
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+      if (k > 0u)
+        shadow = pointLightShadowRay(loadPointLight(k - 1u), material, frame, hit.position, ng, direction, wo,
+                                     vertexThroughput, clampLimit);
+#endif
       if (shadow.tMax > 0.0 && traceVisibility(shadow.origin, shadow.direction, shadow.tMax))
         radiance += shadow.contribution;
     }

@@ -34,6 +34,12 @@ namespace penumbra::gpu {
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
 #define PT_U_PROBE_HITS 2          // ProbeHit per ProbeRay
+// The denoiser's guide buffers (path_trace.rgen; running means like the
+// accumulation, over the first non-delta vertex of each sample's path):
+#define PT_U_GUIDE_ALBEDO 3        // rgb demodulation albedo (times the delta chain's throughput)
+#define PT_U_GUIDE_NORMAL_DEPTH 4  // xyz shading normal (mean, not renormalised); w linear view depth, 0: no surface
+#define PT_U_GUIDE_EMISSION 5      // rgb radiance emitted there towards the camera (not filtered)
+#define PT_U_GUIDE_MOMENTS 6       // x mean luminance of (radiance - emission) per sample, y its mean square
 #define PT_SLOT_SCENE PENUMBRA_T(PT_T_SCENE)
 #define PT_SLOT_VERTICES PENUMBRA_T(PT_T_VERTICES)
 #define PT_SLOT_INDICES PENUMBRA_T(PT_T_INDICES)
@@ -52,6 +58,10 @@ namespace penumbra::gpu {
 #define PT_SLOT_ACCUMULATION PENUMBRA_U(PT_U_ACCUMULATION)
 #define PT_SLOT_RAY_COUNTER PENUMBRA_U(PT_U_RAY_COUNTER)
 #define PT_SLOT_PROBE_HITS PENUMBRA_U(PT_U_PROBE_HITS)
+#define PT_SLOT_GUIDE_ALBEDO PENUMBRA_U(PT_U_GUIDE_ALBEDO)
+#define PT_SLOT_GUIDE_NORMAL_DEPTH PENUMBRA_U(PT_U_GUIDE_NORMAL_DEPTH)
+#define PT_SLOT_GUIDE_EMISSION PENUMBRA_U(PT_U_GUIDE_EMISSION)
+#define PT_SLOT_GUIDE_MOMENTS PENUMBRA_U(PT_U_GUIDE_MOMENTS)
 
 // Ray types: each geometry kind has one hit group per ray type, adjacent in
 // the shader table, so TraceRay's ray contribution is the ray type and its
@@ -123,6 +133,15 @@ struct InstanceData {
   uint firstVertex;            // added to each index
   uint materialIndex;
   uint firstEmissiveTriangle;  // PT_NO_EMISSION, or this mesh's first EmissiveTriangle
+  // Rows of the 3x4 object-to-world transform and of its inverse (the TLAS
+  // instance's, so the ray generation shader can rebuild a hit from a
+  // HitRecord); identity for implicit objects, which keep theirs in ImplicitData.
+  float4 objectToWorld0;
+  float4 objectToWorld1;
+  float4 objectToWorld2;
+  float4 worldToObject0;
+  float4 worldToObject1;
+  float4 worldToObject2;
 };
 
 // Disney parameters (docs/materials.md) and the Phong parameters of Whitted.
@@ -211,7 +230,7 @@ static_assert(sizeof(ProbeRay) == 32);
 static_assert(sizeof(ProbeHit) == 48);
 static_assert(sizeof(FrameConstants) == 128);
 static_assert(sizeof(PointLight) == 48);
-static_assert(sizeof(InstanceData) == 16);
+static_assert(sizeof(InstanceData) == 112);
 static_assert(sizeof(MaterialData) == 160);
 static_assert(sizeof(TextureRefData) == 48);
 static_assert(sizeof(EmissiveTriangle) == 96);

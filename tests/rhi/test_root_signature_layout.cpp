@@ -1,9 +1,10 @@
 // The binding-layout -> D3D12 root signature mapping (engine/rhi/
 // root_signature_layout.h), which the D3D12 backend turns into
 // D3D12_ROOT_PARAMETER1s. Runs anywhere: no D3D12 needed.
+#include <fmt/format.h>
+
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
-#include <fmt/format.h>
 
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
@@ -18,7 +19,8 @@ using namespace penumbra::rhi;
 using Catch::Matchers::ContainsSubstring;
 
 namespace {
-BindingLayoutItem item(uint32_t slot, ResourceType type, bool writable = false, uint32_t arraySize = 1) {
+BindingLayoutItem item(uint32_t slot, ResourceType type, bool writable = false,
+                       uint32_t arraySize = 1) {
   BindingLayoutItem i;
   i.slot = slot;
   i.type = type;
@@ -29,13 +31,15 @@ BindingLayoutItem item(uint32_t slot, ResourceType type, bool writable = false, 
 }
 }  // namespace
 
-TEST_CASE("root signature: the path tracer's layout maps to root constants, one table and the bindless tables",
-          "[rhi][root-signature]") {
+TEST_CASE(
+    "root signature: the path tracer's layout maps to root constants, one table and the bindless "
+    "tables",
+    "[rhi][root-signature]") {
   PipelineBindingLayout layout;
-  for (const char* name :
-       {"path_trace.rgen", "whitted.rgen", "probe.rgen", "path_trace.rmiss", "shadow.rmiss",
-        "triangle.rchit", "triangle_alpha.rahit", "triangle_alpha_shadow.rahit", "implicit.rchit", "implicit_sphere.rint", "implicit_plane_box.rint",
-        "implicit_sdf.rint", "implicit_fractal.rint"})
+  for (const char* name : {"path_trace.rgen", "whitted.rgen", "probe.rgen", "path_trace.rmiss",
+                           "shadow.rmiss", "triangle.rchit", "triangle_alpha.rahit",
+                           "triangle_alpha_shadow.rahit", "implicit.rchit", "implicit_sphere.rint",
+                           "implicit_plane_box.rint", "implicit_sdf.rint", "implicit_fractal.rint"})
     mergeBindingLayout(layout, shaders::shaderDesc(name).bindingLayout, name);
   const RootSignatureLayout rs = computeRootSignatureLayout(layout);
 
@@ -51,7 +55,7 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants, one 
   const auto& table = rs.tables[0];
   CHECK(table.space == 0);
   CHECK(table.rootParameterIndex == 1);
-  CHECK(table.descriptorCount == 16);
+  CHECK(table.descriptorCount == 20);
   CHECK(rs.parameterCount() == 4);
   CHECK(rs.dwordCost == 32 + 3);  // 128 bytes of root constants + three tables
   const auto* textures = rs.tableForSlot(0, PT_SLOT_TEXTURES);
@@ -63,7 +67,7 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants, one 
   CHECK(samplers->unbounded);
   CHECK(samplers->heap == DescriptorHeapKind::Sampler);
 
-  // t0..t12 are SRVs (TLAS + read-only structured buffers), u0..u2 UAVs, in slot order.
+  // t0..t12 are SRVs (TLAS + read-only structured buffers), u0..u6 UAVs, in slot order.
   const auto* scene = table.rangeForSlot(PT_SLOT_SCENE);
   REQUIRE(scene);
   CHECK(scene->type == DescriptorRangeType::SRV);
@@ -114,13 +118,25 @@ TEST_CASE("root signature: the path tracer's layout maps to root constants, one 
   CHECK(probeHits->type == DescriptorRangeType::UAV);
   CHECK(probeHits->baseRegister == 2);
   CHECK(probeHits->offsetInTable == 15);
+  // The denoiser's guide buffers, u3..u6.
+  uint32_t offset = 16;
+  for (uint32_t guide : {uint32_t(PT_SLOT_GUIDE_ALBEDO), uint32_t(PT_SLOT_GUIDE_NORMAL_DEPTH),
+                         uint32_t(PT_SLOT_GUIDE_EMISSION), uint32_t(PT_SLOT_GUIDE_MOMENTS)}) {
+    const auto* range = table.rangeForSlot(guide);
+    REQUIRE(range);
+    CHECK(range->type == DescriptorRangeType::UAV);
+    CHECK(range->baseRegister == offset - 13);
+    CHECK(range->offsetInTable == offset);
+    offset += 1;
+  }
 }
 
 TEST_CASE("root signature: spaces become tables in space order, arrays take several descriptors",
           "[rhi][root-signature]") {
   PipelineBindingLayout layout;
   addBindingLayoutItem(layout, 2, item(PENUMBRA_B(3), ResourceType::ConstantBuffer), "test");
-  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(1), ResourceType::StorageBuffer, false, 4), "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(1), ResourceType::StorageBuffer, false, 4),
+                       "test");
   addBindingLayoutItem(layout, 0, item(PENUMBRA_U(2), ResourceType::StorageTexture, true), "test");
   const RootSignatureLayout rs = computeRootSignatureLayout(layout);
 
@@ -146,8 +162,10 @@ TEST_CASE("root signature: samplers get a table of their own, unbounded arrays o
   PipelineBindingLayout layout;
   layout.pushConstantBytes = 4;
   addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");
-  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(1), ResourceType::SampledTexture, false, 2), "test");
-  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(12), ResourceType::SampledTexture, false, 0), "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(1), ResourceType::SampledTexture, false, 2),
+                       "test");
+  addBindingLayoutItem(layout, 0, item(PENUMBRA_T(12), ResourceType::SampledTexture, false, 0),
+                       "test");
   addBindingLayoutItem(layout, 0, item(PENUMBRA_U(0), ResourceType::StorageBuffer, true), "test");
   addBindingLayoutItem(layout, 0, item(PENUMBRA_S(0), ResourceType::Sampler, false, 0), "test");
   addBindingLayoutItem(layout, 1, item(PENUMBRA_S(2), ResourceType::Sampler, false, 3), "test");
@@ -214,7 +232,8 @@ TEST_CASE("root signature: the bindless texture shader's layout", "[rhi][root-si
   CHECK(rs.tables[2].heap == DescriptorHeapKind::Sampler);
 }
 
-TEST_CASE("root signature: bindings D3D12 cannot express are refused by name", "[rhi][root-signature]") {
+TEST_CASE("root signature: bindings D3D12 cannot express are refused by name",
+          "[rhi][root-signature]") {
   PipelineBindingLayout layout;
   SECTION("a written resource in the t registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::StorageBuffer, true), "test");
@@ -227,7 +246,8 @@ TEST_CASE("root signature: bindings D3D12 cannot express are refused by name", "
   }
   SECTION("an acceleration structure in the u registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_U(0), ResourceType::AccelStruct), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("acceleration structure"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+                        ContainsSubstring("acceleration structure"));
   }
   SECTION("a sampler register") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_S(0), ResourceType::StorageBuffer), "test");
@@ -235,20 +255,25 @@ TEST_CASE("root signature: bindings D3D12 cannot express are refused by name", "
   }
   SECTION("a sampler outside the s registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::Sampler), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("sampler outside the s registers"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+                        ContainsSubstring("sampler outside the s registers"));
   }
   SECTION("a sampled texture outside the t registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_B(1), ResourceType::SampledTexture), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("sampled texture outside"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+                        ContainsSubstring("sampled texture outside"));
   }
   SECTION("an unbounded array below another register of its class") {
-    addBindingLayoutItem(layout, 0, item(PENUMBRA_T(4), ResourceType::SampledTexture, false, 0), "test");
+    addBindingLayoutItem(layout, 0, item(PENUMBRA_T(4), ResourceType::SampledTexture, false, 0),
+                         "test");
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(7), ResourceType::StorageBuffer), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
-                        ContainsSubstring("g36") && ContainsSubstring("overlap") && ContainsSubstring("g39"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("g36") &&
+                                                                ContainsSubstring("overlap") &&
+                                                                ContainsSubstring("g39"));
   }
   SECTION("the reserved root-constant space") {
-    addBindingLayoutItem(layout, kPushConstantSpace, item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");
+    addBindingLayoutItem(layout, kPushConstantSpace,
+                         item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");
     REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("reserved"));
   }
   SECTION("more than 64 DWORDs") {

@@ -14,11 +14,19 @@ using namespace penumbra::rhi;
 
 namespace {
 // Every shader a path tracer pipeline can hold (implicit hit groups included).
-const char* const kPathTracerShaders[] = {
-    "path_trace.rgen",   "whitted.rgen",         "probe.rgen",
-    "path_trace.rmiss",  "shadow.rmiss",         "triangle.rchit",       "triangle_alpha.rahit", "triangle_alpha_shadow.rahit",
-    "implicit.rchit",    "implicit_sphere.rint", "implicit_plane_box.rint",
-    "implicit_sdf.rint", "implicit_fractal.rint"};
+const char* const kPathTracerShaders[] = {"path_trace.rgen",
+                                          "whitted.rgen",
+                                          "probe.rgen",
+                                          "path_trace.rmiss",
+                                          "shadow.rmiss",
+                                          "triangle.rchit",
+                                          "triangle_alpha.rahit",
+                                          "triangle_alpha_shadow.rahit",
+                                          "implicit.rchit",
+                                          "implicit_sphere.rint",
+                                          "implicit_plane_box.rint",
+                                          "implicit_sdf.rint",
+                                          "implicit_fractal.rint"};
 
 PipelineBindingLayout reflectPathTracer() {
   PipelineBindingLayout layout;
@@ -37,7 +45,7 @@ const BindingLayoutItem& slot(const PipelineBindingLayout& layout, uint32_t s) {
 TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][reflection]") {
   auto layout = reflectPathTracer();
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 18);
+  REQUIRE(layout.spaces[0].items.size() == 22);
   REQUIRE(layout.pushConstantBytes == sizeof(gpu::FrameConstants));
 
   REQUIRE(slot(layout, PT_SLOT_SCENE).type == ResourceType::AccelStruct);
@@ -48,7 +56,8 @@ TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][refl
   REQUIRE(slot(layout, PT_SLOT_RAY_COUNTER).writable);
   REQUIRE_FALSE(slot(layout, PT_SLOT_EMISSIVE_TRIANGLES).writable);
   // Vertex attributes: read-only float4 arrays (D3D12 needs the 16-byte stride).
-  for (uint32_t s : {uint32_t(PT_SLOT_NORMALS), uint32_t(PT_SLOT_TANGENTS), uint32_t(PT_SLOT_TEXCOORDS)}) {
+  for (uint32_t s :
+       {uint32_t(PT_SLOT_NORMALS), uint32_t(PT_SLOT_TANGENTS), uint32_t(PT_SLOT_TEXCOORDS)}) {
     REQUIRE(slot(layout, s).type == ResourceType::StorageBuffer);
     REQUIRE_FALSE(slot(layout, s).writable);
     REQUIRE(slot(layout, s).structureStride == 16u);
@@ -56,6 +65,12 @@ TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][refl
   REQUIRE_FALSE(slot(layout, PT_SLOT_IMPLICITS).writable);
   REQUIRE_FALSE(slot(layout, PT_SLOT_PROBE_RAYS).writable);
   REQUIRE(slot(layout, PT_SLOT_PROBE_HITS).writable);
+  // The denoiser's guide buffers: writable storage images.
+  for (uint32_t s : {uint32_t(PT_SLOT_GUIDE_ALBEDO), uint32_t(PT_SLOT_GUIDE_NORMAL_DEPTH),
+                     uint32_t(PT_SLOT_GUIDE_EMISSION), uint32_t(PT_SLOT_GUIDE_MOMENTS)}) {
+    REQUIRE(slot(layout, s).type == ResourceType::StorageTexture);
+    REQUIRE(slot(layout, s).writable);
+  }
   // Material textures: bindless (unbounded) texture and sampler arrays.
   REQUIRE(slot(layout, PT_SLOT_TEXTURES).type == ResourceType::SampledTexture);
   REQUIRE(slot(layout, PT_SLOT_TEXTURES).arraySize == 0u);
@@ -85,7 +100,8 @@ TEST_CASE("binding sets are checked against the reflected layout", "[rhi][reflec
   }
 }
 
-TEST_CASE("the HLSL-front-end build of the core uses the shared register shifts", "[rhi][reflection]") {
+TEST_CASE("the HLSL-front-end build of the core uses the shared register shifts",
+          "[rhi][reflection]") {
   PipelineBindingLayout layout;
   reflectSpirv(shaders::find("core_check.hlsl"), "core_check.hlsl", layout);
   REQUIRE(layout.spaces.size() == 1);
@@ -99,7 +115,8 @@ TEST_CASE("the HLSL-front-end build of the core uses the shared register shifts"
 
 namespace {
 bool sameLayout(const PipelineBindingLayout& a, const PipelineBindingLayout& b) {
-  if (a.pushConstantBytes != b.pushConstantBytes || a.spaces.size() != b.spaces.size()) return false;
+  if (a.pushConstantBytes != b.pushConstantBytes || a.spaces.size() != b.spaces.size())
+    return false;
   for (size_t s = 0; s < a.spaces.size(); ++s) {
     const auto &x = a.spaces[s].items, &y = b.spaces[s].items;
     if (a.spaces[s].space != b.spaces[s].space || x.size() != y.size()) return false;
@@ -113,7 +130,8 @@ bool sameLayout(const PipelineBindingLayout& a, const PipelineBindingLayout& b) 
 }
 }  // namespace
 
-TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR-V", "[rhi][reflection]") {
+TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR-V",
+          "[rhi][reflection]") {
   std::vector<const char*> names(std::begin(kPathTracerShaders), std::end(kPathTracerShaders));
   names.insert(names.end(), {"tonemap.comp", "core_check.hlsl"});
   for (const char* name : names) {
@@ -123,8 +141,8 @@ TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR
     CHECK(sameLayout(desc.bindingLayout, runtime.layout));
     CHECK(desc.shaderRecordBytes == runtime.shaderRecordBytes);
   }
-  for (const char* name :
-       {"probe.rgen", "probe.rmiss", "probe_alternate.rmiss", "probe.rchit", "sphere.rint", "texture_sample.comp"}) {
+  for (const char* name : {"probe.rgen", "probe.rmiss", "probe_alternate.rmiss", "probe.rchit",
+                           "sphere.rint", "texture_sample.comp"}) {
     INFO(name);
     const ShaderDesc desc = test_shaders::shaderDesc(name);
     const ShaderReflection runtime = reflectSpirvModule(desc.spirv, name);
@@ -155,16 +173,17 @@ TEST_CASE("reflection derives separate textures and samplers, runtime arrays as 
   CHECK(layout.pushConstantBytes == 4);
 }
 
-TEST_CASE("reflection records each storage buffer's structure stride for D3D12 views", "[rhi][reflection]") {
+TEST_CASE("reflection records each storage buffer's structure stride for D3D12 views",
+          "[rhi][reflection]") {
   auto layout = reflectPathTracer();
-  CHECK(slot(layout, PT_SLOT_VERTICES).structureStride == 16);      // float4[]
-  CHECK(slot(layout, PT_SLOT_INDICES).structureStride == 4);        // uint[]
+  CHECK(slot(layout, PT_SLOT_VERTICES).structureStride == 16);  // float4[]
+  CHECK(slot(layout, PT_SLOT_INDICES).structureStride == 4);    // uint[]
   CHECK(slot(layout, PT_SLOT_INSTANCES).structureStride == sizeof(gpu::InstanceData));
   CHECK(slot(layout, PT_SLOT_EMISSIVE_TRIANGLES).structureStride == sizeof(gpu::EmissiveTriangle));
   CHECK(slot(layout, PT_SLOT_IMPLICITS).structureStride == sizeof(gpu::ImplicitData));
   CHECK(slot(layout, PT_SLOT_PROBE_RAYS).structureStride == sizeof(gpu::ProbeRay));
   CHECK(slot(layout, PT_SLOT_PROBE_HITS).structureStride == sizeof(gpu::ProbeHit));
-  CHECK(slot(layout, PT_SLOT_RAY_COUNTER).structureStride == 4);    // { uint gRayCount; }
+  CHECK(slot(layout, PT_SLOT_RAY_COUNTER).structureStride == 4);  // { uint gRayCount; }
   CHECK(slot(layout, PT_SLOT_SCENE).structureStride == 0);
 }
 
@@ -179,5 +198,6 @@ TEST_CASE("embedded shaders say whether this build has their DXIL", "[rhi][refle
     CHECK_FALSE(desc.dxil.empty());
 #endif
   }
-  REQUIRE_THROWS_WITH(shaders::shaderDesc("nope.rgen"), Catch::Matchers::ContainsSubstring("not embedded"));
+  REQUIRE_THROWS_WITH(shaders::shaderDesc("nope.rgen"),
+                      Catch::Matchers::ContainsSubstring("not embedded"));
 }

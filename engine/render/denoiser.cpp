@@ -1,0 +1,184 @@
+#include "render/denoiser.h"
+
+#include <fmt/format.h>
+
+#include "denoiser_shared.h"
+#include "penumbra_shaders.h"
+#include "util/error.h"
+
+namespace penumbra::render {
+
+DenoiseMode parseDenoiseMode(const std::string& name) {
+  if (name == "off") return DenoiseMode::Off;
+  if (name == "atrous") return DenoiseMode::Atrous;
+  if (name == "svgf") return DenoiseMode::Svgf;
+  throw Error(fmt::format("unknown denoiser '{}' (off, atrous, svgf)", name));
+}
+
+const char* denoiseModeName(DenoiseMode mode) {
+  switch (mode) {
+    case DenoiseMode::Off:
+      return "off";
+    case DenoiseMode::Atrous:
+      return "atrous";
+    case DenoiseMode::Svgf:
+      return "svgf";
+  }
+  return "?";
+}
+
+Denoiser::Denoiser(rhi::IDevice& device, uint32_t width, uint32_t height)
+    : device_(device), width_(width), height_(height) {
+  if (width == 0 || height == 0 || width > 16384 || height > 16384)
+    throw Error(fmt::format("denoiser: image size {}x{} is outside 1..16384", width, height));
+  rhi::ComputePipelineDesc desc;
+  desc.shader = shaders::shaderDesc("denoise.comp");
+  desc.debugName = "denoiser";
+  pipeline_ = device_.createComputePipeline(desc);
+  commandList_ = device_.createCommandList();
+  timer_ = device_.createTimerQuery();
+
+  rhi::BufferDesc frame;
+  frame.byteSize = sizeof(gpu::DenoiseFrame);
+  frame.usage = rhi::BufferUsage::StorageBuffer;
+  frame.debugName = "denoiser frame";
+  frame_ = device_.createBuffer(frame);
+
+  rhi::TextureDesc tex;
+  tex.width = width;
+  tex.height = height;
+  tex.format = rhi::Format::RGBA32_FLOAT;
+  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+  for (int i = 0; i < 2; ++i) {
+    tex.debugName = fmt::format("denoiser illumination {}", i);
+    illumination_[i] = device_.createTexture(tex);
+    tex.debugName = fmt::format("denoiser history illumination {}", i);
+    historyIllumination_[i] = device_.createTexture(tex);
+    tex.debugName = fmt::format("denoiser history moments {}", i);
+    historyMoments_[i] = device_.createTexture(tex);
+    tex.debugName = fmt::format("denoiser history normal and depth {}", i);
+    historyNormalDepth_[i] = device_.createTexture(tex);
+  }
+  tex.debugName = "denoised";
+  output_ = device_.createTexture(tex);
+  tex.debugName = "motion vectors";
+  motion_ = device_.createTexture(tex);
+}
+
+Denoiser::~Denoiser() = default;
+
+void Denoiser::createBindings(const PathTracer& tracer) {
+  using Item = rhi::BindingSetItem;
+  const GuideBuffers& g = tracer.guides();
+  for (int parity = 0; parity < 2; ++parity)
+    for (int direction = 0; direction < 2; ++direction) {
+      rhi::BindingSetDesc set;
+      set.debugName = fmt::format("denoiser bindings {}{}", parity, direction);
+      set.items = {
+          Item::storageTexture(PENUMBRA_T(DN_T_BEAUTY), tracer.accumulation()),
+          Item::storageTexture(PENUMBRA_T(DN_T_ALBEDO), g.albedo),
+          Item::storageTexture(PENUMBRA_T(DN_T_NORMAL_DEPTH), g.normalDepth),
+          Item::storageTexture(PENUMBRA_T(DN_T_EMISSION), g.emission),
+          Item::storageTexture(PENUMBRA_T(DN_T_SAMPLE_MOMENTS), g.moments),
+          Item::storageTexture(PENUMBRA_T(DN_T_HISTORY_ILLUMINATION), historyIllumination_[parity]),
+          Item::storageTexture(PENUMBRA_T(DN_T_HISTORY_MOMENTS), historyMoments_[parity]),
+          Item::storageTexture(PENUMBRA_T(DN_T_HISTORY_NORMAL_DEPTH), historyNormalDepth_[parity]),
+          Item::storageTexture(PENUMBRA_T(DN_T_ILLUMINATION), illumination_[direction]),
+          Item::storageBuffer(PENUMBRA_T(DN_T_FRAME), frame_),
+          Item::storageTexture(PENUMBRA_U(DN_U_ILLUMINATION), illumination_[1 - direction]),
+          Item::storageTexture(PENUMBRA_U(DN_U_MOMENTS), historyMoments_[1 - parity]),
+          Item::storageTexture(PENUMBRA_U(DN_U_HISTORY_ILLUMINATION),
+                               historyIllumination_[1 - parity]),
+          Item::storageTexture(PENUMBRA_U(DN_U_HISTORY_NORMAL_DEPTH),
+                               historyNormalDepth_[1 - parity]),
+          Item::storageTexture(PENUMBRA_U(DN_U_OUTPUT), output_),
+          Item::storageTexture(PENUMBRA_U(DN_U_MOTION), motion_)};
+      bindings_[parity][direction] = device_.createBindingSet(set, *pipeline_);
+    }
+  boundBeauty_ = tracer.accumulation().get();
+}
+
+void Denoiser::dispatch(rhi::ICommandList& cmd, uint32_t pass, uint32_t stepWidth, uint32_t flags,
+                        int parity, int direction) {
+  // Binding the set again records the barriers between passes (the images
+  // one pass writes, the next reads).
+  cmd.setComputeState({pipeline_.get(), {bindings_[parity][direction].get()}});
+  const gpu::DenoisePush push{pass, stepWidth, flags, 0};
+  cmd.setPushConstants(&push, sizeof(push));
+  cmd.dispatch((width_ + 7) / 8, (height_ + 7) / 8);
+}
+
+void Denoiser::record(rhi::ICommandList& cmd, const PathTracer& tracer, const scene::Camera& camera,
+                      uint32_t samples, const DenoiserSettings& settings, rhi::ITimerQuery* timer) {
+  if (tracer.width() != width_ || tracer.height() != height_)
+    throw Error(fmt::format("denoiser: the image is {}x{}, the denoiser's {}x{}", tracer.width(),
+                            tracer.height(), width_, height_));
+  if (settings.mode == DenoiseMode::Off)
+    throw Error("denoiser: record called with the denoiser off");
+  if (samples == 0) throw Error("denoiser: the image has no samples yet");
+  if (settings.iterations > 12) throw Error("denoiser: at most 12 a-trous iterations");
+  if (settings.maxHistory < 1) throw Error("denoiser: the history must hold at least 1 frame");
+  if (boundBeauty_ != tracer.accumulation().get()) createBindings(tracer);
+
+  const bool temporal = settings.mode == DenoiseMode::Svgf;
+  gpu::DenoiseFrame f{};
+  const CameraFrame now = cameraFrame(camera, width_, height_);
+  const CameraFrame before = cameraFrame(historyValid_ ? previousCamera_ : camera, width_, height_);
+  f.cameraPosition = now.position;
+  f.cameraRight = now.right;
+  f.cameraUp = now.up;
+  f.cameraForward = now.forward;
+  f.previousPosition = before.position;
+  f.previousRight = before.right;
+  f.previousUp = before.up;
+  f.previousForward = before.forward;
+  f.image = {width_, height_, samples, settings.maxHistory};
+  f.weights = {settings.depthSigma, settings.normalExponent, settings.luminanceSigma,
+               settings.albedoFloor};
+  cmd.writeBuffer(frame_.get(), &f, sizeof(f));
+
+  uint32_t flags = 0;
+  if (temporal) flags |= DN_FLAG_TEMPORAL;
+  if (temporal && historyValid_) flags |= DN_FLAG_HISTORY_VALID;
+  if (settings.fireflyClamp) flags |= DN_FLAG_FIREFLY_CLAMP;
+
+  const int p = parity_;
+  if (timer) cmd.beginTimerQuery(timer);
+  dispatch(cmd, DN_PASS_TEMPORAL, 0, flags, p, 1);  // -> illumination[0]
+  dispatch(cmd, DN_PASS_VARIANCE, 0, flags, p, 0);  // -> illumination[1]
+  int current = 1;
+  for (uint32_t i = 0; i < settings.iterations; ++i) {
+    // SVGF feeds the first iteration back as history: filtered enough to
+    // steady the temporal mean, not so much that detail smears over time.
+    const uint32_t iterationFlags = flags | (temporal && i == 0 ? DN_FLAG_WRITE_HISTORY : 0u);
+    dispatch(cmd, DN_PASS_ATROUS, 1u << i, iterationFlags, p, current);
+    current = 1 - current;
+  }
+  dispatch(cmd, DN_PASS_COMPOSE, 0, flags, p, current);
+  if (timer) cmd.endTimerQuery(timer);
+
+  if (temporal) {
+    // Without a-trous iterations nothing wrote the history illumination:
+    // the temporal mean itself is the history then.
+    if (settings.iterations == 0)
+      cmd.copyTexture(historyIllumination_[1 - p].get(), illumination_[1].get());
+    parity_ = 1 - p;
+    historyValid_ = true;
+    previousCamera_ = camera;
+  } else {
+    historyValid_ = false;
+  }
+}
+
+double Denoiser::run(const PathTracer& tracer, const scene::Camera& camera, uint32_t samples,
+                     const DenoiserSettings& settings) {
+  auto* cmd = commandList_.get();
+  cmd->open();
+  record(*cmd, tracer, camera, samples, settings, timer_.get());
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  return device_.timerQuerySeconds(timer_.get());
+}
+
+}  // namespace penumbra::render

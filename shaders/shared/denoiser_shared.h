@@ -1,0 +1,69 @@
+// Host/shader interface of the denoiser (engine/render/denoiser.h): one
+// compute shader (denoise.comp) whose push constant selects the pass, the
+// images it reads and writes, and the per-frame constants.
+#ifndef PENUMBRA_DENOISER_SHARED_H
+#define PENUMBRA_DENOISER_SHARED_H
+
+#ifdef __cplusplus
+#include "shader_types.h"
+namespace penumbra::gpu {
+#endif
+
+#include "bindings.hlsli"
+
+// Read-only images (t registers): the path tracer's outputs, then history.
+#define DN_T_BEAUTY 0               // the path tracer's accumulation (radiance)
+#define DN_T_ALBEDO 1               // guide buffers (PT_U_GUIDE_* in path_tracer_shared.h)
+#define DN_T_NORMAL_DEPTH 2
+#define DN_T_EMISSION 3
+#define DN_T_SAMPLE_MOMENTS 4
+#define DN_T_HISTORY_ILLUMINATION 5  // last frame's first a-trous iteration
+#define DN_T_HISTORY_MOMENTS 6       // last frame's integrated moments and history length
+#define DN_T_HISTORY_NORMAL_DEPTH 7  // last frame's normal and depth guide
+#define DN_T_ILLUMINATION 8          // the illumination a pass filters (ping)
+#define DN_T_FRAME 9                 // DenoiseFrame
+// Read-write images (u registers).
+#define DN_U_ILLUMINATION 0          // what a pass writes (pong): rgb illumination, a variance
+#define DN_U_MOMENTS 1               // this frame's integrated moments: x m1, y m2, z history length, w samples behind it
+#define DN_U_HISTORY_ILLUMINATION 2  // next frame's DN_T_HISTORY_ILLUMINATION
+#define DN_U_HISTORY_NORMAL_DEPTH 3  // next frame's DN_T_HISTORY_NORMAL_DEPTH
+#define DN_U_OUTPUT 4                // the denoised radiance
+#define DN_U_MOTION 5                // xy: where the pixel was in the previous frame, minus where it is (pixels)
+
+#define DN_PASS_TEMPORAL 0u  // demodulate, reproject, integrate history
+#define DN_PASS_VARIANCE 1u  // spatial variance where too few samples lie behind a pixel
+#define DN_PASS_ATROUS 2u    // one a-trous iteration (push constant stepWidth)
+#define DN_PASS_COMPOSE 3u   // re-modulate, add emission back
+
+#define DN_FLAG_TEMPORAL 1u         // reproject and integrate history (else: single frame)
+#define DN_FLAG_HISTORY_VALID 2u    // the history images hold a previous frame
+#define DN_FLAG_FIREFLY_CLAMP 4u    // clamp illumination to the brightest of the 8 neighbours
+#define DN_FLAG_WRITE_HISTORY 8u    // this a-trous iteration also writes the history illumination
+
+struct DenoisePush {
+  uint pass;
+  uint stepWidth;  // a-trous: 1, 2, 4, ...
+  uint flags;
+  uint padding;
+};
+
+// A camera as FrameConstants holds it (path tracer's recordFrame).
+struct DenoiseFrame {
+  float4 cameraPosition;  // xyz; w tan(vertical fov / 2)
+  float4 cameraRight;     // w aspect
+  float4 cameraUp;
+  float4 cameraForward;
+  float4 previousPosition;  // the camera of the history
+  float4 previousRight;
+  float4 previousUp;
+  float4 previousForward;
+  uint4 image;            // x width, y height, z samples per pixel in the inputs, w maximum history length
+  float4 weights;         // x depth sigma, y normal exponent, z luminance sigma, w albedo floor
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(DenoisePush) == 16);
+static_assert(sizeof(DenoiseFrame) == 160);
+}  // namespace penumbra::gpu
+#endif
+#endif
