@@ -157,6 +157,7 @@ void Denoiser::record(rhi::ICommandList& cmd, const PathTracer& tracer, const sc
   dispatch(cmd, DN_PASS_COMPOSE, 0, flags, p, current);
   if (timer) cmd.endTimerQuery(timer);
 
+  momentsWritten_ = 1 - p;
   if (temporal) {
     // Without a-trous iterations nothing wrote the history illumination:
     // the temporal mean itself is the history then.

@@ -30,9 +30,10 @@ struct DenoiserSettings {
   DenoiseMode mode = DenoiseMode::Atrous;
   uint32_t iterations = 5;   // a-trous iterations: 5 reach 2^5 + ... = 62 pixels out
   bool fireflyClamp = true;  // clamp a pixel brighter than all 8 neighbours to the brightest
-  uint32_t maxHistory =
-      32;  // Svgf: frames of history at most (then an exponential mean, alpha 1/32)
-  float depthSigma = 1.0f;        // edge-stopping scale on the depth gradient (SVGF's sigma_z)
+  // Svgf: frames of history at most (then an exponential mean, alpha 1/32).
+  uint32_t maxHistory = 32;
+  // Edge stopping; 0 turns a test off (to measure what each one does).
+  float depthSigma = 1.0f;        // scale on the depth gradient (SVGF's sigma_z)
   float normalExponent = 128.0f;  // (n . n_q)^exponent (SVGF's sigma_n)
   float luminanceSigma = 4.0f;    // luminance difference in standard deviations (SVGF's sigma_l)
   float albedoFloor = 1e-3f;      // demodulation never divides by less
@@ -62,6 +63,10 @@ class Denoiser {
   // Screen-space motion of the last frame: xy = previous film position minus
   // this one, in pixels (written by both modes; zero where no surface).
   const rhi::TextureHandle& motion() const { return motion_; }
+  // The last frame's integrated moments: x, y the illumination luminance's
+  // first two moments, z the history length in frames (1: no history, a
+  // disocclusion or a single frame), w the samples behind the pixel.
+  const rhi::TextureHandle& moments() const { return historyMoments_[momentsWritten_]; }
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
 
@@ -84,6 +89,7 @@ class Denoiser {
   rhi::BindingSetHandle bindings_[2][2];
   const rhi::ITexture* boundBeauty_ = nullptr;  // the tracer images the sets hold
   int parity_ = 0;
+  int momentsWritten_ = 0;
   bool historyValid_ = false;
   scene::Camera previousCamera_;
 };

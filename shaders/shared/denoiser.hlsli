@@ -25,8 +25,15 @@ bool insideImage(DenoiseFrame f, int2 p) { return p.x >= 0 && p.y >= 0 && p.x < 
 // nor lose what they reflect.
 float3 demodulationAlbedo(DenoiseFrame f, float3 albedo) { return max(albedo, splat3(f.weights.w)); }
 
+// Whether pixel p has illumination to filter: it saw a surface, and one
+// that reflects (a black surface, e.g. an emitter's, shows its emission alone,
+// and an illumination of 0 there would darken its neighbours).
+bool filterable(DenoiseFrame f, int2 p) {
+  return loadNormalDepth(p).w > 0.0 && luminance(loadAlbedo(p).xyz) > f.weights.w;
+}
+
 float3 illuminationAt(DenoiseFrame f, int2 p) {
-  if (loadNormalDepth(p).w <= 0.0) return zero3();
+  if (!filterable(f, p)) return zero3();
   return (loadBeauty(p).xyz - loadEmission(p).xyz) / demodulationAlbedo(f, loadAlbedo(p).xyz);
 }
 
@@ -34,12 +41,14 @@ float3 illuminationAt(DenoiseFrame f, int2 p) {
 // the brightest of them. It removes isolated spikes (a rare caustic path at
 // low spp) at the cost of a small energy loss where a spike is real.
 float3 clampFirefly(DenoiseFrame f, int2 p, float3 illumination) {
-  float brightest = 0.0;
+  float brightest = -1.0;  // no neighbour with illumination: nothing to compare with
   for (int dy = -1; dy <= 1; dy += 1)
     for (int dx = -1; dx <= 1; dx += 1) {
       int2 q = p + int2(dx, dy);
-      if ((dx != 0 || dy != 0) && insideImage(f, q)) brightest = max(brightest, luminance(illuminationAt(f, q)));
+      if ((dx != 0 || dy != 0) && insideImage(f, q) && filterable(f, q))
+        brightest = max(brightest, luminance(illuminationAt(f, q)));
     }
+  if (brightest < 0.0) return illumination;
   float l = luminance(illumination);
   return l > brightest && l > 0.0 ? illumination * (brightest / l) : illumination;
 }
@@ -77,7 +86,7 @@ void denoiseTemporal(int2 p, uint flags) {
   float depth = nd.w;
   float3 albedo = demodulationAlbedo(f, loadAlbedo(p).xyz);
   float3 illumination = illuminationAt(f, p);
-  if ((flags & DN_FLAG_FIREFLY_CLAMP) != 0u && depth > 0.0) illumination = clampFirefly(f, p, illumination);
+  if ((flags & DN_FLAG_FIREFLY_CLAMP) != 0u && filterable(f, p)) illumination = clampFirefly(f, p, illumination);
   // Luminance moments of the samples' illumination (demodulated by the
   // albedo's luminance: the guide holds those of radiance - emission).
   float inverseAlbedo = 1.0 / luminance(albedo);
@@ -136,13 +145,16 @@ void denoiseTemporal(int2 p, uint flags) {
 
 // Edge-stopping weights of pixel q for the centre p (depth with the centre's
 // screen-space depth gradient, normal, and luminance normalised by the
-// centre's standard deviation), as SVGF's.
+// centre's standard deviation), as SVGF's. A sigma or exponent of 0 turns
+// that test off (for measuring what each one does).
 float edgeWeight(DenoiseFrame f, float depthP, float2 gradient, float3 normalP, float luminanceP,
                  float sigmaLuminance, float4 ndQ, float luminanceQ, float2 offset) {
-  float wz = exp(-abs(ndQ.w - depthP) / (f.weights.x * abs(dot(gradient, offset)) + 1e-3 * depthP + 1e-8));
-  float wn = pow(max(0.0, dot(normalP, unitOrZero(ndQ.xyz))), f.weights.y);
-  float wl = exp(-abs(luminanceP - luminanceQ) / sigmaLuminance);
-  return wz * wn * wl;
+  float w = 1.0;
+  if (f.weights.x > 0.0)
+    w *= exp(-abs(ndQ.w - depthP) / (f.weights.x * abs(dot(gradient, offset)) + 1e-3 * depthP + 1e-8));
+  if (f.weights.y > 0.0) w *= pow(max(0.0, dot(normalP, unitOrZero(ndQ.xyz))), f.weights.y);
+  if (f.weights.z > 0.0) w *= exp(-abs(luminanceP - luminanceQ) / sigmaLuminance);
+  return w;
 }
 
 // The smaller one-sided depth difference in x and y: a slope across the
@@ -167,7 +179,7 @@ void denoiseVariance(int2 p) {
   float4 centre = loadIllumination(p);
   float4 nd = loadNormalDepth(p);
   float4 m = loadMoments(p);
-  if (m.w >= 4.0 || nd.w <= 0.0) {
+  if (m.w >= 4.0 || !filterable(f, p)) {
     storeIllumination(p, centre);
     return;
   }
@@ -178,9 +190,8 @@ void denoiseVariance(int2 p) {
   for (int dy = -3; dy <= 3; dy += 1)
     for (int dx = -3; dx <= 3; dx += 1) {
       int2 q = p + int2(dx, dy);
-      if (!insideImage(f, q)) continue;
+      if (!insideImage(f, q) || !filterable(f, q)) continue;
       float4 ndQ = loadNormalDepth(q);
-      if (ndQ.w <= 0.0) continue;
       float l = luminance(loadIllumination(q).xyz);
       // Luminance does not stop this estimate: it is what is being measured.
       float w = edgeWeight(f, nd.w, gradient, normal, 0.0, 1e30, ndQ, 0.0, float2(dx, dy));
@@ -198,7 +209,7 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
   DenoiseFrame f = loadFrame();
   float4 centre = loadIllumination(p);
   float4 nd = loadNormalDepth(p);
-  if (nd.w <= 0.0) {
+  if (!filterable(f, p)) {
     storeIllumination(p, centre);
     if ((flags & DN_FLAG_WRITE_HISTORY) != 0u) storeHistoryIllumination(p, centre);
     return;
@@ -226,9 +237,8 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
     for (int dx = -2; dx <= 2; dx += 1) {
       int2 offset = int2(dx, dy) * int(stepWidth);
       int2 q = p + offset;
-      if (!insideImage(f, q)) continue;
+      if (!insideImage(f, q) || !filterable(f, q)) continue;
       float4 ndQ = loadNormalDepth(q);
-      if (ndQ.w <= 0.0) continue;
       float4 v = loadIllumination(q);
       float w = kernel[abs(dx)] * kernel[abs(dy)] *
                 edgeWeight(f, nd.w, gradient, normal, luminanceP, sigmaLuminance, ndQ, luminance(v.xyz),
@@ -244,11 +254,11 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
 }
 
 // Pass DN_PASS_COMPOSE: radiance = illumination x albedo + emission; pixels
-// that saw no surface keep the path tracer's radiance.
+// with nothing to filter keep the path tracer's radiance.
 void denoiseCompose(int2 p) {
   DenoiseFrame f = loadFrame();
   float4 beauty = loadBeauty(p);
-  if (loadNormalDepth(p).w <= 0.0) {
+  if (!filterable(f, p)) {
     storeOutput(p, float4(beauty.xyz, 1.0));
     return;
   }

@@ -161,11 +161,18 @@ bool scatter(FrameConstants c, DisneyMaterial material, Frame frame, float3 ng, 
 // through it ("primary surface replacement"), so a reflection is filtered
 // with the reflected surface's albedo, normal and depth.
 struct PathGuides {
-  float3 albedo;    // demodulation albedo (base colour) times the throughput of the delta chain before it
-  float3 normal;    // world shading normal; zero where the path found no surface
+  float3 albedo;    // demodulationAlbedo() times the throughput of the delta chain before it
+  float3 normal;    // world shading normal, on the viewer's side; zero where the path found no surface
   float3 emission;  // the part of the radiance emitted along the chain, up to and including it
   float distance;   // length of the unfolded path from the camera to it; 0: no surface
 };
+
+// What the denoiser divides a vertex's illumination by: the base colour
+// (diffuse, metal, glass tint) plus the dielectric specular layer's normal
+// reflectance, so a black glossy surface still has something to filter.
+float3 demodulationAlbedo(DisneyMaterial m) {
+  return m.baseColor + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectricSpecularF0(m);
+}
 
 PathGuides noGuides() {
   PathGuides g;
@@ -237,8 +244,10 @@ float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rn
       // Provisionally this vertex; a delta scatter below passes them on.
       chainLength += hit.hitT;
       guides.emission += radiance - radianceBefore;
-      guides.albedo = chainThroughput * material.baseColor;
-      guides.normal = shadingNormalFor(hit, -direction);
+      guides.albedo = chainThroughput * demodulationAlbedo(material);
+      // Facing the viewer, so both sides of a surface filter alike.
+      float3 n = shadingNormalFor(hit, -direction);
+      guides.normal = dot(n, direction) > 0.0 ? -n : n;
       guides.distance = chainLength;
     }
     if (depth >= maxDepth) break;
