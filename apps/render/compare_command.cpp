@@ -7,18 +7,18 @@
 
 #include "backend_factory.h"
 #include "commands.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
 #include "render/path_tracer.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
-#include "image/image_compare.h"
-#include "image/image_io.h"
 
 namespace penumbra::app {
 namespace {
 
 struct CompareOptions {
-  std::string a, b;                  // image files
-  std::string deviceA, deviceB;      // or BACKEND:INDEX render targets
+  std::string a, b;              // image files
+  std::string deviceA, deviceB;  // or BACKEND:INDEX render targets
   std::string scene = "cornell-box";
   std::string size = "128x128";
   uint32_t spp = 16;
@@ -37,7 +37,8 @@ image::Image8 falseColourDifference(const image::Image& a, const image::Image& b
   out.rgba.resize(size_t(a.width) * a.height * 4);
   for (size_t i = 0; i < size_t(a.width) * a.height; ++i) {
     double d = 0;
-    for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(a.rgba[i * 4 + c] - b.rgba[i * 4 + c])));
+    for (int c = 0; c < 3; ++c)
+      d = std::max(d, double(std::abs(a.rgba[i * 4 + c] - b.rgba[i * 4 + c])));
     const double t = scale > 0 ? std::min(d / scale, 1.0) : 0.0;
     const double r = std::clamp(2.0 * t - 1.0, 0.0, 1.0);
     const double g = 1.0 - std::abs(2.0 * t - 1.0);
@@ -105,15 +106,17 @@ int runCompare(const CompareOptions& o) {
              s.pixelsBeyondTolerance, s.fractionBeyondTolerance * 100.0);
   fmt::print("PSNR: {:.2f} dB\n", s.psnr);
   fmt::print("relative MSE (b as reference): {:.6g}\n", s.relativeMse);
+  fmt::print("SSIM: {:.6f}\n", image::ssim(a, b));
   if (s.nonFiniteA || s.nonFiniteB)
     fmt::print("non-finite pixels: {} in a, {} in b\n", s.nonFiniteA, s.nonFiniteB);
   if (!o.diffOut.empty()) {
-    image::savePng(o.diffOut, falseColourDifference(a, b, std::max(s.maxAbsoluteDifference, 1e-12)));
+    image::savePng(o.diffOut,
+                   falseColourDifference(a, b, std::max(s.maxAbsoluteDifference, 1e-12)));
     fmt::print("wrote {} (false colour, red = max difference {:.6g})\n", o.diffOut,
                s.maxAbsoluteDifference);
   }
-  const bool within = s.fractionBeyondTolerance <= o.allowedFraction && s.nonFiniteA == 0 &&
-                      s.nonFiniteB == 0;
+  const bool within =
+      s.fractionBeyondTolerance <= o.allowedFraction && s.nonFiniteA == 0 && s.nonFiniteB == 0;
   fmt::print("{}\n", within ? "within tolerance" : "NOT within tolerance");
   return within ? 0 : 1;
 }
@@ -123,22 +126,29 @@ int runCompare(const CompareOptions& o) {
 Command addCompareCommand(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   auto* cmd = app.add_subcommand(
-      "compare", "Compare two linear EXR images, or renders on two backends/devices, pixel for pixel");
+      "compare",
+      "Compare two linear EXR images, or renders on two backends/devices, pixel for pixel");
   auto* compare = cmd;
   compare->add_option("a", o->a, "First image (.exr)")->check(CLI::ExistingFile);
   compare->add_option("b", o->b, "Second image (.exr)")->check(CLI::ExistingFile);
-  compare->add_option("--a", o->deviceA, "Render on BACKEND:INDEX (e.g. vulkan:0) instead of reading a file");
-  compare->add_option("--b", o->deviceB, "Render on BACKEND:INDEX (e.g. d3d12:0) instead of reading a file");
+  compare->add_option("--a", o->deviceA,
+                      "Render on BACKEND:INDEX (e.g. vulkan:0) instead of reading a file");
+  compare->add_option("--b", o->deviceB,
+                      "Render on BACKEND:INDEX (e.g. d3d12:0) instead of reading a file");
   compare->add_option("--scene", o->scene, "Scene to render with --a/--b")->capture_default_str();
   compare->add_option("--size", o->size, "Image size with --a/--b")->capture_default_str();
-  compare->add_option("--spp", o->spp, "Samples per pixel with --a/--b")->check(CLI::Range(1u, 1u << 16))->capture_default_str();
-  compare->add_option("--seed", o->seed, "Random seed with --a/--b (the same on both)")->capture_default_str();
+  compare->add_option("--spp", o->spp, "Samples per pixel with --a/--b")
+      ->check(CLI::Range(1u, 1u << 16))
+      ->capture_default_str();
+  compare->add_option("--seed", o->seed, "Random seed with --a/--b (the same on both)")
+      ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance,
                   "Relative per-channel tolerance: |a-b| <= tol * max(|a|, |b|, 1e-3)")
       ->capture_default_str();
   cmd->add_option("--allowed-fraction", o->allowedFraction,
                   "Fraction of pixels allowed beyond the tolerance for exit code 0")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--diff", o->diffOut, "Write a false-colour difference image (.png)");
   return [o] { return runCompare(*o); };
 }

@@ -117,6 +117,7 @@ void Viewer::createTracer() {
   tracer_ =
       std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height, pipeline);
   tracer_->setCamera(camera_->camera());
+  denoiser_.reset();  // made for the new tracer's size when first needed
   if (frameQueries_.empty())
     for (size_t i = 0; i < frameLists_.size(); ++i)
       frameQueries_.push_back(tracer_->createFrameQueries());
@@ -334,9 +335,37 @@ void Viewer::renderFrame() {
   list.open();
   if (frameQueries_[slot].samples > 0) lastStats_ = tracer_->frameStats(frameQueries_[slot]);
   frameQueries_[slot].samples = 0;
+  if (denoiseTimed_.size() != frameLists_.size()) {
+    denoiseTimed_.assign(frameLists_.size(), false);
+    denoiseTimers_.clear();
+    for (size_t i = 0; i < frameLists_.size(); ++i)
+      denoiseTimers_.push_back(device_->createTimerQuery());
+  }
+  if (denoiseTimed_[slot])
+    lastDenoiseSeconds_ = device_->timerQuerySeconds(denoiseTimers_[slot].get());
+  denoiseTimed_[slot] = false;
+
+  // The temporal denoiser integrates frames itself: until its history is
+  // full, each frame starts a new mean; then the tracer accumulates.
+  const bool startedOver = tracer_->accumulationGeneration() != seenGeneration_;
+  if (startedOver) stillFrames_ = 0;
+  const bool denoising = settings_.denoise != render::DenoiseMode::Off &&
+                         settings_.tracer.integrator == render::Integrator::Path;
+  const render::DenoiserSettings defaults;
+  if (denoising && settings_.denoise == render::DenoiseMode::Svgf &&
+      stillFrames_ < defaults.maxHistory)
+    tracer_->resetAccumulation();
+  seenGeneration_ = tracer_->accumulationGeneration();
   if (settings_.maxSamples == 0 || tracer_->accumulatedSamples() < settings_.maxSamples)
     tracer_->recordFrame(list, settings_.tracer, settings_.samplesPerFrame, frameQueries_[slot]);
-  display_->record(list, tracer_->accumulation(), displayTexture_, settings_.toneMapping);
+  stillFrames_ += 1;
+  const rhi::TextureHandle& shown = recordDenoiser(list, slot);
+  const render::DisplayChannels channels =
+      settings_.view == ViewBuffer::Normal || settings_.view == ViewBuffer::Motion
+          ? render::DisplayChannels::Signed
+      : settings_.view == ViewBuffer::Depth ? render::DisplayChannels::Alpha
+                                            : render::DisplayChannels::Color;
+  display_->record(list, shown, displayTexture_, settings_.toneMapping, channels);
   list.copyTexture(backBuffer, displayTexture_.get());
   list.setTextureState(backBuffer, rhi::ResourceState::RenderTarget);
   if (settings_.showUi) ui_->render(list, *backBuffer);
@@ -346,6 +375,63 @@ void Viewer::renderFrame() {
     swapchain_->resize(w, h);
     ui_->swapchainResized();
   }
+}
+
+const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t slot) {
+  const bool denoising = settings_.denoise != render::DenoiseMode::Off &&
+                         settings_.tracer.integrator == render::Integrator::Path;
+  if (denoising || settings_.view == ViewBuffer::Motion) {
+    if (!denoiser_ || denoiser_->width() != tracer_->width() ||
+        denoiser_->height() != tracer_->height())
+      denoiser_ = std::make_unique<render::Denoiser>(*device_, tracer_->width(), tracer_->height());
+  }
+  render::DenoiserSettings d;
+  d.fireflyClamp = settings_.fireflyClamp;
+  const uint32_t samples = tracer_->accumulatedSamples();
+  bool denoised = false;
+  if (denoising && samples > 0) {
+    const bool temporal =
+        settings_.denoise == render::DenoiseMode::Svgf && stillFrames_ <= d.maxHistory;
+    // Once still, the accumulation takes over from the temporal history when
+    // it holds more samples than the history did; until then the last
+    // temporal frame stays on screen.
+    const bool accumulationAhead = samples >= d.maxHistory * settings_.samplesPerFrame;
+    if (temporal) {
+      d.mode = render::DenoiseMode::Svgf;
+      denoiser_->record(list, *tracer_, tracer_->camera(), samples, d, denoiseTimers_[slot].get());
+      denoiseTimed_[slot] = true;
+      temporalShown_ = true;
+      denoised = true;
+    } else if (settings_.denoise == render::DenoiseMode::Atrous || accumulationAhead ||
+               !temporalShown_) {
+      d.mode = render::DenoiseMode::Atrous;
+      denoiser_->record(list, *tracer_, tracer_->camera(), samples, d, denoiseTimers_[slot].get());
+      denoiseTimed_[slot] = true;
+      temporalShown_ = false;
+      denoised = true;
+    } else {
+      denoised = true;  // the last temporal frame, kept
+    }
+  } else {
+    temporalShown_ = false;
+  }
+  if (!denoised) lastDenoiseSeconds_ = 0;
+  const auto& g = tracer_->guides();
+  switch (settings_.view) {
+    case ViewBuffer::Image:
+      break;
+    case ViewBuffer::Albedo:
+      return g.albedo;
+    case ViewBuffer::Normal:
+      return g.normalDepth;
+    case ViewBuffer::Depth:
+      return g.normalDepth;
+    case ViewBuffer::Emission:
+      return g.emission;
+    case ViewBuffer::Motion:
+      return denoiser_->motion();
+  }
+  return denoised ? denoiser_->output() : tracer_->accumulation();
 }
 
 int Viewer::run() {

@@ -11,6 +11,7 @@
 #include "bookmarks.h"
 #include "camera_controller.h"
 #include "imgui_vulkan_renderer.h"
+#include "render/denoiser.h"
 #include "render/display_pass.h"
 #include "render/path_tracer.h"
 #include "render_scale.h"
@@ -53,6 +54,8 @@ class Viewer {
   void focusOn(glm::vec2 renderPixel);
   bool stepScript();  // false once the script asked to quit
   void renderFrame();
+  // Records the denoiser for this frame (if on) and returns what to show.
+  const rhi::TextureHandle& recordDenoiser(rhi::ICommandList& list, size_t slot);
   void drawUi();
   void drawSceneMenu();
   void drawAlgorithmMenu();
@@ -87,6 +90,13 @@ class Viewer {
   std::optional<scene::MaterialRow> loadedRow_;
   scene::Scene scene_;
   std::unique_ptr<render::PathTracer> tracer_;
+  std::unique_ptr<render::Denoiser> denoiser_;
+  std::vector<rhi::TimerQueryHandle> denoiseTimers_;  // per frame slot
+  std::vector<bool> denoiseTimed_;                    // per frame slot: its timer holds a frame
+  double lastDenoiseSeconds_ = 0;
+  uint64_t seenGeneration_ = ~0ull;  // the tracer's accumulation generation last frame
+  uint32_t stillFrames_ = 0;         // frames since the image last started over
+  bool temporalShown_ = false;       // the denoiser output holds a temporal frame to keep showing
   ViewerSettings settings_;
   RenderScaleController scale_;
   std::unique_ptr<CameraController> camera_;

@@ -101,7 +101,49 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
   if (name == "max-samples")
     return assign(s.maxSamples, parseUint(name, value, 0, 1u << 24), E::None);
   if (name == "ui") return assign(s.showUi, parseBool(name, value), E::None);
+  if (name == "denoise") {
+    if (value != "off" && value != "atrous" && value != "svgf")
+      badValue(name, value, "off, atrous or svgf");
+    return assign(s.denoise, render::parseDenoiseMode(value), E::ResetAccumulation);
+  }
+  if (name == "firefly-clamp") return assign(s.fireflyClamp, parseBool(name, value), E::None);
+  if (name == "view") {
+    auto v = parseViewBuffer(value);
+    if (!v) badValue(name, value, "image, albedo, normal, depth, emission or motion");
+    return assign(s.view, *v, E::None);
+  }
   throw Error(fmt::format("unknown setting '{}'", name));
+}
+
+const std::vector<ViewBuffer>& allViewBuffers() {
+  static const std::vector<ViewBuffer> all = {ViewBuffer::Image,    ViewBuffer::Albedo,
+                                              ViewBuffer::Normal,   ViewBuffer::Depth,
+                                              ViewBuffer::Emission, ViewBuffer::Motion};
+  return all;
+}
+
+const char* viewBufferName(ViewBuffer view) {
+  switch (view) {
+    case ViewBuffer::Image:
+      return "image";
+    case ViewBuffer::Albedo:
+      return "albedo";
+    case ViewBuffer::Normal:
+      return "normal";
+    case ViewBuffer::Depth:
+      return "depth";
+    case ViewBuffer::Emission:
+      return "emission";
+    case ViewBuffer::Motion:
+      return "motion";
+  }
+  return "?";
+}
+
+std::optional<ViewBuffer> parseViewBuffer(std::string_view name) {
+  for (ViewBuffer v : allViewBuffers())
+    if (name == viewBufferName(v)) return v;
+  return std::nullopt;
 }
 
 RenderSize renderSize(uint32_t framebufferWidth, uint32_t framebufferHeight, float scale) {

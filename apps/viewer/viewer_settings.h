@@ -1,14 +1,25 @@
 #pragma once
+#include <optional>
+#include <string_view>
+#include <vector>
 // What the viewer's menus and scripts change, and how it maps onto the
 // renderer: PathTracerSettings for each frame, the display's tone mapping, and
 // the RenderJob recorded beside a screenshot (for `penumbra render --settings`).
 #include <string>
 
+#include "render/denoiser.h"
 #include "render/path_tracer.h"
 #include "render/render_job.h"
 #include "render/tone_mapping.h"
 
 namespace penumbra::viewer {
+
+// What the viewer shows: the (denoised) image, or one of the denoiser's
+// guide buffers as it is (tone mapped like the image).
+enum class ViewBuffer { Image, Albedo, Normal, Depth, Emission, Motion };
+const char* viewBufferName(ViewBuffer view);
+std::optional<ViewBuffer> parseViewBuffer(std::string_view name);
+const std::vector<ViewBuffer>& allViewBuffers();
 
 struct ViewerSettings {
   render::PathTracerSettings tracer;
@@ -20,6 +31,12 @@ struct ViewerSettings {
   bool vsync = true;
   uint32_t maxSamples = 0;  // accumulation stops here; 0 = never
   bool showUi = true;       // the menus and the stats overlay (F1)
+  // Svgf: the temporal denoiser while the camera moves, then the a-trous
+  // filter on the accumulation once it holds more than the temporal
+  // history would. Atrous: the a-trous filter on the accumulation always.
+  render::DenoiseMode denoise = render::DenoiseMode::Off;
+  bool fireflyClamp = true;
+  ViewBuffer view = ViewBuffer::Image;
 };
 
 // What a change calls for.
@@ -33,7 +50,8 @@ enum class SettingEffect {
 // Sets one setting by its script name ("spp-per-frame", "max-depth",
 // "integrator", "strategy", "mis-heuristic", "russian-roulette", "clamp",
 // "seed", "exposure", "tonemap", "all-effects", "render-scale", "auto-scale",
-// "vsync", "max-samples", "ui"). Throws penumbra::Error naming the setting on a bad name or value.
+// "vsync", "max-samples", "ui", "denoise", "firefly-clamp", "view"). Throws penumbra::Error naming
+// the setting on a bad name or value.
 SettingEffect applySetting(ViewerSettings& settings, const std::string& name,
                            const std::string& value);
 

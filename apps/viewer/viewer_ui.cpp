@@ -130,6 +130,16 @@ void Viewer::drawAlgorithmMenu() {
   if (reset) tracer_->resetAccumulation();
 
   ImGui::Separator();
+  if (enumCombo("denoiser", settings_.denoise,
+                {render::DenoiseMode::Off, render::DenoiseMode::Atrous, render::DenoiseMode::Svgf},
+                &render::denoiseModeName))
+    tracer_->resetAccumulation();
+  ImGui::BeginDisabled(settings_.denoise == render::DenoiseMode::Off);
+  ImGui::Checkbox("firefly clamp", &settings_.fireflyClamp);
+  ImGui::EndDisabled();
+  enumCombo("view", settings_.view, allViewBuffers(), &viewBufferName);
+
+  ImGui::Separator();
   ImGui::DragFloat("exposure", &settings_.toneMapping.exposure, 0.01f, 0.0f, 100.0f);
   enumCombo("tone mapping", settings_.toneMapping.toneOperator, render::allToneMapOperators(),
             &render::toneMapOperatorName);
@@ -246,6 +256,9 @@ void Viewer::drawStats() {
   ImGui::Text(
       "GPU %.2f ms/frame, %.1f Mrays/s", lastStats_.gpuSeconds * 1e3,
       lastStats_.gpuSeconds > 0 ? double(lastStats_.rays) / lastStats_.gpuSeconds * 1e-6 : 0.0);
+  if (settings_.denoise != render::DenoiseMode::Off)
+    ImGui::Text("denoiser (%s) GPU %.2f ms", render::denoiseModeName(settings_.denoise),
+                lastDenoiseSeconds_ * 1e3);
   ImGui::Text("frame %.1f ms (%.1f fps)", frameSeconds_ * 1e3,
               frameSeconds_ > 0 ? 1.0 / frameSeconds_ : 0.0);
   ImGui::End();

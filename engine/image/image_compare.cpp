@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "util/error.h"
 
@@ -40,6 +41,57 @@ ComparisonStats compareImages(const Image& a, const Image& b, double relativeTol
   s.relativeMse = pixels ? sumRel / n : 0;
   s.psnr = mse > 0 ? 10.0 * std::log10(peak * peak / mse) : std::numeric_limits<double>::infinity();
   return s;
+}
+
+double ssim(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height)
+    throw Error(fmt::format("ssim: image sizes differ ({}x{} vs {}x{})", a.width, a.height, b.width,
+                            b.height));
+  const int w = int(a.width), h = int(a.height);
+  if (w == 0 || h == 0) return 1.0;
+  const auto display = [](const Image& img) {
+    std::vector<double> y(img.rgba.size() / 4);
+    for (size_t i = 0; i < y.size(); ++i) {
+      const double l =
+          0.2126 * img.rgba[i * 4] + 0.7152 * img.rgba[i * 4 + 1] + 0.0722 * img.rgba[i * 4 + 2];
+      y[i] = std::pow(std::clamp(std::isfinite(l) ? l : 0.0, 0.0, 1.0), 1.0 / 2.2);
+    }
+    return y;
+  };
+  const std::vector<double> x = display(a), y = display(b);
+  constexpr int kRadius = 5;
+  double kernel[2 * kRadius + 1];
+  for (int k = -kRadius; k <= kRadius; ++k)
+    kernel[k + kRadius] = std::exp(-0.5 * k * k / (1.5 * 1.5));
+  constexpr double c1 = 0.01 * 0.01, c2 = 0.03 * 0.03;
+  double sum = 0;
+  for (int py = 0; py < h; ++py)
+    for (int px = 0; px < w; ++px) {
+      double weight = 0, mx = 0, my = 0, xx = 0, yy = 0, xy = 0;
+      for (int dy = -kRadius; dy <= kRadius; ++dy) {
+        const int qy = py + dy;
+        if (qy < 0 || qy >= h) continue;
+        for (int dx = -kRadius; dx <= kRadius; ++dx) {
+          const int qx = px + dx;
+          if (qx < 0 || qx >= w) continue;
+          const double k = kernel[dx + kRadius] * kernel[dy + kRadius];
+          const double vx = x[size_t(qy) * w + qx], vy = y[size_t(qy) * w + qx];
+          weight += k;
+          mx += k * vx;
+          my += k * vy;
+          xx += k * vx * vx;
+          yy += k * vy * vy;
+          xy += k * vx * vy;
+        }
+      }
+      mx /= weight;
+      my /= weight;
+      const double vx = std::max(0.0, xx / weight - mx * mx),
+                   vy = std::max(0.0, yy / weight - my * my);
+      const double cov = xy / weight - mx * my;
+      sum += (2 * mx * my + c1) * (2 * cov + c2) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+    }
+  return sum / (double(w) * h);
 }
 
 }  // namespace penumbra::image

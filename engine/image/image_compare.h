@@ -24,4 +24,11 @@ struct ComparisonStats {
 // Throws penumbra::Error if the sizes differ.
 ComparisonStats compareImages(const Image& a, const Image& b, double relativeTolerance);
 
+// Structural similarity (Wang et al. 2004) of the two images' display
+// luminance: Rec. 709 luminance clamped to [0, 1] and encoded with gamma
+// 2.2, an 11x11 Gaussian window (sigma 1.5, renormalised at the borders),
+// C1 = 0.01^2, C2 = 0.03^2; the mean of the SSIM map. 1 for equal images.
+// Throws penumbra::Error if the sizes differ.
+double ssim(const Image& a, const Image& b);
+
 }  // namespace penumbra::image

@@ -14,7 +14,8 @@ DisplayPass::DisplayPass(rhi::IDevice& device) : device_(device) {
 }
 
 void DisplayPass::record(rhi::ICommandList& commandList, const rhi::TextureHandle& hdr,
-                         const rhi::TextureHandle& target, const ToneMapping& toneMapping) {
+                         const rhi::TextureHandle& target, const ToneMapping& toneMapping,
+                         DisplayChannels channels) {
   if (target->desc().format != rhi::Format::RGBA8_UNORM)
     throw Error("display pass: the target must be an RGBA8 storage texture");
   if (!bindings_ || boundHdr_ != hdr.get() || boundTarget_ != target.get()) {
@@ -30,8 +31,10 @@ void DisplayPass::record(rhi::ICommandList& commandList, const rhi::TextureHandl
     uint32_t sourceWidth, sourceHeight, targetWidth, targetHeight;
     float exposure;
     uint32_t toneOperator;
+    uint32_t channels;
   } push{hdr->desc().width,     hdr->desc().height,   target->desc().width,
-         target->desc().height, toneMapping.exposure, uint32_t(toneMapping.toneOperator)};
+         target->desc().height, toneMapping.exposure, uint32_t(toneMapping.toneOperator),
+         uint32_t(channels)};
   commandList.setComputeState({pipeline_.get(), {bindings_.get()}});
   commandList.setPushConstants(&push, sizeof(push));
   commandList.dispatch((push.targetWidth + 7) / 8, (push.targetHeight + 7) / 8);

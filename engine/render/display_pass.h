@@ -8,12 +8,21 @@
 
 namespace penumbra::render {
 
+// Which channels of the texture the display pass shows (the viewer's guide
+// buffer views).
+enum class DisplayChannels : uint32_t {
+  Color = 0,   // rgb
+  Signed = 1,  // xyz in [-1, 1] as 0.5 + 0.5 v
+  Alpha = 2,   // w as grey
+};
+
 class DisplayPass {
  public:
   explicit DisplayPass(rhi::IDevice& device);
   // `hdr`: RGBA32F storage texture (any size); `target`: RGBA8 storage texture.
   void record(rhi::ICommandList& commandList, const rhi::TextureHandle& hdr,
-              const rhi::TextureHandle& target, const ToneMapping& toneMapping);
+              const rhi::TextureHandle& target, const ToneMapping& toneMapping,
+              DisplayChannels channels = DisplayChannels::Color);
 
  private:
   rhi::IDevice& device_;

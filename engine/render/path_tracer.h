@@ -123,7 +123,13 @@ class PathTracer {
   // have finished it (its command list's next open() waits for that).
   FrameStats frameStats(FrameQueries& queries);
   // The next frame starts a new mean (camera or settings changed).
-  void resetAccumulation() { accumulatedSamples_ = 0; }
+  void resetAccumulation() {
+    accumulatedSamples_ = 0;
+    ++accumulationGeneration_;
+  }
+  // Counts the resets (resetAccumulation, setCamera, ...): a caller sees
+  // that the image started over since it last looked.
+  uint64_t accumulationGeneration() const { return accumulationGeneration_; }
   // Moves the camera (the scene's until then) and resets the accumulation.
   void setCamera(const scene::Camera& camera);
   const scene::Camera& camera() const { return camera_; }
@@ -187,6 +193,7 @@ class PathTracer {
   std::vector<scene::Material> materials_;
   std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
   uint32_t accumulatedSamples_ = 0;
+  uint64_t accumulationGeneration_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
   uint32_t pointLightCount_ = 0;
   uint32_t sceneEffects_ = 0;

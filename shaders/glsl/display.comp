@@ -12,6 +12,7 @@ layout(push_constant, std430) uniform DisplayPush {
   uint2 gTargetSize;
   float gExposure;
   uint gOperator;
+  uint gChannels;
 };
 layout(set = 0, binding = PENUMBRA_T(0), rgba32f) readonly uniform image2D gInput;
 layout(set = 0, binding = PENUMBRA_U(0), rgba8) writeonly uniform image2D gOutput;
@@ -20,6 +21,6 @@ void main() {
   uint2 p = gl_GlobalInvocationID.xy;
   if (p.x >= gTargetSize.x || p.y >= gTargetSize.y) return;
   uint2 source = min((p * gSourceSize) / gTargetSize, gSourceSize - uint2(1, 1));
-  float3 c = imageLoad(gInput, int2(source)).xyz;
+  float3 c = displayChannels(imageLoad(gInput, int2(source)), gChannels);
   imageStore(gOutput, int2(p), float4(tonemapToDisplay(c, gExposure, gOperator), 1.0));
 }

@@ -7,6 +7,7 @@ struct DisplayPush {
   uint2 targetSize;
   float exposure;
   uint toneOperator;
+  uint channels;
 };
 [[vk::push_constant]] ConstantBuffer<DisplayPush> gPush : PENUMBRA_PUSH_CONSTANTS;
 Texture2D<float4> gInput : register(t0);          // PENUMBRA_T(0) in the GLSL twin
@@ -17,6 +18,6 @@ void main(uint3 id : SV_DispatchThreadID) {
   uint2 p = id.xy;
   if (p.x >= gPush.targetSize.x || p.y >= gPush.targetSize.y) return;
   uint2 source = min((p * gPush.sourceSize) / gPush.targetSize, gPush.sourceSize - uint2(1, 1));
-  float3 c = gInput.Load(int3(int2(source), 0)).xyz;
+  float3 c = displayChannels(gInput.Load(int3(int2(source), 0)), gPush.channels);
   gOutput[p] = float4(tonemapToDisplay(c, gPush.exposure, gPush.toneOperator), 1.0);
 }

@@ -52,4 +52,13 @@ uint tonemapToRgba8(float3 linearRgb, float exposure, uint toneOperator) {
   return r | (g << 8u) | (b << 16u) | (255u << 24u);
 }
 
+// What the display pass shows of a texel (DisplayChannels in
+// engine/render/display_pass.h): 0 its colour, 1 signed xyz as 0.5 + 0.5 v
+// (normals, motion), 2 its alpha channel as grey (depth).
+float3 displayChannels(float4 texel, uint channels) {
+  if (channels == 1u) return float3(0.5, 0.5, 0.5) + 0.5 * texel.xyz;
+  if (channels == 2u) return float3(texel.w, texel.w, texel.w);
+  return texel.xyz;
+}
+
 #endif

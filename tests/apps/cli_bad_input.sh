@@ -41,6 +41,10 @@ expect_error "device index out of range" "does not exist" render --device 99 --s
 expect_error "unknown subcommand" "subcommand" bogus
 expect_error "unknown --vary parameter" "--vary 'colour'" render --scene material-test --vary colour --out "$work/out.png"
 expect_error "--set on a scene without a row" "no material-test row" render --scene cornell-box --set metallic=1 --out "$work/out.png"
+expect_error "unknown denoiser" "--denoise" render --denoise bilateral --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "denoising Whitted" "--integrator path" render --integrator whitted --denoise atrous --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "unknown AOV" "unknown output 'uv'" render --aov albedo,uv --size 8x8 --spp 1 --out "$work/out.exr"
+expect_error "AOVs into a PNG" "auxiliary outputs are EXR layers" render --aov albedo --size 8x8 --spp 1 --out "$work/out.png"
 gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 expect_error "missing glTF file" "no such file" render --scene "$work/missing.glb" --out "$work/out.png"
 expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"

@@ -39,6 +39,18 @@ gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 "$penumbra" render --scene "$gltf_data/triangle.glb" --size 16x16 --spp 1 --validation \
   --out "$work/glb.png" >/dev/null
 [ -s "$work/glb.png" ]
+# The denoiser on the final image with every AOV as an EXR layer (the header
+# names the channels), and the temporal denoiser frame by frame.
+"$penumbra" render --size 32x32 --spp 2 --denoise atrous --aov albedo,normal,depth,emission,motion,variance \
+  --validation --out "$work/denoised.exr" | tee "$work/dlog"
+grep -qE "^denoiser \(atrous\): [0-9.]+ ms GPU time$" "$work/dlog"
+for channel in R G B A albedo.R albedo.G albedo.B normal.X normal.Y normal.Z depth.Z emission.R motion.X \
+  motion.Y variance.Y noisy.R; do
+  grep -qa "$channel" "$work/denoised.exr" || { echo "denoised.exr lacks channel $channel"; exit 1; }
+done
+"$penumbra" render --size 32x32 --spp 4 --spp-per-frame 1 --denoise svgf --validation --out "$work/svgf.png" |
+  grep -qE "^denoiser \(svgf\): [0-9.]+ ms GPU time$"
+[ -s "$work/svgf.png" ]
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
 "$penumbra" render --help | grep -q -- "--spp"
 echo "render CLI ok"

@@ -40,6 +40,19 @@ window-size 120 80
 wait-frames 3
 wait-samples 4
 screenshot $work/resized.exr
+set denoise svgf        # the temporal denoiser while the camera moves
+move 0.02 0 0
+wait-frames 3
+set view normal         # the guide buffers, and the denoiser's motion vectors
+wait-frames 1
+set view depth
+wait-frames 1
+set view motion
+wait-frames 1
+set view image
+set denoise atrous      # the single-frame filter on the accumulation
+wait-frames 2
+set denoise off
 quit
 SCRIPT
 xvfb-run -a -s "-screen 0 640x480x24" "$viewer" --scene cornell-box --size 96x64 --render-scale 1 \

@@ -45,3 +45,35 @@ TEST_CASE("non-finite pixels and size mismatches are reported", "[image][compare
   image::Image c{3, 2};
   REQUIRE_THROWS_AS(image::compareImages(a, c, 1e-3), Error);
 }
+
+TEST_CASE("SSIM: 1 for equal images, the closed form for two flat ones, lower with more noise",
+          "[image][compare]") {
+  image::Image a{24, 16}, b{24, 16};
+  for (size_t i = 0; i < a.rgba.size(); ++i) a.rgba[i] = b.rgba[i] = 0.2f + 0.01f * float(i % 37);
+  CHECK(image::ssim(a, b) == 1.0);
+  // Flat images: no variance, so SSIM = (2 x y + C1) / (x^2 + y^2 + C1) of
+  // the display values x = 0.25^(1/2.2), y = 0.5^(1/2.2).
+  image::Image flatA{8, 8}, flatB{8, 8};
+  for (size_t i = 0; i < flatA.rgba.size(); ++i) {
+    flatA.rgba[i] = 0.25f;
+    flatB.rgba[i] = 0.5f;
+  }
+  const double x = std::pow(0.25, 1 / 2.2), y = std::pow(0.5, 1 / 2.2), c1 = 1e-4;
+  CHECK(std::abs(image::ssim(flatA, flatB) - (2 * x * y + c1) / (x * x + y * y + c1)) < 1e-6);
+  CHECK(image::ssim(flatA, flatB) == image::ssim(flatB, flatA));
+  // Deterministic noise of growing amplitude lowers it.
+  double previous = 1.0;
+  for (float amplitude : {0.02f, 0.05f, 0.2f}) {
+    image::Image noisy = a;
+    uint32_t state = 12345;
+    for (size_t i = 0; i < noisy.rgba.size(); ++i) {
+      state = state * 1664525u + 1013904223u;
+      noisy.rgba[i] += amplitude * (float(state >> 8) / 16777216.0f - 0.5f);
+    }
+    const double s = image::ssim(noisy, a);
+    INFO("noise amplitude " << amplitude << ": SSIM " << s);
+    CHECK(s < previous);
+    previous = s;
+  }
+  CHECK_THROWS(image::ssim(a, flatA));
+}

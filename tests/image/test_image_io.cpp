@@ -1,7 +1,7 @@
-#include <catch2/catch_test_macros.hpp>
-#include <catch2/matchers/catch_matchers_string.hpp>
 #include <unistd.h>
 
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 #include <filesystem>
 
 #include "image/image_io.h"
@@ -35,6 +35,51 @@ TEST_CASE("EXR round trip keeps linear float values", "[image]") {
   REQUIRE(back.height == 2);
   REQUIRE(back.rgba == img.rgba);
   fs::remove(path);
+}
+
+TEST_CASE("EXR layers: the beauty as R, G, B, A and each layer's named channels read back exactly",
+          "[image]") {
+  image::Image beauty{3, 2}, albedo{3, 2}, depth{3, 2};
+  for (size_t i = 0; i < beauty.rgba.size(); ++i) {
+    beauty.rgba[i] = 0.5f + float(i);
+    albedo.rgba[i] = 1.0f / (1.0f + float(i));
+    depth.rgba[i] = 100.0f - float(i);
+  }
+  const auto path = (scratchDir() / "layers.exr").string();
+  image::saveExrLayers(path, beauty,
+                       {{"albedo", {"R", "G", "B"}, albedo}, {"depth", {"Z"}, depth}});
+  const image::ExrChannels read = image::loadExrChannels(path);
+  REQUIRE(read.width == 3);
+  REQUIRE(read.height == 2);
+  REQUIRE(read.channels.size() == 8);
+  // OpenEXR lists channels sorted by name.
+  for (size_t c = 1; c < read.channels.size(); ++c)
+    CHECK(read.channels[c - 1].first < read.channels[c].first);
+  const struct {
+    const char* name;
+    const image::Image* image;
+    int component;
+  } expected[] = {{"R", &beauty, 0},        {"G", &beauty, 1},        {"B", &beauty, 2},
+                  {"A", &beauty, 3},        {"albedo.R", &albedo, 0}, {"albedo.G", &albedo, 1},
+                  {"albedo.B", &albedo, 2}, {"depth.Z", &depth, 0}};
+  for (const auto& e : expected) {
+    INFO("channel " << e.name);
+    const std::vector<float>* values = read.find(e.name);
+    REQUIRE(values);
+    for (size_t p = 0; p < 6; ++p) CHECK((*values)[p] == e.image->rgba[p * 4 + e.component]);
+  }
+  // A plain reader sees the beauty image.
+  const image::Image plain = image::loadExr(path);
+  CHECK(plain.rgba == beauty.rgba);
+  // Bad layers fail before anything is written.
+  const auto bad = (scratchDir() / "bad-layers.exr").string();
+  CHECK_THROWS_WITH(image::saveExrLayers(bad, beauty, {{"albedo", {"R"}, image::Image{2, 2}}}),
+                    Catch::Matchers::ContainsSubstring("layer 'albedo' is 2x2"));
+  CHECK_THROWS_WITH(image::saveExrLayers(bad, beauty, {{"x", {"R"}, albedo}, {"x", {"R"}, depth}}),
+                    Catch::Matchers::ContainsSubstring("two channels named 'x.R'"));
+  CHECK_THROWS_WITH(image::saveExrLayers(bad, beauty, {{"x", {}, albedo}}),
+                    Catch::Matchers::ContainsSubstring("1 to 4 channels"));
+  CHECK_FALSE(fs::exists(bad));
 }
 
 TEST_CASE("output paths are checked before rendering", "[image]") {
