@@ -5,12 +5,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <vector>
 
 #include "backend_factory.h"
 #include "commands.h"
 #include "image/image_compare.h"
+#include "render/denoiser.h"
 #include "render/effect_set.h"
 #include "render/path_tracer.h"
 #include "scene/scene_loader.h"
@@ -27,7 +29,20 @@ struct BenchOptions {
   std::string backend = "vulkan";
   int device = -1;
   render::Integrator integrator = render::Integrator::Path;
+  render::DenoiseMode denoise = render::DenoiseMode::Off;
 };
+
+// Mean over pixels of |luminance(a) - luminance(b)|.
+double meanLuminanceChange(const image::Image& a, const image::Image& b) {
+  double sum = 0;
+  const size_t pixels = a.rgba.size() / 4;
+  for (size_t i = 0; i < pixels; ++i) {
+    const float* p = &a.rgba[i * 4];
+    const float* q = &b.rgba[i * 4];
+    sum += std::abs(0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]));
+  }
+  return pixels ? sum / double(pixels) : 0.0;
+}
 
 struct Timings {
   std::vector<double> frameSeconds;
@@ -50,6 +65,44 @@ std::string joinNames(uint32_t effects) {
   std::string joined;
   for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
   return joined;
+}
+
+// The denoiser on the specialized pipeline's frames, each frame its own
+// samples (the real-time case; a still camera): the denoiser's GPU time, the
+// frame it makes with the path tracer's, and the temporal stability, the
+// mean frame-to-frame change of the raw and the denoised image.
+void benchDenoiser(rhi::IDevice& device, render::PathTracer& tracer,
+                   render::PathTracerSettings settings, const BenchOptions& o) {
+  render::Denoiser denoiser(device, tracer.width(), tracer.height());
+  render::DenoiserSettings d;
+  d.mode = o.denoise;
+  std::vector<double> trace, filter;
+  image::Image previousRaw, previousDenoised;
+  double rawChange = 0, denoisedChange = 0;
+  for (uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up
+    settings.seed = 1000 + f;
+    tracer.startNewMean(tracer.nextSampleIndex());
+    const auto stats = tracer.renderFrame(settings, o.sppPerFrame);
+    const double seconds = denoiser.run(tracer, tracer.camera(), o.sppPerFrame, d);
+    image::Image raw = tracer.readback(), denoised = tracer.readback(denoiser.output());
+    if (f > 0) {
+      trace.push_back(stats.gpuSeconds);
+      filter.push_back(seconds);
+      rawChange += meanLuminanceChange(raw, previousRaw);
+      denoisedChange += meanLuminanceChange(denoised, previousDenoised);
+    }
+    previousRaw = std::move(raw);
+    previousDenoised = std::move(denoised);
+  }
+  std::vector<double> frame;
+  for (size_t i = 0; i < trace.size(); ++i) frame.push_back(trace[i] + filter[i]);
+  fmt::print("denoiser ({}) GPU ms/frame median {:.3f}, mean {:.3f}\n",
+             render::denoiseModeName(o.denoise), median(filter) * 1e3, mean(filter) * 1e3);
+  fmt::print("path tracing + denoiser GPU ms/frame median {:.3f}\n", median(frame) * 1e3);
+  fmt::print(
+      "frame-to-frame mean |luminance change|: raw {:.4g}, denoised {:.4g} ({:.1f}x steadier)\n",
+      rawChange / o.frames, denoisedChange / o.frames,
+      denoisedChange > 0 ? rawChange / denoisedChange : 0.0);
 }
 
 int runBench(const BenchOptions& o) {
@@ -107,6 +160,7 @@ int runBench(const BenchOptions& o) {
   fmt::print("images: max |difference| {:.3g}, mean {:.3g}, rays traced {} vs {}\n",
              stats.maxAbsoluteDifference, stats.meanAbsoluteDifference, tSpecialized.rays,
              tFull.rays);
+  if (o.denoise != render::DenoiseMode::Off) benchDenoiser(*device, specialized, settings, o);
   return 0;
 }
 
@@ -134,7 +188,21 @@ Command addBenchCommand(CLI::App& app) {
   cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
       ->transform(CLI::CheckedTransformer(integrators))
       ->default_str("path");
-  return [o] { return runBench(*o); };
+  const std::map<std::string, render::DenoiseMode> denoisers{
+      {"off", render::DenoiseMode::Off},
+      {"atrous", render::DenoiseMode::Atrous},
+      {"svgf", render::DenoiseMode::Svgf}};
+  cmd->add_option(
+         "--denoise", o->denoise,
+         "Also time the denoiser on the specialized pipeline's frames (each frame alone): off | "
+         "atrous | svgf")
+      ->transform(CLI::CheckedTransformer(denoisers))
+      ->default_str("off");
+  return [o] {
+    if (o->denoise != render::DenoiseMode::Off && o->integrator != render::Integrator::Path)
+      throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
+    return runBench(*o);
+  };
 }
 
 }  // namespace penumbra::app

@@ -224,8 +224,8 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   while (done < job.spp) {
     const uint32_t n = std::min(job.sppPerFrame, job.spp - done);
     // The temporal denoiser integrates frames itself: each frame holds only
-    // its own samples.
-    if (o.denoise == render::DenoiseMode::Svgf) tracer.resetAccumulation();
+    // its own samples (the same samples as without it).
+    if (o.denoise == render::DenoiseMode::Svgf) tracer.startNewMean(tracer.nextSampleIndex());
     auto stats = tracer.renderFrame(settings, n);
     gpuSeconds += stats.gpuSeconds;
     rays += stats.rays;

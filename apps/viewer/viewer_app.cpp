@@ -353,8 +353,12 @@ void Viewer::renderFrame() {
                          settings_.tracer.integrator == render::Integrator::Path;
   const render::DenoiserSettings defaults;
   if (denoising && settings_.denoise == render::DenoiseMode::Svgf &&
-      stillFrames_ < defaults.maxHistory)
-    tracer_->resetAccumulation();
+      stillFrames_ < defaults.maxHistory) {
+    // New samples every frame, also across camera moves (which start the
+    // sequence over), or the history would integrate the same noise.
+    tracer_->startNewMean(temporalSamples_);
+    temporalSamples_ += settings_.samplesPerFrame;
+  }
   seenGeneration_ = tracer_->accumulationGeneration();
   if (settings_.maxSamples == 0 || tracer_->accumulatedSamples() < settings_.maxSamples)
     tracer_->recordFrame(list, settings_.tracer, settings_.samplesPerFrame, frameQueries_[slot]);

@@ -96,6 +96,7 @@ class Viewer {
   double lastDenoiseSeconds_ = 0;
   uint64_t seenGeneration_ = ~0ull;  // the tracer's accumulation generation last frame
   uint32_t stillFrames_ = 0;         // frames since the image last started over
+  uint32_t temporalSamples_ = 0;     // the sample sequence of the temporal denoiser's frames
   bool temporalShown_ = false;       // the denoiser output holds a temporal frame to keep showing
   ViewerSettings settings_;
   RenderScaleController scale_;

@@ -58,6 +58,10 @@ Denoiser::Denoiser(rhi::IDevice& device, uint32_t width, uint32_t height)
     historyMoments_[i] = device_.createTexture(tex);
     tex.debugName = fmt::format("denoiser history normal and depth {}", i);
     historyNormalDepth_[i] = device_.createTexture(tex);
+    tex.debugName = fmt::format("denoiser history albedo {}", i);
+    historyAlbedo_[i] = device_.createTexture(tex);
+    tex.debugName = fmt::format("denoiser history emission {}", i);
+    historyEmission_[i] = device_.createTexture(tex);
   }
   tex.debugName = "denoised";
   output_ = device_.createTexture(tex);
@@ -92,7 +96,11 @@ void Denoiser::createBindings(const PathTracer& tracer) {
           Item::storageTexture(PENUMBRA_U(DN_U_HISTORY_NORMAL_DEPTH),
                                historyNormalDepth_[1 - parity]),
           Item::storageTexture(PENUMBRA_U(DN_U_OUTPUT), output_),
-          Item::storageTexture(PENUMBRA_U(DN_U_MOTION), motion_)};
+          Item::storageTexture(PENUMBRA_U(DN_U_MOTION), motion_),
+          Item::storageTexture(PENUMBRA_T(DN_T_HISTORY_ALBEDO), historyAlbedo_[parity]),
+          Item::storageTexture(PENUMBRA_T(DN_T_HISTORY_EMISSION), historyEmission_[parity]),
+          Item::storageTexture(PENUMBRA_U(DN_U_ALBEDO), historyAlbedo_[1 - parity]),
+          Item::storageTexture(PENUMBRA_U(DN_U_EMISSION), historyEmission_[1 - parity])};
       bindings_[parity][direction] = device_.createBindingSet(set, *pipeline_);
     }
   boundBeauty_ = tracer.accumulation().get();

@@ -83,6 +83,7 @@ class Denoiser {
   rhi::BufferHandle frame_;  // DenoiseFrame
   rhi::TextureHandle illumination_[2], historyIllumination_[2], historyMoments_[2],
       historyNormalDepth_[2];
+  rhi::TextureHandle historyAlbedo_[2], historyEmission_[2];
   rhi::TextureHandle output_, motion_;
   // [parity][direction]: history read from `parity`, written to the other;
   // illumination read from `direction`, written to the other.

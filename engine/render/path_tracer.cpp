@@ -621,7 +621,7 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
   c.image = {width_, height_, samples, accumulatedSamples_};
   c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth,
                 frameFlags(settings)};
-  c.lights = {emissiveTriangleCount_, pointLightCount_, 0, 0};
+  c.lights = {emissiveTriangleCount_, pointLightCount_, firstSample_, 0};
   c.shading = toFloat4(ambient_, settings.radianceClamp);
 
   // One counter serves every frame: the queue runs the frames' clear,

@@ -123,10 +123,18 @@ class PathTracer {
   // have finished it (its command list's next open() waits for that).
   FrameStats frameStats(FrameQueries& queries);
   // The next frame starts a new mean (camera or settings changed).
-  void resetAccumulation() {
+  void resetAccumulation() { startNewMean(0); }
+  // The next frame starts a new mean whose samples are those of the sample
+  // sequence from index `firstSample` on: the temporal denoiser's frames,
+  // each its own mean, each with new samples. resetAccumulation() starts
+  // the sequence over, so a render is the same however it was reached.
+  void startNewMean(uint32_t firstSample) {
     accumulatedSamples_ = 0;
+    firstSample_ = firstSample;
     ++accumulationGeneration_;
   }
+  // The index of the next sample in the sequence.
+  uint32_t nextSampleIndex() const { return firstSample_ + accumulatedSamples_; }
   // Counts the resets (resetAccumulation, setCamera, ...): a caller sees
   // that the image started over since it last looked.
   uint64_t accumulationGeneration() const { return accumulationGeneration_; }
@@ -193,6 +201,7 @@ class PathTracer {
   std::vector<scene::Material> materials_;
   std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
   uint32_t accumulatedSamples_ = 0;
+  uint32_t firstSample_ = 0;
   uint64_t accumulationGeneration_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
   uint32_t pointLightCount_ = 0;

@@ -11,7 +11,7 @@ void main() {
   if (material.textures2.y == MATERIAL_ALPHA_OPAQUE) return;
   uint3 v = triangleVertices(instance, uint(gl_PrimitiveID));
   float4 uv = barycentricInterpolate4(gTexCoords[v.x], gTexCoords[v.y], gTexCoords[v.z], gBarycentrics);
-  float u = alphaCoverageRandom(gl_LaunchIDEXT.xy, gFrame.image.w, gFrame.sampling.x, gl_WorldRayOriginEXT,
+  float u = alphaCoverageRandom(gl_LaunchIDEXT.xy, gFrame.lights.z + gFrame.image.w, gFrame.sampling.x, gl_WorldRayOriginEXT,
                                 gl_WorldRayDirectionEXT, uint(gl_InstanceCustomIndexEXT), uint(gl_PrimitiveID));
   if (!alphaKeepsHit(material, uv, u)) ignoreIntersectionEXT;
 }

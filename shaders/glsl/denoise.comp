@@ -23,6 +23,10 @@ layout(set = 0, binding = PENUMBRA_U(DN_U_HISTORY_ILLUMINATION), rgba32f) writeo
 layout(set = 0, binding = PENUMBRA_U(DN_U_HISTORY_NORMAL_DEPTH), rgba32f) writeonly uniform image2D gHistoryNormalDepthOut;
 layout(set = 0, binding = PENUMBRA_U(DN_U_OUTPUT), rgba32f) writeonly uniform image2D gOutput;
 layout(set = 0, binding = PENUMBRA_U(DN_U_MOTION), rgba32f) writeonly uniform image2D gMotion;
+layout(set = 0, binding = PENUMBRA_T(DN_T_HISTORY_ALBEDO), rgba32f) readonly uniform image2D gHistoryAlbedo;
+layout(set = 0, binding = PENUMBRA_T(DN_T_HISTORY_EMISSION), rgba32f) readonly uniform image2D gHistoryEmission;
+layout(set = 0, binding = PENUMBRA_U(DN_U_ALBEDO), rgba32f) uniform image2D gIntegratedAlbedo;
+layout(set = 0, binding = PENUMBRA_U(DN_U_EMISSION), rgba32f) uniform image2D gIntegratedEmission;
 
 DenoiseFrame loadFrame() { return gFrame[0]; }
 float4 loadBeauty(int2 p) { return imageLoad(gBeauty, p); }
@@ -41,6 +45,12 @@ void storeHistoryIllumination(int2 p, float4 v) { imageStore(gHistoryIlluminatio
 void storeHistoryNormalDepth(int2 p, float4 v) { imageStore(gHistoryNormalDepthOut, p, v); }
 void storeOutput(int2 p, float4 v) { imageStore(gOutput, p, v); }
 void storeMotion(int2 p, float4 v) { imageStore(gMotion, p, v); }
+float4 loadHistoryAlbedo(int2 p) { return imageLoad(gHistoryAlbedo, p); }
+float4 loadHistoryEmission(int2 p) { return imageLoad(gHistoryEmission, p); }
+float4 loadIntegratedAlbedo(int2 p) { return imageLoad(gIntegratedAlbedo, p); }
+float4 loadIntegratedEmission(int2 p) { return imageLoad(gIntegratedEmission, p); }
+void storeIntegratedAlbedo(int2 p, float4 v) { imageStore(gIntegratedAlbedo, p, v); }
+void storeIntegratedEmission(int2 p, float4 v) { imageStore(gIntegratedEmission, p, v); }
 #include "denoiser.hlsli"
 
 void main() { denoisePass(int2(gl_GlobalInvocationID.xy), gPush); }

@@ -13,7 +13,7 @@ bool alphaAnyHitKeeps(BuiltInTriangleIntersectionAttributes attributes) {
   float4 uv = barycentricInterpolate4(gTexCoords[v.x], gTexCoords[v.y], gTexCoords[v.z],
                                       attributes.barycentrics);
   FrameConstants frame = gPush.frame;
-  float u = alphaCoverageRandom(DispatchRaysIndex().xy, frame.image.w, frame.sampling.x, WorldRayOrigin(),
+  float u = alphaCoverageRandom(DispatchRaysIndex().xy, frame.lights.z + frame.image.w, frame.sampling.x, WorldRayOrigin(),
                                 WorldRayDirection(), InstanceID(), PrimitiveIndex());
   return alphaKeepsHit(material, uv, u);
 }

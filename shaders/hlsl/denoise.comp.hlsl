@@ -18,6 +18,10 @@ RWTexture2D<float4> gHistoryIlluminationOut : PENUMBRA_REGISTER_U(DN_U_HISTORY_I
 RWTexture2D<float4> gHistoryNormalDepthOut : PENUMBRA_REGISTER_U(DN_U_HISTORY_NORMAL_DEPTH);
 RWTexture2D<float4> gOutput : PENUMBRA_REGISTER_U(DN_U_OUTPUT);
 RWTexture2D<float4> gMotion : PENUMBRA_REGISTER_U(DN_U_MOTION);
+Texture2D<float4> gHistoryAlbedo : PENUMBRA_REGISTER_T(DN_T_HISTORY_ALBEDO);
+Texture2D<float4> gHistoryEmission : PENUMBRA_REGISTER_T(DN_T_HISTORY_EMISSION);
+RWTexture2D<float4> gIntegratedAlbedo : PENUMBRA_REGISTER_U(DN_U_ALBEDO);
+RWTexture2D<float4> gIntegratedEmission : PENUMBRA_REGISTER_U(DN_U_EMISSION);
 
 DenoiseFrame loadFrame() { return gFrame[0]; }
 float4 loadBeauty(int2 p) { return gBeauty.Load(int3(p, 0)); }
@@ -36,6 +40,12 @@ void storeHistoryIllumination(int2 p, float4 v) { gHistoryIlluminationOut[p] = v
 void storeHistoryNormalDepth(int2 p, float4 v) { gHistoryNormalDepthOut[p] = v; }
 void storeOutput(int2 p, float4 v) { gOutput[p] = v; }
 void storeMotion(int2 p, float4 v) { gMotion[p] = v; }
+float4 loadHistoryAlbedo(int2 p) { return gHistoryAlbedo.Load(int3(p, 0)); }
+float4 loadHistoryEmission(int2 p) { return gHistoryEmission.Load(int3(p, 0)); }
+float4 loadIntegratedAlbedo(int2 p) { return gIntegratedAlbedo[p]; }
+float4 loadIntegratedEmission(int2 p) { return gIntegratedEmission[p]; }
+void storeIntegratedAlbedo(int2 p, float4 v) { gIntegratedAlbedo[p] = v; }
+void storeIntegratedEmission(int2 p, float4 v) { gIntegratedEmission[p] = v; }
 #include "denoiser.hlsli"
 
 [numthreads(8, 8, 1)]

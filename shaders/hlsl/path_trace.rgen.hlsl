@@ -32,7 +32,7 @@ void main() {
   float3 sum = zero3();
   GuideSums guides = noGuideSums();
   for (uint s = 0u; s < samples; s += 1u) {
-    Rng rng = rngCreate(pixel, before + s, frame.sampling.x);
+    Rng rng = rngCreate(pixel, frame.lights.z + before + s, frame.sampling.x);
     float2 jitter = jitteredPixelSample(s, samples, rngNext(rng), rngNext(rng));
     float3 direction = cameraRayDirection(frame, float2(pixel) + jitter);
     PathGuides g;

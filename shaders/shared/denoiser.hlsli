@@ -12,9 +12,13 @@
 //   float4 loadBeauty(int2 p), loadAlbedo(int2 p), loadNormalDepth(int2 p),
 //          loadEmission(int2 p), loadSampleMoments(int2 p), loadHistoryIllumination(int2 p),
 //          loadHistoryMoments(int2 p), loadHistoryNormalDepth(int2 p), loadIllumination(int2 p),
-//          loadMoments(int2 p);
+//          loadMoments(int2 p), loadHistoryAlbedo(int2 p), loadHistoryEmission(int2 p),
+//          loadIntegratedAlbedo(int2 p), loadIntegratedEmission(int2 p);
 //   void storeIllumination(int2 p, float4 v), storeMoments(...), storeHistoryIllumination(...),
-//        storeHistoryNormalDepth(...), storeOutput(...), storeMotion(...);
+//        storeHistoryNormalDepth(...), storeOutput(...), storeMotion(...),
+//        storeIntegratedAlbedo(...), storeIntegratedEmission(...);
+// The temporal pass reads this frame's guides (loadAlbedo, loadEmission);
+// every later pass the integrated ones.
 #ifndef PENUMBRA_DENOISER_HLSLI
 #define PENUMBRA_DENOISER_HLSLI
 #include "math.hlsli"
@@ -28,12 +32,16 @@ float3 demodulationAlbedo(DenoiseFrame f, float3 albedo) { return max(albedo, sp
 // Whether pixel p has illumination to filter: it saw a surface, and one
 // that reflects (a black surface, e.g. an emitter's, shows its emission alone,
 // and an illumination of 0 there would darken its neighbours).
-bool filterable(DenoiseFrame f, int2 p) {
-  return loadNormalDepth(p).w > 0.0 && luminance(loadAlbedo(p).xyz) > f.weights.w;
+bool filterableAlbedo(DenoiseFrame f, int2 p, float3 albedo) {
+  return loadNormalDepth(p).w > 0.0 && luminance(albedo) > f.weights.w;
 }
+// By this frame's guides (the temporal pass) or the integrated ones (after).
+bool filterableNow(DenoiseFrame f, int2 p) { return filterableAlbedo(f, p, loadAlbedo(p).xyz); }
+bool filterable(DenoiseFrame f, int2 p) { return filterableAlbedo(f, p, loadIntegratedAlbedo(p).xyz); }
 
+// This frame's illumination at p.
 float3 illuminationAt(DenoiseFrame f, int2 p) {
-  if (!filterable(f, p)) return zero3();
+  if (!filterableNow(f, p)) return zero3();
   return (loadBeauty(p).xyz - loadEmission(p).xyz) / demodulationAlbedo(f, loadAlbedo(p).xyz);
 }
 
@@ -45,7 +53,7 @@ float3 clampFirefly(DenoiseFrame f, int2 p, float3 illumination) {
   for (int dy = -1; dy <= 1; dy += 1)
     for (int dx = -1; dx <= 1; dx += 1) {
       int2 q = p + int2(dx, dy);
-      if ((dx != 0 || dy != 0) && insideImage(f, q) && filterable(f, q))
+      if ((dx != 0 || dy != 0) && insideImage(f, q) && filterableNow(f, q))
         brightest = max(brightest, luminance(illuminationAt(f, q)));
     }
   if (brightest < 0.0) return illumination;
@@ -86,7 +94,7 @@ void denoiseTemporal(int2 p, uint flags) {
   float depth = nd.w;
   float3 albedo = demodulationAlbedo(f, loadAlbedo(p).xyz);
   float3 illumination = illuminationAt(f, p);
-  if ((flags & DN_FLAG_FIREFLY_CLAMP) != 0u && filterable(f, p)) illumination = clampFirefly(f, p, illumination);
+  if ((flags & DN_FLAG_FIREFLY_CLAMP) != 0u && filterableNow(f, p)) illumination = clampFirefly(f, p, illumination);
   // Luminance moments of the samples' illumination (demodulated by the
   // albedo's luminance: the guide holds those of radiance - emission).
   float inverseAlbedo = 1.0 / luminance(albedo);
@@ -94,6 +102,10 @@ void denoiseTemporal(int2 p, uint flags) {
   float samples = float(f.image.z);
 
   float3 integrated = illumination;
+  float3 currentAlbedo = loadAlbedo(p).xyz;
+  float3 currentEmission = loadEmission(p).xyz;
+  float3 integratedAlbedo = currentAlbedo;
+  float3 integratedEmission = currentEmission;
   float2 moments = sampleMoments;
   float historyLength = 1.0;
   float2 motion = float2(0.0, 0.0);
@@ -103,26 +115,46 @@ void denoiseTemporal(int2 p, uint flags) {
     motion = previous.xy - (float2(p) + float2(0.5, 0.5));
     if ((flags & DN_FLAG_HISTORY_VALID) != 0u && previous.z > 0.0) {
       // Bilinear taps of the history, each kept only where the surface it
-      // saw is this one (depth within 10 %, normals within ~25 degrees):
-      // anything else is a disocclusion and restarts the history.
+      // saw is this one (depth within 10 %, normals within ~25 degrees, the
+      // same kind of material): anything else is a disocclusion and
+      // restarts the history.
       float2 tapOrigin = previous.xy - float2(0.5, 0.5);
       int2 base = int2(floor(tapOrigin));
       float2 t = tapOrigin - float2(base);
       float3 normal = unitOrZero(nd.xyz);
       float3 sumIllumination = zero3();
+      float3 sumAlbedo = zero3();
+      float3 sumEmission = zero3();
       float3 sumMoments = zero3();
       float sumWeight = 0.0;
-      for (int k = 0; k < 4; k += 1) {
-        int2 offset = int2(k & 1, k >> 1);
-        int2 q = base + offset;
-        if (!insideImage(f, q)) continue;
-        float4 hnd = loadHistoryNormalDepth(q);
-        if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * previous.z) continue;
-        if (dot(normal, unitOrZero(hnd.xyz)) < 0.9) continue;
-        float w = (offset.x == 1 ? t.x : 1.0 - t.x) * (offset.y == 1 ? t.y : 1.0 - t.y);
-        sumIllumination += w * loadHistoryIllumination(q).xyz;
-        sumMoments += w * loadHistoryMoments(q).xyz;
-        sumWeight += w;
+      // The four bilinear taps; where none is this surface (1 spp guides
+      // flip between the two sides of an edge from frame to frame), the 3x3
+      // history pixels around the spot that are, with equal weights, as
+      // SVGF does.
+      for (int pass = 0; pass < 2 && sumWeight <= 1e-4; pass += 1) {
+        int taps = pass == 0 ? 4 : 9;
+        for (int k = 0; k < taps; k += 1) {
+          int2 offset = pass == 0 ? int2(k & 1, k >> 1) : int2(k % 3 - 1, k / 3 - 1);
+          int2 q = (pass == 0 ? base : int2(floor(previous.xy))) + offset;
+          if (!insideImage(f, q)) continue;
+          float4 hnd = loadHistoryNormalDepth(q);
+          if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * previous.z) continue;
+          if (dot(normal, unitOrZero(hnd.xyz)) < 0.9) continue;
+          // A light 0.1 mm below a ceiling passes both tests: its albedo and
+          // emission must match as well (emitting or not, albedo luminance
+          // within a factor of 2), or emission would smear onto the ceiling.
+          float4 historyAlbedo = loadHistoryAlbedo(q);
+          float4 historyEmission = loadHistoryEmission(q);
+          if ((luminance(historyEmission.xyz) > 0.0) != (luminance(currentEmission) > 0.0)) continue;
+          float la = luminance(historyAlbedo.xyz), lb = luminance(currentAlbedo);
+          if (abs(la - lb) > 0.5 * max(la, lb)) continue;
+          float w = pass == 0 ? (offset.x == 1 ? t.x : 1.0 - t.x) * (offset.y == 1 ? t.y : 1.0 - t.y) : 1.0;
+          sumIllumination += w * loadHistoryIllumination(q).xyz;
+          sumAlbedo += w * historyAlbedo.xyz;
+          sumEmission += w * historyEmission.xyz;
+          sumMoments += w * loadHistoryMoments(q).xyz;
+          sumWeight += w;
+        }
       }
       if (sumWeight > 1e-4) {
         float3 historyMoments = sumMoments / sumWeight;
@@ -130,6 +162,8 @@ void denoiseTemporal(int2 p, uint flags) {
         // A running mean until the history is full, then an exponential one.
         float alpha = 1.0 / historyLength;
         integrated = lerp(sumIllumination / sumWeight, illumination, alpha);
+        integratedAlbedo = lerp(sumAlbedo / sumWeight, integratedAlbedo, alpha);
+        integratedEmission = lerp(sumEmission / sumWeight, integratedEmission, alpha);
         moments = lerp(historyMoments.xy, sampleMoments, alpha);
       }
     }
@@ -141,6 +175,8 @@ void denoiseTemporal(int2 p, uint flags) {
   storeMoments(p, float4(moments, historyLength, behind));
   storeHistoryNormalDepth(p, nd);
   storeMotion(p, float4(motion, 0.0, 0.0));
+  storeIntegratedAlbedo(p, float4(integratedAlbedo, 0.0));
+  storeIntegratedEmission(p, float4(integratedEmission, 0.0));
 }
 
 // Edge-stopping weights of pixel q for the centre p (depth with the centre's
@@ -253,17 +289,24 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
   if ((flags & DN_FLAG_WRITE_HISTORY) != 0u) storeHistoryIllumination(p, filtered);
 }
 
-// Pass DN_PASS_COMPOSE: radiance = illumination x albedo + emission; pixels
-// with nothing to filter keep the path tracer's radiance.
-void denoiseCompose(int2 p) {
+// Pass DN_PASS_COMPOSE: radiance = illumination x albedo + emission (both
+// integrated); pixels that saw no surface keep the path tracer's radiance,
+// black ones (an emitter) show their emission.
+void denoiseCompose(int2 p, uint flags) {
   DenoiseFrame f = loadFrame();
   float4 beauty = loadBeauty(p);
-  if (!filterable(f, p)) {
+  if (loadNormalDepth(p).w <= 0.0) {
     storeOutput(p, float4(beauty.xyz, 1.0));
     return;
   }
-  float3 albedo = demodulationAlbedo(f, loadAlbedo(p).xyz);
-  float3 radiance = loadIllumination(p).xyz * albedo + loadEmission(p).xyz;
+  float3 emission = loadIntegratedEmission(p).xyz;
+  if (!filterable(f, p)) {
+    // A single frame keeps its radiance whole; a temporal one its emission's mean.
+    storeOutput(p, float4((flags & DN_FLAG_TEMPORAL) != 0u ? emission : beauty.xyz, 1.0));
+    return;
+  }
+  float3 albedo = demodulationAlbedo(f, loadIntegratedAlbedo(p).xyz);
+  float3 radiance = loadIllumination(p).xyz * albedo + emission;
   storeOutput(p, float4(radiance, 1.0));
 }
 
@@ -272,7 +315,7 @@ void denoisePass(int2 p, DenoisePush push) {
   if (push.pass == DN_PASS_TEMPORAL) denoiseTemporal(p, push.flags);
   else if (push.pass == DN_PASS_VARIANCE) denoiseVariance(p);
   else if (push.pass == DN_PASS_ATROUS) denoiseAtrous(p, push.stepWidth, push.flags);
-  else denoiseCompose(p);
+  else denoiseCompose(p, push.flags);
 }
 
 #endif

@@ -22,6 +22,8 @@ namespace penumbra::gpu {
 #define DN_T_HISTORY_NORMAL_DEPTH 7  // last frame's normal and depth guide
 #define DN_T_ILLUMINATION 8          // the illumination a pass filters (ping)
 #define DN_T_FRAME 9                 // DenoiseFrame
+#define DN_T_HISTORY_ALBEDO 10       // last frame's integrated albedo
+#define DN_T_HISTORY_EMISSION 11     // last frame's integrated emission
 // Read-write images (u registers).
 #define DN_U_ILLUMINATION 0          // what a pass writes (pong): rgb illumination, a variance
 #define DN_U_MOMENTS 1               // this frame's integrated moments: x m1, y m2, z history length, w samples behind it
@@ -29,6 +31,11 @@ namespace penumbra::gpu {
 #define DN_U_HISTORY_NORMAL_DEPTH 3  // next frame's DN_T_HISTORY_NORMAL_DEPTH
 #define DN_U_OUTPUT 4                // the denoised radiance
 #define DN_U_MOTION 5                // xy: where the pixel was in the previous frame, minus where it is (pixels)
+// This frame's albedo and emission guides, integrated over the history like
+// the illumination (a 1 spp guide is noisy at edges): what the later passes
+// and the re-modulation use, and next frame's DN_T_HISTORY_ALBEDO/EMISSION.
+#define DN_U_ALBEDO 6
+#define DN_U_EMISSION 7
 
 #define DN_PASS_TEMPORAL 0u  // demodulate, reproject, integrate history
 #define DN_PASS_VARIANCE 1u  // spatial variance where too few samples lie behind a pixel

@@ -121,7 +121,10 @@ struct FrameConstants {
   float4 cameraForward;   // xyz unit vector
   uint4 image;            // x width, y height, z samples this frame, w samples accumulated before
   uint4 sampling;         // x seed, y max depth (bounces), z Russian roulette start depth, w flags
-  uint4 lights;           // x emissive triangle count, y point light count
+  // x emissive triangle count, y point light count; z the sample index the
+  // mean started at (image.w counts the samples in the mean, z + image.w is
+  // the next sample's index: PathTracer::startNewMean)
+  uint4 lights;
   float4 shading;         // xyz Whitted ambient radiance; w radiance clamp per sample (0 = off)
 };
 

@@ -51,6 +51,10 @@ done
 "$penumbra" render --size 32x32 --spp 4 --spp-per-frame 1 --denoise svgf --validation --out "$work/svgf.png" |
   grep -qE "^denoiser \(svgf\): [0-9.]+ ms GPU time$"
 [ -s "$work/svgf.png" ]
+# bench times the denoiser on its own frames and measures their steadiness.
+"$penumbra" bench --size 24x24 --frames 3 --denoise svgf | tee "$work/dbench"
+grep -qE "^denoiser \(svgf\) GPU ms/frame median [0-9.]+, mean [0-9.]+$" "$work/dbench"
+grep -qE "^frame-to-frame mean \|luminance change\|: raw [0-9.e+-]+, denoised [0-9.e+-]+" "$work/dbench"
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
 "$penumbra" render --help | grep -q -- "--spp"
 echo "render CLI ok"

@@ -105,6 +105,38 @@ TEST_CASE(
   INFO("16 spp relMSE: raw " << raw16 << ", denoised " << den16);
   CHECK(den16 <= raw16);
 
+  // The temporal filter on a still camera: each frame its own new samples
+  // (the same 16 as the 16 spp image), integrated over the history. After 16
+  // frames it must be closer to the reference than its first frame and far
+  // closer than a raw frame; measured 0.88x its first frame, 6x below a raw
+  // 1 spp frame, and 2.2x above the plain 16 spp mean (per-frame jitter is
+  // not stratified across frames, 1 spp guides restart histories at edges),
+  // so 2.5x bounds that. A still view is the a-trous filter's job (the viewer
+  // switches to it).
+  {
+    render::PathTracer tracer(*device, scene, kSize, kSize);
+    render::Denoiser temporal(*device, kSize, kSize);
+    render::DenoiserSettings svgf = settings;
+    svgf.mode = render::DenoiseMode::Svgf;
+    render::PathTracerSettings frame;
+    frame.seed = 2;
+    double first = 0, last = 0;
+    for (int f = 1; f <= 16; ++f) {
+      tracer.startNewMean(tracer.nextSampleIndex());
+      tracer.renderFrame(frame, 1);
+      temporal.run(tracer, tracer.camera(), 1, svgf);
+      const double error = relMse(tracer.readback(temporal.output()), reference.raw);
+      if (f == 1) first = error;
+      last = error;
+      REQUIRE(image::countNonFinite(tracer.readback(temporal.output())) == 0);
+    }
+    INFO("SVGF relMSE: first frame " << first << ", 16th " << last << "; raw 1 spp " << raw1
+                                     << ", raw 16 spp " << raw16);
+    CHECK(last < first);
+    CHECK(last * 4.0 < raw1);
+    CHECK(last < 2.5 * raw16);
+  }
+
   // Bias: the filter moves light around, it must not make or lose it. At 64
   // spp, where the raw image's own mean is within about 0.5 % of the
   // reference's (at 16 spp its noise alone reached 1.3 %); measured at 16
@@ -314,12 +346,14 @@ TEST_CASE(
       if (insideBackWall(nd, x, y) && x + kShift < kSize && insideBackWall(ndBefore, x + kShift, y))
         CHECK(std::abs(length - float(kFrames + 1)) < 1e-3f);
       // Where a block stood in front of it in the last frame (it is nearer,
-      // so it moved more than kShift pixels), the wall is seen for the first
-      // time: both pixels around where it was show the block.
-      const bool wasHidden = x + kShift + 1 < kSize &&
-                             ndBefore.pixel(x + kShift - 1, y)[3] < 0.9 * depth &&
-                             ndBefore.pixel(x + kShift, y)[3] < 0.9 * depth &&
-                             ndBefore.pixel(x + kShift + 1, y)[3] < 0.9 * depth;
+      // so it moved more than kShift pixels) over every history pixel it
+      // could take (the bilinear taps and the 3x3 around them), the wall is
+      // seen for the first time.
+      bool wasHidden = x + kShift + 1 < kSize && y > 0 && y + 1 < kSize;
+      for (uint32_t dy = 0; wasHidden && dy < 3; ++dy)
+        for (uint32_t dx = 0; dx < 3; ++dx)
+          if (!(ndBefore.pixel(x + kShift + dx - 1, y + dy - 1)[3] < 0.9 * depth))
+            wasHidden = false;
       if (wasHidden) {
         CHECK(length == 1.0f);
         ++restarted;
