@@ -140,12 +140,11 @@ void denoiseTemporal(int2 p, uint flags) {
           float4 hnd = loadHistoryNormalDepth(q);
           if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * previous.z) continue;
           if (dot(normal, unitOrZero(hnd.xyz)) < 0.9) continue;
-          // A light 0.1 mm below a ceiling passes both tests: its albedo and
-          // emission must match as well (emitting or not, albedo luminance
-          // within a factor of 2), or emission would smear onto the ceiling.
+          // A light 0.1 mm below a ceiling passes both tests: the albedo
+          // must match as well (luminance within a factor of 2), or the
+          // light's emission would smear onto the ceiling.
           float4 historyAlbedo = loadHistoryAlbedo(q);
           float4 historyEmission = loadHistoryEmission(q);
-          if ((luminance(historyEmission.xyz) > 0.0) != (luminance(currentEmission) > 0.0)) continue;
           float la = luminance(historyAlbedo.xyz), lb = luminance(currentAlbedo);
           if (abs(la - lb) > 0.5 * max(la, lb)) continue;
           float w = pass == 0 ? (offset.x == 1 ? t.x : 1.0 - t.x) * (offset.y == 1 ? t.y : 1.0 - t.y) : 1.0;
