@@ -127,6 +127,9 @@ void denoiseTemporal(int2 p, uint flags) {
       float3 sumEmission = zero3();
       float3 sumMoments = zero3();
       float sumWeight = 0.0;
+      int2 spot = int2(floor(previous.xy));
+      bool still = dot(motion, motion) < 0.25;
+      float spotAlbedo = insideImage(f, spot) ? luminance(loadHistoryAlbedo(spot).xyz) : 0.0;
       // The four bilinear taps; where none is this surface (1 spp guides
       // flip between the two sides of an edge from frame to frame), the 3x3
       // history pixels around the spot that are, with equal weights, as
@@ -135,17 +138,21 @@ void denoiseTemporal(int2 p, uint flags) {
         int taps = pass == 0 ? 4 : 9;
         for (int k = 0; k < taps; k += 1) {
           int2 offset = pass == 0 ? int2(k & 1, k >> 1) : int2(k % 3 - 1, k / 3 - 1);
-          int2 q = (pass == 0 ? base : int2(floor(previous.xy))) + offset;
+          int2 q = (pass == 0 ? base : spot) + offset;
           if (!insideImage(f, q)) continue;
           float4 hnd = loadHistoryNormalDepth(q);
           if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * previous.z) continue;
           if (dot(normal, unitOrZero(hnd.xyz)) < 0.9) continue;
           // A light 0.1 mm below a ceiling passes both tests: the albedo
           // must match as well (luminance within a factor of 2), or the
-          // light's emission would smear onto the ceiling.
+          // light's emission would smear onto the ceiling. Compared with
+          // this frame's albedo, except for a camera that has not moved by
+          // half a pixel: its bilinear taps are compared with the history
+          // at the spot itself, so an edge pixel keeps its own history
+          // whichever side its 1 spp sample hit this frame.
           float4 historyAlbedo = loadHistoryAlbedo(q);
           float4 historyEmission = loadHistoryEmission(q);
-          float la = luminance(historyAlbedo.xyz), lb = luminance(currentAlbedo);
+          float la = luminance(historyAlbedo.xyz), lb = still && pass == 0 ? spotAlbedo : luminance(currentAlbedo);
           if (abs(la - lb) > 0.5 * max(la, lb)) continue;
           float w = pass == 0 ? (offset.x == 1 ? t.x : 1.0 - t.x) * (offset.y == 1 ? t.y : 1.0 - t.y) : 1.0;
           sumIllumination += w * loadHistoryIllumination(q).xyz;
