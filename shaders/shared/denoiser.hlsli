@@ -194,7 +194,11 @@ float edgeWeight(DenoiseFrame f, float depthP, float2 gradient, float3 normalP, 
   float w = 1.0;
   if (f.weights.x > 0.0)
     w *= exp(-abs(ndQ.w - depthP) / (f.weights.x * abs(dot(gradient, offset)) + 1e-3 * depthP + 1e-8));
-  if (f.weights.y > 0.0) w *= pow(max(0.0, dot(normalP, unitOrZero(ndQ.xyz))), f.weights.y);
+  // A pixel whose samples' normals cancel (both sides of a thin surface) has
+  // no normal to compare.
+  float3 normalQ = unitOrZero(ndQ.xyz);
+  if (f.weights.y > 0.0 && dot(normalP, normalP) > 0.0 && dot(normalQ, normalQ) > 0.0)
+    w *= pow(max(0.0, dot(normalP, normalQ)), f.weights.y);
   if (f.weights.z > 0.0) w *= exp(-abs(luminanceP - luminanceQ) / sigmaLuminance);
   return w;
 }
@@ -289,8 +293,9 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
       sumVariance += w * w * v.w;
       sumWeight += w;
     }
-  // The centre's weight is kernel[0]^2 > 0, so sumWeight > 0.
-  float4 filtered = float4(sum / sumWeight, sumVariance / (sumWeight * sumWeight));
+  // The centre's own weight is kernel[0]^2 > 0; should it underflow, the
+  // pixel stays as it is.
+  float4 filtered = sumWeight > 0.0 ? float4(sum / sumWeight, sumVariance / (sumWeight * sumWeight)) : centre;
   storeIllumination(p, filtered);
   if ((flags & DN_FLAG_WRITE_HISTORY) != 0u) storeHistoryIllumination(p, filtered);
 }
