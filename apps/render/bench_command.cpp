@@ -188,16 +188,10 @@ Command addBenchCommand(CLI::App& app) {
   cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
       ->transform(CLI::CheckedTransformer(integrators))
       ->default_str("path");
-  const std::map<std::string, render::DenoiseMode> denoisers{
-      {"off", render::DenoiseMode::Off},
-      {"atrous", render::DenoiseMode::Atrous},
-      {"svgf", render::DenoiseMode::Svgf}};
-  cmd->add_option(
-         "--denoise", o->denoise,
-         "Also time the denoiser on the specialized pipeline's frames (each frame alone): off | "
-         "atrous | svgf")
-      ->transform(CLI::CheckedTransformer(denoisers))
-      ->default_str("off");
+  addDenoiseOption(
+      cmd, o->denoise,
+      "Also time the denoiser on the specialized pipeline's frames (each frame alone): off | "
+      "atrous | svgf");
   return [o] {
     if (o->denoise != render::DenoiseMode::Off && o->integrator != render::Integrator::Path)
       throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");

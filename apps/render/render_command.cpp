@@ -268,6 +268,16 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 
 }  // namespace
 
+void addDenoiseOption(CLI::App* command, render::DenoiseMode& mode,
+                      const std::string& description) {
+  std::map<std::string, render::DenoiseMode> modes;
+  for (auto m : {render::DenoiseMode::Off, render::DenoiseMode::Atrous, render::DenoiseMode::Svgf})
+    modes[render::denoiseModeName(m)] = m;
+  command->add_option("--denoise", mode, description)
+      ->transform(CLI::CheckedTransformer(modes))
+      ->default_str("off");
+}
+
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd =
@@ -340,15 +350,9 @@ Command addRenderCommand(CLI::App& app) {
                 "List the effects the scene calls for, one per line, and exit");
   cmd->add_flag("--validation", o->validation,
                 "Enable the API validation layer; fail on any message");
-  const std::map<std::string, render::DenoiseMode> denoisers{
-      {"off", render::DenoiseMode::Off},
-      {"atrous", render::DenoiseMode::Atrous},
-      {"svgf", render::DenoiseMode::Svgf}};
-  cmd->add_option(
-         "--denoise", o->denoise,
-         "Denoiser: off | atrous (single frame, on the final image) | svgf (temporal, every frame)")
-      ->transform(CLI::CheckedTransformer(denoisers))
-      ->default_str("off");
+  addDenoiseOption(
+      cmd, o->denoise,
+      "Denoiser: off | atrous (single frame, on the final image) | svgf (temporal, every frame)");
   cmd->add_flag("--no-firefly-clamp", o->noFireflyClamp,
                 "Denoiser: keep pixels brighter than all their neighbours (no firefly clamp)");
   cmd->add_option(

@@ -44,29 +44,26 @@ Denoiser::Denoiser(rhi::IDevice& device, uint32_t width, uint32_t height)
   frame.debugName = "denoiser frame";
   frame_ = device_.createBuffer(frame);
 
-  rhi::TextureDesc tex;
-  tex.width = width;
-  tex.height = height;
-  tex.format = rhi::Format::RGBA32_FLOAT;
-  tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
-  for (int i = 0; i < 2; ++i) {
-    tex.debugName = fmt::format("denoiser illumination {}", i);
-    illumination_[i] = device_.createTexture(tex);
-    tex.debugName = fmt::format("denoiser history illumination {}", i);
-    historyIllumination_[i] = device_.createTexture(tex);
-    tex.debugName = fmt::format("denoiser history moments {}", i);
-    historyMoments_[i] = device_.createTexture(tex);
-    tex.debugName = fmt::format("denoiser history normal and depth {}", i);
-    historyNormalDepth_[i] = device_.createTexture(tex);
-    tex.debugName = fmt::format("denoiser history albedo {}", i);
-    historyAlbedo_[i] = device_.createTexture(tex);
-    tex.debugName = fmt::format("denoiser history emission {}", i);
-    historyEmission_[i] = device_.createTexture(tex);
-  }
-  tex.debugName = "denoised";
-  output_ = device_.createTexture(tex);
-  tex.debugName = "motion vectors";
-  motion_ = device_.createTexture(tex);
+  const auto image = [&](const std::string& name) {
+    rhi::TextureDesc tex;
+    tex.width = width;
+    tex.height = height;
+    tex.format = rhi::Format::RGBA32_FLOAT;
+    tex.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+    tex.debugName = "denoiser " + name;
+    return device_.createTexture(tex);
+  };
+  const struct {
+    rhi::TextureHandle* pair;
+    const char* name;
+  } pairs[] = {
+      {illumination_, "illumination"},      {historyIllumination_, "history illumination"},
+      {historyMoments_, "history moments"}, {historyNormalDepth_, "history normal and depth"},
+      {historyAlbedo_, "history albedo"},   {historyEmission_, "history emission"}};
+  for (const auto& p : pairs)
+    for (int i = 0; i < 2; ++i) p.pair[i] = image(fmt::format("{} {}", p.name, i));
+  output_ = image("output");
+  motion_ = image("motion vectors");
 }
 
 Denoiser::~Denoiser() = default;
