@@ -64,6 +64,17 @@ Denoiser::Denoiser(rhi::IDevice& device, uint32_t width, uint32_t height)
     for (int i = 0; i < 2; ++i) p.pair[i] = image(fmt::format("{} {}", p.name, i));
   output_ = image("output");
   motion_ = image("motion vectors");
+  // Defined contents from the start (the viewer can show the motion vectors
+  // before a first temporal frame has written them).
+  auto* cmd = commandList_.get();
+  cmd->open();
+  for (const auto& p : pairs)
+    for (int i = 0; i < 2; ++i) cmd->clearTextureFloat(p.pair[i].get(), 0.0f, 0.0f, 0.0f, 0.0f);
+  cmd->clearTextureFloat(output_.get(), 0.0f, 0.0f, 0.0f, 0.0f);
+  cmd->clearTextureFloat(motion_.get(), 0.0f, 0.0f, 0.0f, 0.0f);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
 }
 
 Denoiser::~Denoiser() = default;
