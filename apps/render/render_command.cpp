@@ -271,8 +271,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 void addDenoiseOption(CLI::App* command, render::DenoiseMode& mode,
                       const std::string& description) {
   std::map<std::string, render::DenoiseMode> modes;
-  for (auto m : {render::DenoiseMode::Off, render::DenoiseMode::Atrous, render::DenoiseMode::Svgf})
-    modes[render::denoiseModeName(m)] = m;
+  for (auto m : render::kDenoiseModes) modes[render::denoiseModeName(m)] = m;
   command->add_option("--denoise", mode, description)
       ->transform(CLI::CheckedTransformer(modes))
       ->default_str("off");

@@ -102,9 +102,9 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
     return assign(s.maxSamples, parseUint(name, value, 0, 1u << 24), E::None);
   if (name == "ui") return assign(s.showUi, parseBool(name, value), E::None);
   if (name == "denoise") {
-    if (value != "off" && value != "atrous" && value != "svgf")
-      badValue(name, value, "off, atrous or svgf");
-    return assign(s.denoise, render::parseDenoiseMode(value), E::ResetAccumulation);
+    auto v = render::parseDenoiseMode(value);
+    if (!v) badValue(name, value, "off, atrous or svgf");
+    return assign(s.denoise, *v, E::ResetAccumulation);
   }
   if (name == "firefly-clamp") return assign(s.fireflyClamp, parseBool(name, value), E::None);
   if (name == "view") {

@@ -131,7 +131,8 @@ void Viewer::drawAlgorithmMenu() {
 
   ImGui::Separator();
   if (enumCombo("denoiser", settings_.denoise,
-                {render::DenoiseMode::Off, render::DenoiseMode::Atrous, render::DenoiseMode::Svgf},
+                std::vector<render::DenoiseMode>(std::begin(render::kDenoiseModes),
+                                                 std::end(render::kDenoiseModes)),
                 &render::denoiseModeName))
     tracer_->resetAccumulation();
   ImGui::BeginDisabled(settings_.denoise == render::DenoiseMode::Off);

@@ -8,11 +8,10 @@
 
 namespace penumbra::render {
 
-DenoiseMode parseDenoiseMode(const std::string& name) {
-  if (name == "off") return DenoiseMode::Off;
-  if (name == "atrous") return DenoiseMode::Atrous;
-  if (name == "svgf") return DenoiseMode::Svgf;
-  throw Error(fmt::format("unknown denoiser '{}' (off, atrous, svgf)", name));
+std::optional<DenoiseMode> parseDenoiseMode(std::string_view name) {
+  for (DenoiseMode m : kDenoiseModes)
+    if (name == denoiseModeName(m)) return m;
+  return std::nullopt;
 }
 
 const char* denoiseModeName(DenoiseMode mode) {

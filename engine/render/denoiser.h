@@ -13,6 +13,8 @@
 //    mean, guided by the per-pixel variance of the mean of its samples. For
 //    headless renders; the filter fades out as the sample count grows.
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include "render/path_tracer.h"
 #include "rhi/rhi.h"
@@ -21,9 +23,11 @@
 namespace penumbra::render {
 
 enum class DenoiseMode { Off, Atrous, Svgf };
+inline constexpr DenoiseMode kDenoiseModes[] = {DenoiseMode::Off, DenoiseMode::Atrous,
+                                                DenoiseMode::Svgf};
 
-// "off", "atrous", "svgf"; penumbra::Error otherwise.
-DenoiseMode parseDenoiseMode(const std::string& name);
+// "off", "atrous", "svgf" (as parseIntegrator and the others in render_job.h).
+std::optional<DenoiseMode> parseDenoiseMode(std::string_view name);
 const char* denoiseModeName(DenoiseMode mode);
 
 struct DenoiserSettings {
