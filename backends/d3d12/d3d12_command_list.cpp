@@ -323,6 +323,8 @@ void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
     if (g.type == rhi::rt::GeometryType::Triangles) {
       setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
       if (g.triangles.indexBuffer) setBufferState(g.triangles.indexBuffer, rhi::ResourceState::AccelStructBuildInput);
+      if (g.triangles.transformBuffer)
+        setBufferState(g.triangles.transformBuffer, rhi::ResourceState::AccelStructBuildInput);
     } else {
       setBufferState(g.aabbs.buffer, rhi::ResourceState::AccelStructBuildInput);
     }

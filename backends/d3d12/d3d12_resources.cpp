@@ -235,7 +235,7 @@ AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress, u
         throw Error(fmt::format("d3d12: '{}' has a triangle geometry without vertices", desc_.debugName));
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_TRIANGLES;
       auto& tri = g.Triangles;
-      tri.Transform3x4 = 0;
+      tri.Transform3x4 = t.transformBuffer ? t.transformBuffer->deviceAddress() + t.transformOffset : 0;
       tri.VertexFormat = toDxgiFormat(t.vertexFormat);
       tri.VertexCount = t.vertexCount;
       tri.VertexBuffer.StartAddress = t.vertexBuffer->deviceAddress() + t.vertexOffset;

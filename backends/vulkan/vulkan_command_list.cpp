@@ -305,6 +305,8 @@ void VulkanCommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
       setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
       if (g.triangles.indexBuffer)
         setBufferState(g.triangles.indexBuffer, rhi::ResourceState::AccelStructBuildInput);
+      if (g.triangles.transformBuffer)
+        setBufferState(g.triangles.transformBuffer, rhi::ResourceState::AccelStructBuildInput);
     } else {
       setBufferState(g.aabbs.buffer, rhi::ResourceState::AccelStructBuildInput);
     }

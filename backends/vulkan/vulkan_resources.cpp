@@ -268,6 +268,8 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
         tri.vertexData.deviceAddress = t.vertexBuffer->deviceAddress() + t.vertexOffset;
         tri.vertexStride = t.vertexStride;
         tri.maxVertex = t.vertexCount > 0 ? t.vertexCount - 1 : 0;
+        if (t.transformBuffer)
+          tri.transformData.deviceAddress = t.transformBuffer->deviceAddress() + t.transformOffset;
         if (t.indexBuffer) {
           tri.indexType = t.indexFormat == rhi::Format::R16_UINT ? VK_INDEX_TYPE_UINT16
                                                                   : VK_INDEX_TYPE_UINT32;

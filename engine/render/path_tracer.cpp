@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 #include "effects.h"
 #include "path_tracer_shared.h"
@@ -23,10 +25,11 @@ gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) {
   return {v.x, v.y, v.z, w};
 }
 
-rhi::rt::AffineTransform toAffine(const glm::mat4& m) {
+template <class Matrix>  // glm::mat4 or glm::dmat4
+rhi::rt::AffineTransform toAffine(const Matrix& m) {
   rhi::rt::AffineTransform t{};
   for (int row = 0; row < 3; ++row)
-    for (int col = 0; col < 4; ++col) t[row * 4 + col] = m[col][row];  // glm is column-major
+    for (int col = 0; col < 4; ++col) t[row * 4 + col] = float(m[col][row]);  // glm is column-major
   return t;
 }
 
@@ -46,6 +49,48 @@ gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32
                       float(inverse[3][row])};
   }
   return d;
+}
+
+// The order of the instances on the GPU (InstanceData, TLAS instance IDs):
+// first those whose mesh is drawn once, which share one BLAS (one geometry
+// each, its transform applied when the BLAS is built), then the instances of
+// meshes drawn several times, one TLAS instance each over the mesh's BLAS.
+// A TLAS instance costs traversal a ray transform and a second hierarchy;
+// most scenes draw most meshes once (the Cornell box: 8 instances, one
+// BLAS). Instanced meshes keep their own BLAS so their triangles are stored
+// once.
+struct MeshInstanceOrder {
+  std::vector<uint32_t> sceneInstance;  // GPU instance index -> scene instance index
+  uint32_t merged = 0;                  // the first `merged` share the merged BLAS
+};
+
+MeshInstanceOrder meshInstanceOrder(const scene::Scene& scene) {
+  std::vector<uint32_t> uses(scene.meshes.size(), 0);
+  for (const auto& inst : scene.instances) ++uses[inst.mesh];
+  MeshInstanceOrder order;
+  for (uint32_t i = 0; i < scene.instances.size(); ++i)
+    if (uses[scene.instances[i].mesh] == 1) order.sceneInstance.push_back(i);
+  order.merged = uint32_t(order.sceneInstance.size());
+  for (uint32_t i = 0; i < scene.instances.size(); ++i)
+    if (uses[scene.instances[i].mesh] > 1) order.sceneInstance.push_back(i);
+  return order;
+}
+
+// The merged BLAS's space: world space moved by `origin` (the centre of its
+// instances' bounds), so its vertices keep float precision about their
+// centre wherever the scene sits; its TLAS instance translates it back.
+glm::dvec3 mergedOrigin(const scene::Scene& scene, const MeshInstanceOrder& order) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (uint32_t k = 0; k < order.merged; ++k) {
+    const auto& inst = scene.instances[order.sceneInstance[k]];
+    const glm::dmat4 m(inst.transform);
+    for (const glm::vec3& p : scene.meshes[inst.mesh].positions) {
+      const glm::dvec3 w(m * glm::dvec4(glm::dvec3(p), 1.0));
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+  }
+  return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
 }
 
 template <class T>
@@ -99,7 +144,9 @@ struct PathTracer::SceneBuffers {
   rhi::BufferHandle normals, tangents, texcoords;
   SceneTextures textures;
   rhi::BufferHandle textureRefs;
-  std::vector<rhi::rt::AccelStructHandle> bottomLevels;
+  rhi::rt::AccelStructHandle mergedBottomLevel;  // every mesh drawn once (MeshInstanceOrder)
+  rhi::BufferHandle mergedTransforms;            // its geometries' transforms, 3x4 rows
+  std::vector<rhi::rt::AccelStructHandle> bottomLevels;  // per instanced mesh; null for the others
   rhi::rt::AccelStructHandle topLevel;
   rhi::BufferHandle implicits, implicitAabbs;
   std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
@@ -206,7 +253,10 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   std::vector<gpu::InstanceData> instances;
   std::vector<gpu::EmissiveTriangle> emissive;
   std::vector<double> power;
-  for (const auto& inst : scene.instances) {
+  const MeshInstanceOrder order = meshInstanceOrder(scene);
+  gpuToSceneInstance_ = order.sceneInstance;
+  for (uint32_t sceneIndex : order.sceneInstance) {
+    const auto& inst = scene.instances[sceneIndex];
     const auto& mesh = scene.meshes[inst.mesh];
     const auto& material = scene.materials[mesh.material];
     gpu::InstanceData data = instanceData(firstIndex[inst.mesh], firstVertex[inst.mesh],
@@ -319,14 +369,12 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
                    s.textures.refs.size() * sizeof(gpu::TextureRefData));
 
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    rhi::rt::AccelStructDesc blas;
-    blas.debugName = "BLAS " + scene.meshes[m].name;
+  // Alpha-masked meshes are the only non-opaque geometry: the any-hit
+  // shader runs for them alone. Each texel is one hit or none, so duplicate
+  // any-hit calls could not change a result, but they cost time.
+  auto meshGeometry = [&](uint32_t m) {
     rhi::rt::GeometryDesc geo;
     geo.type = rhi::rt::GeometryType::Triangles;
-    // Alpha-masked meshes are the only non-opaque geometry: the any-hit
-    // shader runs for them alone. Each texel is one hit or none, so
-    // duplicate any-hit calls could not change a result, but they cost time.
     geo.flags = alphaMasked(scene.materials[scene.meshes[m].material])
                     ? rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation
                     : rhi::rt::GeometryFlags::Opaque;
@@ -337,20 +385,54 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     geo.triangles.indexBuffer = s.indices.get();
     geo.triangles.indexOffset = uint64_t(firstIndex[m]) * sizeof(uint32_t);
     geo.triangles.indexCount = uint32_t(scene.meshes[m].indices.size());
-    blas.bottomLevelGeometries.push_back(geo);
-    s.bottomLevels.push_back(device_.createAccelStruct(blas));
-    cmd->buildBottomLevelAccelStruct(s.bottomLevels.back().get());
-  }
-
+    return geo;
+  };
   std::vector<rhi::rt::InstanceDesc> tlasInstances;
-  for (size_t i = 0; i < scene.instances.size(); ++i) {
+  if (order.merged > 0) {
+    const glm::dvec3 origin = mergedOrigin(scene, order);
+    std::vector<rhi::rt::AffineTransform> transforms;
+    rhi::rt::AccelStructDesc blas;
+    blas.debugName = "BLAS meshes drawn once";
+    for (uint32_t k = 0; k < order.merged; ++k) {
+      const auto& inst = scene.instances[order.sceneInstance[k]];
+      transforms.push_back(
+          toAffine(glm::translate(glm::dmat4(1.0), -origin) * glm::dmat4(inst.transform)));
+      blas.bottomLevelGeometries.push_back(meshGeometry(inst.mesh));
+    }
+    s.mergedTransforms = makeStorageBuffer(device_, transforms, BufferUsage::AccelStructBuildInput,
+                                           "merged BLAS transforms");
+    cmd->writeBuffer(s.mergedTransforms.get(), transforms.data(),
+                     transforms.size() * sizeof(transforms[0]));
+    for (uint32_t k = 0; k < order.merged; ++k) {
+      auto& triangles = blas.bottomLevelGeometries[k].triangles;
+      triangles.transformBuffer = s.mergedTransforms.get();
+      triangles.transformOffset = k * sizeof(rhi::rt::AffineTransform);
+    }
+    s.mergedBottomLevel = device_.createAccelStruct(blas);
+    cmd->buildBottomLevelAccelStruct(s.mergedBottomLevel.get());
     rhi::rt::InstanceDesc d;
-    d.transform = toAffine(scene.instances[i].transform);
-    d.instanceID = uint32_t(i);
-    d.instanceMask = 0xff;
-    d.instanceContributionToHitGroupIndex = 0;
+    d.transform = toAffine(glm::translate(glm::dmat4(1.0), origin));
+    d.instanceID = 0;  // + geometry index: the GPU instance (triangle.rchit)
     d.flags = rhi::rt::InstanceTriangleCullDisable;
-    d.bottomLevelAddress = s.bottomLevels[scene.instances[i].mesh]->deviceAddress();
+    d.bottomLevelAddress = s.mergedBottomLevel->deviceAddress();
+    tlasInstances.push_back(d);
+  }
+  s.bottomLevels.resize(scene.meshes.size());
+  for (uint32_t gpuIndex = order.merged; gpuIndex < order.sceneInstance.size(); ++gpuIndex) {
+    const auto& inst = scene.instances[order.sceneInstance[gpuIndex]];
+    auto& bottomLevel = s.bottomLevels[inst.mesh];
+    if (!bottomLevel) {
+      rhi::rt::AccelStructDesc blas;
+      blas.debugName = "BLAS " + scene.meshes[inst.mesh].name;
+      blas.bottomLevelGeometries.push_back(meshGeometry(inst.mesh));
+      bottomLevel = device_.createAccelStruct(blas);
+      cmd->buildBottomLevelAccelStruct(bottomLevel.get());
+    }
+    rhi::rt::InstanceDesc d;
+    d.transform = toAffine(inst.transform);
+    d.instanceID = gpuIndex;
+    d.flags = rhi::rt::InstanceTriangleCullDisable;
+    d.bottomLevelAddress = bottomLevel->deviceAddress();
     tlasInstances.push_back(d);
   }
   uploadImplicits(scene, tlasInstances);

@@ -200,6 +200,7 @@ class PathTracer {
   scene::Camera camera_;
   std::vector<scene::Material> materials_;
   std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
+  std::vector<uint32_t> gpuToSceneInstance_;  // InstanceData order (meshInstanceOrder)
   uint32_t accumulatedSamples_ = 0;
   uint32_t firstSample_ = 0;
   uint64_t accumulationGeneration_ = 0;

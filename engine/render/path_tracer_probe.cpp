@@ -58,7 +58,9 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
     h.position = {r.position.x, r.position.y, r.position.z};
     h.hitT = r.position.w;
     h.geometricNormal = {r.normal.x, r.normal.y, r.normal.z};
-    h.instanceIndex = r.ids.x;
+    // The GPU orders mesh instances its own way (meshInstanceOrder);
+    // implicit objects follow them in both orders.
+    h.instanceIndex = r.ids.x < gpuToSceneInstance_.size() ? gpuToSceneInstance_[r.ids.x] : r.ids.x;
     h.primitiveIndex = r.ids.y;
     hits.push_back(h);
   }

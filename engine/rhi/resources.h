@@ -93,6 +93,12 @@ struct GeometryTriangles {
   uint64_t indexOffset = 0;
   Format indexFormat = Format::R32_UINT;
   uint32_t indexCount = 0;
+  // Null: the vertices are the BLAS's space. Otherwise a row-major 3x4 float
+  // matrix (AffineTransform, 16-byte aligned) applied to the vertices when
+  // the BLAS is built: D3D12 Transform3x4, Vulkan transformData. The buffer
+  // needs BufferUsage::AccelStructBuildInput.
+  IBuffer* transformBuffer = nullptr;
+  uint64_t transformOffset = 0;
 };
 
 // Each AABB is 6 floats (min xyz, max xyz): D3D12_RAYTRACING_AABB /

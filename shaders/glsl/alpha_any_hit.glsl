@@ -6,12 +6,13 @@
 hitAttributeEXT float2 gBarycentrics;
 
 void main() {
-  InstanceData instance = gInstances[gl_InstanceCustomIndexEXT];
+  uint instanceIndex = uint(gl_InstanceCustomIndexEXT) + uint(gl_GeometryIndexEXT);  // as triangle.rchit
+  InstanceData instance = gInstances[instanceIndex];
   MaterialData material = gMaterials[instance.materialIndex];
   if (material.textures2.y == MATERIAL_ALPHA_OPAQUE) return;
   uint3 v = triangleVertices(instance, uint(gl_PrimitiveID));
   float4 uv = barycentricInterpolate4(gTexCoords[v.x], gTexCoords[v.y], gTexCoords[v.z], gBarycentrics);
   float u = alphaCoverageRandom(gl_LaunchIDEXT.xy, gFrame.lights.z + gFrame.image.w, gFrame.sampling.x, gl_WorldRayOriginEXT,
-                                gl_WorldRayDirectionEXT, uint(gl_InstanceCustomIndexEXT), uint(gl_PrimitiveID));
+                                gl_WorldRayDirectionEXT, instanceIndex, uint(gl_PrimitiveID));
   if (!alphaKeepsHit(material, uv, u)) ignoreIntersectionEXT;
 }

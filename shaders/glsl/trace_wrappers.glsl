@@ -5,7 +5,7 @@
 // non-opaque (their any-hit shader cuts texels away for both kinds of ray).
 SurfaceHit traceClosest(float3 origin, float3 direction) {
   gRaysThisLaunch += 1u;
-  traceRayEXT(gScene, gl_RayFlagsNoneEXT, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, origin,
+  traceRayEXT(gScene, gl_RayFlagsNoneEXT, 0xff, PT_RAY_RADIANCE, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, origin,
               0.0, direction, 1e30, PT_PAYLOAD_RADIANCE);
   return surfaceFromRecord(origin, direction, gHit);
 }
@@ -16,7 +16,7 @@ bool traceVisibility(float3 origin, float3 direction, float tMax) {
   traceRayEXT(gScene,
               gl_RayFlagsTerminateOnFirstHitEXT |
                   gl_RayFlagsSkipClosestHitShaderEXT,
-              0xff, PT_RAY_SHADOW, PT_RAY_TYPES, PT_MISS_SHADOW, origin, 0.0, direction, tMax,
+              0xff, PT_RAY_SHADOW, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_SHADOW, origin, 0.0, direction, tMax,
               PT_PAYLOAD_SHADOW);
   return gVisible != 0u;
 }

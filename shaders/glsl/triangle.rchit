@@ -9,7 +9,8 @@ hitAttributeEXT float2 gBarycentrics;
 
 void main() {
   gHit.hitT = gl_HitTEXT;
-  gHit.instance = uint(gl_InstanceCustomIndexEXT);
+  // A TLAS instance holds one mesh, or (the merged BLAS) one per geometry.
+  gHit.instance = uint(gl_InstanceCustomIndexEXT) + uint(gl_GeometryIndexEXT);
   gHit.primitive = uint(gl_PrimitiveID);
   gHit.attributes = float3(gBarycentrics, 0.0);
 }

@@ -6,7 +6,8 @@
 #include "path_trace_common.hlsli"
 
 bool alphaAnyHitKeeps(BuiltInTriangleIntersectionAttributes attributes) {
-  InstanceData instance = gInstances[InstanceID()];
+  uint instanceIndex = InstanceID() + GeometryIndex();  // as triangle.rchit
+  InstanceData instance = gInstances[instanceIndex];
   MaterialData material = gMaterials[instance.materialIndex];
   if (material.textures2.y == MATERIAL_ALPHA_OPAQUE) return true;
   uint3 v = triangleVertices(instance, PrimitiveIndex());
@@ -14,7 +15,7 @@ bool alphaAnyHitKeeps(BuiltInTriangleIntersectionAttributes attributes) {
                                       attributes.barycentrics);
   FrameConstants frame = gPush.frame;
   float u = alphaCoverageRandom(DispatchRaysIndex().xy, frame.lights.z + frame.image.w, frame.sampling.x, WorldRayOrigin(),
-                                WorldRayDirection(), InstanceID(), PrimitiveIndex());
+                                WorldRayDirection(), instanceIndex, PrimitiveIndex());
   return alphaKeepsHit(material, uv, u);
 }
 

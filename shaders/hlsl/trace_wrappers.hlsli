@@ -16,7 +16,7 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   ray.TMin = 0.0;
   ray.TMax = 1e30;
   HitRecord record = hitRecordMiss();
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_RAY_TYPES, PT_MISS_RADIANCE, ray, record);
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
   return surfaceFromRecord(origin, direction, record);
 }
 
@@ -32,7 +32,7 @@ bool traceVisibility(float3 origin, float3 direction, float tMax) {
   TraceRay(gScene,
            RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH |
                RAY_FLAG_SKIP_CLOSEST_HIT_SHADER,
-           0xff, PT_RAY_SHADOW, PT_RAY_TYPES, PT_MISS_SHADOW, ray, shadow);
+           0xff, PT_RAY_SHADOW, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_SHADOW, ray, shadow);
   return shadow.visible != 0u;
 }
 

@@ -5,7 +5,8 @@
 [shader("closesthit")]
 void main(inout HitRecord hit, in BuiltInTriangleIntersectionAttributes attributes) {
   hit.hitT = RayTCurrent();
-  hit.instance = InstanceID();
+  // A TLAS instance holds one mesh, or (the merged BLAS) one per geometry.
+  hit.instance = InstanceID() + GeometryIndex();
   hit.primitive = PrimitiveIndex();
   hit.attributes = float3(attributes.barycentrics, 0.0);
 }

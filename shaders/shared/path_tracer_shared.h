@@ -64,13 +64,17 @@ namespace penumbra::gpu {
 #define PT_SLOT_GUIDE_MOMENTS PENUMBRA_U(PT_U_GUIDE_MOMENTS)
 
 // Ray types: each geometry kind has one hit group per ray type, adjacent in
-// the shader table, so TraceRay's ray contribution is the ray type and its
-// geometry multiplier PT_RAY_TYPES (every BLAS holds one geometry). Shadow
+// the shader table, so TraceRay's ray contribution is the ray type. Shadow
 // rays get hit groups of their own because DXR requires an any-hit shader's
 // payload type to be the tracing ray's.
 #define PT_RAY_RADIANCE 0
 #define PT_RAY_SHADOW 1
 #define PT_RAY_TYPES 2
+// TraceRay's geometry multiplier: 0, so every geometry of a BLAS uses its
+// instance's hit groups. The merged BLAS holds one geometry per mesh
+// (PathTracer::uploadScene), all of them triangles; the closest hit tells
+// them apart by geometry index.
+#define PT_GEOMETRY_HIT_GROUP_STRIDE 0
 
 // FrameConstants.sampling.w bits.
 #define PT_FLAG_NEE 1u               // next-event estimation on emissive triangles and point lights
