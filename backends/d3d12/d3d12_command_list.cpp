@@ -15,7 +15,8 @@ bool isWriteState(rhi::ResourceState s) {
   return s == rhi::ResourceState::UnorderedAccess || s == rhi::ResourceState::AccelStructWrite;
 }
 
-D3D12_RESOURCE_BARRIER transition(ID3D12Resource* resource, D3D12_RESOURCE_STATES from, D3D12_RESOURCE_STATES to) {
+D3D12_RESOURCE_BARRIER transition(ID3D12Resource* resource, D3D12_RESOURCE_STATES from,
+                                  D3D12_RESOURCE_STATES to) {
   D3D12_RESOURCE_BARRIER b{};
   b.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
   b.Transition.pResource = resource;
@@ -28,12 +29,13 @@ D3D12_RESOURCE_BARRIER transition(ID3D12Resource* resource, D3D12_RESOURCE_STATE
 }  // namespace
 
 D3D12CommandList::D3D12CommandList(D3D12Device& device) : device_(device) {
-  check(device_.handle()->CreateCommandAllocator(D3D12_COMMAND_LIST_TYPE_DIRECT, IID_PPV_ARGS(&allocator_)),
+  check(device_.handle()->CreateCommandAllocator(D3D12_COMMAND_LIST_TYPE_DIRECT,
+                                                 IID_PPV_ARGS(&allocator_)),
         "CreateCommandAllocator");
   setName(allocator_.Get(), "command allocator");
   // CreateCommandList1 makes the list closed, so open() can always Reset it.
-  check(device_.handle()->CreateCommandList1(0, D3D12_COMMAND_LIST_TYPE_DIRECT, D3D12_COMMAND_LIST_FLAG_NONE,
-                                             IID_PPV_ARGS(&list_)),
+  check(device_.handle()->CreateCommandList1(0, D3D12_COMMAND_LIST_TYPE_DIRECT,
+                                             D3D12_COMMAND_LIST_FLAG_NONE, IID_PPV_ARGS(&list_)),
         "CreateCommandList1 (ID3D12GraphicsCommandList4)");
   setName(list_.Get(), "command list");
 }
@@ -52,7 +54,8 @@ void D3D12CommandList::open() {
   check(list_->Reset(allocator_.Get(), nullptr), "ID3D12GraphicsCommandList::Reset");
   // One heap of each type may be bound at a time: the device's CBV/SRV/UAV
   // heap and its sampler heap hold every binding set's tables.
-  ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap(), device_.samplerHeap().heap()};
+  ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap(),
+                                   device_.samplerHeap().heap()};
   list_->SetDescriptorHeaps(2, heaps);
   recording_ = true;
   rayTracingBound_ = computeBound_ = false;
@@ -70,8 +73,10 @@ void D3D12CommandList::releaseTransientResources() {
   transientDescriptors_.clear();
 }
 
-std::shared_ptr<D3D12Buffer> D3D12CommandList::makeTransientBuffer(uint64_t bytes, rhi::BufferUsage usage,
-                                                                   rhi::MemoryLocation memory, const char* name) {
+std::shared_ptr<D3D12Buffer> D3D12CommandList::makeTransientBuffer(uint64_t bytes,
+                                                                   rhi::BufferUsage usage,
+                                                                   rhi::MemoryLocation memory,
+                                                                   const char* name) {
   rhi::BufferDesc desc;
   desc.byteSize = std::max<uint64_t>(bytes, 4);
   desc.usage = usage;
@@ -99,8 +104,9 @@ void D3D12CommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState s
   buffer->state = state;
   if (b->hasFixedState()) return;
   if (b->isAccelStructStorage())
-    throw Error(fmt::format("d3d12: buffer '{}' holds an acceleration structure; use setAccelStructState",
-                            b->desc().debugName));
+    throw Error(
+        fmt::format("d3d12: buffer '{}' holds an acceleration structure; use setAccelStructState",
+                    b->desc().debugName));
   const auto from = toResourceStates(old), to = toResourceStates(state);
   if (from != to) {
     auto barrier = transition(b->resource(), from, to);
@@ -135,17 +141,19 @@ void D3D12CommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::Resou
     uavBarrier(static_cast<D3D12AccelStruct*>(as)->resource());
 }
 
-void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) {
+void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes,
+                                   uint64_t offset) {
   requireOpen("writeBuffer");
   if (offset + bytes > buffer->desc().byteSize)
-    throw Error(fmt::format("d3d12: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)", bytes, offset,
-                            buffer->desc().debugName, buffer->desc().byteSize));
+    throw Error(fmt::format("d3d12: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)", bytes,
+                            offset, buffer->desc().debugName, buffer->desc().byteSize));
   if (bytes == 0) return;
-  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
-                                     "writeBuffer staging");
+  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource,
+                                     rhi::MemoryLocation::Upload, "writeBuffer staging");
   std::memcpy(staging->mappedData(), data, bytes);
   setBufferState(buffer, rhi::ResourceState::CopyDest);
-  list_->CopyBufferRegion(static_cast<D3D12Buffer*>(buffer)->resource(), offset, staging->resource(), 0, bytes);
+  list_->CopyBufferRegion(static_cast<D3D12Buffer*>(buffer)->resource(), offset,
+                          staging->resource(), 0, bytes);
 }
 
 // D3D12: an upload-heap buffer holding the rows padded to
@@ -157,16 +165,17 @@ void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, si
   const auto& d = texture->desc();
   const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
   if (bytes != rowBytes * d.height)
-    throw Error(fmt::format("d3d12: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes, d.debugName,
-                            d.width, d.height, rowBytes * d.height));
+    throw Error(fmt::format("d3d12: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes,
+                            d.debugName, d.width, d.height, rowBytes * d.height));
   const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
   // Upload-heap committed resources start 64 KiB aligned, beyond the
   // 512-byte placement alignment footprints need.
-  auto staging = makeTransientBuffer(pitch * d.height, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
-                                     "writeTexture staging");
+  auto staging = makeTransientBuffer(pitch * d.height, rhi::BufferUsage::CopySource,
+                                     rhi::MemoryLocation::Upload, "writeTexture staging");
   auto* dst = static_cast<uint8_t*>(staging->mappedData());
   const auto* src = static_cast<const uint8_t*>(data);
-  for (uint32_t row = 0; row < d.height; ++row) std::memcpy(dst + row * pitch, src + row * rowBytes, rowBytes);
+  for (uint32_t row = 0; row < d.height; ++row)
+    std::memcpy(dst + row * pitch, src + row * rowBytes, rowBytes);
   setTextureState(texture, rhi::ResourceState::CopyDest);
   D3D12_TEXTURE_COPY_LOCATION from{};
   from.pResource = staging->resource();
@@ -184,21 +193,23 @@ void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, si
   list_->CopyTextureRegion(&to, 0, 0, 0, &from, nullptr);
 }
 
-void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src, uint64_t srcOffset,
-                                  uint64_t bytes) {
+void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,
+                                  uint64_t srcOffset, uint64_t bytes) {
   requireOpen("copyBuffer");
   setBufferState(src, rhi::ResourceState::CopySource);
   setBufferState(dst, rhi::ResourceState::CopyDest);
   list_->CopyBufferRegion(static_cast<D3D12Buffer*>(dst)->resource(), dstOffset,
                           static_cast<D3D12Buffer*>(src)->resource(), srcOffset, bytes);
-  if (dst->desc().memory == rhi::MemoryLocation::Readback) setBufferState(dst, rhi::ResourceState::HostRead);
+  if (dst->desc().memory == rhi::MemoryLocation::Readback)
+    setBufferState(dst, rhi::ResourceState::HostRead);
 }
 
 // D3D12: CopyTextureRegion into a placed footprint. Footprint rows are
 // padded to 256 bytes and placed 512-byte aligned; when the tight layout
 // the RHI promises differs, the rows go to a scratch buffer first and are
 // repacked with one CopyBufferRegion per row.
-void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) {
+void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst,
+                                           uint64_t dstOffset) {
   requireOpen("copyTextureToBuffer");
   auto* texture = static_cast<D3D12Texture*>(src);
   auto* buffer = static_cast<D3D12Buffer*>(dst);
@@ -206,8 +217,8 @@ void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst
   const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
   const uint64_t bytes = rowBytes * d.height;
   if (dstOffset + bytes > dst->desc().byteSize)
-    throw Error(fmt::format("d3d12: texture '{}' ({} bytes) does not fit in buffer '{}'", d.debugName, bytes,
-                            dst->desc().debugName));
+    throw Error(fmt::format("d3d12: texture '{}' ({} bytes) does not fit in buffer '{}'",
+                            d.debugName, bytes, dst->desc().debugName));
   setTextureState(src, rhi::ResourceState::CopySource);
 
   const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
@@ -216,7 +227,8 @@ void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst
   ID3D12Resource* target = buffer->resource();
   uint64_t targetOffset = dstOffset;
   if (!direct) {
-    staging = makeTransientBuffer(pitch * d.height, rhi::BufferUsage::CopyDest | rhi::BufferUsage::CopySource,
+    staging = makeTransientBuffer(pitch * d.height,
+                                  rhi::BufferUsage::CopyDest | rhi::BufferUsage::CopySource,
                                   rhi::MemoryLocation::DeviceLocal, "texture readback rows");
     setBufferState(staging.get(), rhi::ResourceState::CopyDest);
     target = staging->resource();
@@ -242,10 +254,11 @@ void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst
     setBufferState(staging.get(), rhi::ResourceState::CopySource);
     setBufferState(dst, rhi::ResourceState::CopyDest);
     for (uint32_t row = 0; row < d.height; ++row)
-      list_->CopyBufferRegion(buffer->resource(), dstOffset + row * rowBytes, staging->resource(), row * pitch,
-                              rowBytes);
+      list_->CopyBufferRegion(buffer->resource(), dstOffset + row * rowBytes, staging->resource(),
+                              row * pitch, rowBytes);
   }
-  if (dst->desc().memory == rhi::MemoryLocation::Readback) setBufferState(dst, rhi::ResourceState::HostRead);
+  if (dst->desc().memory == rhi::MemoryLocation::Readback)
+    setBufferState(dst, rhi::ResourceState::HostRead);
 }
 
 // D3D12: CopyTextureRegion between subresource 0 of each; unlike Vulkan's
@@ -271,11 +284,13 @@ void D3D12CommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
 // D3D12: ClearUnorderedAccessViewFloat, which wants the UAV twice: in the
 // shader-visible heap (GPU handle) and in a CPU-only heap (CPU handle). Both
 // descriptors live until the list has finished on the GPU.
-void D3D12CommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) {
+void D3D12CommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b,
+                                         float a) {
   requireOpen("clearTextureFloat");
   auto* t = static_cast<D3D12Texture*>(texture);
   if (!hasFlag(t->desc().usage, rhi::TextureUsage::Storage))
-    throw Error(fmt::format("d3d12: clearTextureFloat needs a storage texture; '{}' is not", t->desc().debugName));
+    throw Error(fmt::format("d3d12: clearTextureFloat needs a storage texture; '{}' is not",
+                            t->desc().debugName));
   setTextureState(texture, rhi::ResourceState::UnorderedAccess);
   D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
   uav.Format = t->format();
@@ -296,8 +311,9 @@ void D3D12CommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
   requireOpen("clearBufferUint");
   auto* b = static_cast<D3D12Buffer*>(buffer);
   if (b->hasFixedState())
-    throw Error(fmt::format("d3d12: clearBufferUint needs a device-local buffer; '{}' is an upload/readback buffer",
-                            b->desc().debugName));
+    throw Error(fmt::format(
+        "d3d12: clearBufferUint needs a device-local buffer; '{}' is an upload/readback buffer",
+        b->desc().debugName));
   setBufferState(buffer, rhi::ResourceState::UnorderedAccess);
   D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
   uav.Format = DXGI_FORMAT_R32_TYPELESS;
@@ -318,11 +334,13 @@ void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
   requireOpen("buildBottomLevelAccelStruct");
   auto* das = static_cast<D3D12AccelStruct*>(as);
   if (das->desc().isTopLevel)
-    throw Error(fmt::format("d3d12: '{}' is a top level; use buildTopLevelAccelStruct", as->desc().debugName));
+    throw Error(fmt::format("d3d12: '{}' is a top level; use buildTopLevelAccelStruct",
+                            as->desc().debugName));
   for (const auto& g : das->desc().bottomLevelGeometries) {
     if (g.type == rhi::rt::GeometryType::Triangles) {
       setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
-      if (g.triangles.indexBuffer) setBufferState(g.triangles.indexBuffer, rhi::ResourceState::AccelStructBuildInput);
+      if (g.triangles.indexBuffer)
+        setBufferState(g.triangles.indexBuffer, rhi::ResourceState::AccelStructBuildInput);
       if (g.triangles.transformBuffer)
         setBufferState(g.triangles.transformBuffer, rhi::ResourceState::AccelStructBuildInput);
     } else {
@@ -341,18 +359,21 @@ void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
   list_->BuildRaytracingAccelerationStructure(&build, 0, nullptr);
 }
 
-void D3D12CommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as, const rhi::rt::InstanceDesc* instances,
+void D3D12CommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as,
+                                                const rhi::rt::InstanceDesc* instances,
                                                 uint32_t count) {
   requireOpen("buildTopLevelAccelStruct");
   auto* das = static_cast<D3D12AccelStruct*>(as);
   if (!das->desc().isTopLevel)
-    throw Error(fmt::format("d3d12: '{}' is a bottom level; use buildBottomLevelAccelStruct", as->desc().debugName));
+    throw Error(fmt::format("d3d12: '{}' is a bottom level; use buildBottomLevelAccelStruct",
+                            as->desc().debugName));
   if (count > das->desc().topLevelMaxInstances)
     throw Error(fmt::format("d3d12: {} instances exceed '{}' topLevelMaxInstances = {}", count,
                             as->desc().debugName, das->desc().topLevelMaxInstances));
   for (uint32_t i = 0; i < count; ++i)
     if (instances[i].bottomLevelAddress == 0)
-      throw Error(fmt::format("d3d12: instance {} of '{}' has no bottom level", i, as->desc().debugName));
+      throw Error(
+          fmt::format("d3d12: instance {} of '{}' has no bottom level", i, as->desc().debugName));
   static_assert(sizeof(rhi::rt::InstanceDesc) == sizeof(D3D12_RAYTRACING_INSTANCE_DESC));
   // Bottom levels built earlier in this list are read by this build; the
   // instances only hold their addresses, so one global UAV barrier orders
@@ -383,30 +404,40 @@ void D3D12CommandList::transitionBindingSets(const std::vector<rhi::IBindingSet*
     for (const auto& item : set->desc().items) {
       const rhi::ResourceState state = set->requiredState(item);
       switch (item.type) {
-        case rhi::ResourceType::AccelStruct: setAccelStructState(item.accelStruct.get(), state); break;
+        case rhi::ResourceType::AccelStruct:
+          setAccelStructState(item.accelStruct.get(), state);
+          break;
         case rhi::ResourceType::StorageBuffer:
-        case rhi::ResourceType::ConstantBuffer: setBufferState(item.buffer.get(), state); break;
-        case rhi::ResourceType::StorageTexture: setTextureState(item.texture.get(), state); break;
+        case rhi::ResourceType::ConstantBuffer:
+          setBufferState(item.buffer.get(), state);
+          break;
+        case rhi::ResourceType::StorageTexture:
+          setTextureState(item.texture.get(), state);
+          break;
         case rhi::ResourceType::SampledTexture:
           for (const auto& texture : item.textures) setTextureState(texture.get(), state);
           break;
-        case rhi::ResourceType::Sampler: break;  // no resource behind a sampler
+        case rhi::ResourceType::Sampler:
+          break;  // no resource behind a sampler
       }
     }
   }
 }
 
 void D3D12CommandList::bindDescriptorTables(const D3D12RootSignature& rootSignature,
-                                            const std::vector<rhi::IBindingSet*>& sets, const char* pipelineKind) {
+                                            const std::vector<rhi::IBindingSet*>& sets,
+                                            const char* pipelineKind) {
   const auto& root = rootSignature.rootLayout();
   for (const auto& table : root.tables) {
     const D3D12BindingSet* match = nullptr;
     for (auto* s : sets)
       if (s && s->desc().space == table.space) match = static_cast<const D3D12BindingSet*>(s);
     if (!match)
-      throw Error(fmt::format("d3d12: the {} pipeline's shaders use space {} but no binding set for it was given",
-                              pipelineKind, table.space));
-    list_->SetComputeRootDescriptorTable(table.rootParameterIndex, match->tableStart(table.rootParameterIndex));
+      throw Error(fmt::format(
+          "d3d12: the {} pipeline's shaders use space {} but no binding set for it was given",
+          pipelineKind, table.space));
+    list_->SetComputeRootDescriptorTable(table.rootParameterIndex,
+                                         match->tableStart(table.rootParameterIndex));
   }
 }
 
@@ -416,7 +447,8 @@ void D3D12CommandList::setRayTracingState(const rhi::RayTracingState& state) {
   requireOpen("setRayTracingState");
   auto* pipeline = static_cast<D3D12RayTracingPipeline*>(state.pipeline);
   auto* table = static_cast<D3D12ShaderTable*>(state.shaderTable);
-  if (!pipeline || !table) throw Error("d3d12: setRayTracingState needs a pipeline and a shader table");
+  if (!pipeline || !table)
+    throw Error("d3d12: setRayTracingState needs a pipeline and a shader table");
   transitionBindingSets(state.bindingSets);
   boundDispatch_ = table->prepare();
   transient_.push_back(table->buffer());
@@ -447,7 +479,9 @@ void D3D12CommandList::setPushConstants(const void* data, size_t bytes) {
   requireOpen("setPushConstants");
   if (!boundRootSignature_) throw Error("d3d12: setPushConstants before a pipeline was bound");
   const auto& constants = boundRootSignature_->rootLayout().pushConstants;
-  if (!constants) throw Error("d3d12: setPushConstants but the bound pipeline's shaders declare no push constants");
+  if (!constants)
+    throw Error(
+        "d3d12: setPushConstants but the bound pipeline's shaders declare no push constants");
   if (bytes % 4 != 0 || bytes / 4 > constants->num32BitValues)
     throw Error(fmt::format("d3d12: setPushConstants of {} bytes; the shaders declare {}", bytes,
                             constants->num32BitValues * 4));

@@ -10,14 +10,22 @@ namespace penumbra::d3d12 {
 
 DXGI_FORMAT toDxgiFormat(rhi::Format format) {
   switch (format) {
-    case rhi::Format::RGBA8_UNORM: return DXGI_FORMAT_R8G8B8A8_UNORM;
-    case rhi::Format::RGBA8_SRGB: return DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
-    case rhi::Format::BGRA8_UNORM: return DXGI_FORMAT_B8G8R8A8_UNORM;
-    case rhi::Format::RGBA32_FLOAT: return DXGI_FORMAT_R32G32B32A32_FLOAT;
-    case rhi::Format::RGB32_FLOAT: return DXGI_FORMAT_R32G32B32_FLOAT;
-    case rhi::Format::R32_UINT: return DXGI_FORMAT_R32_UINT;
-    case rhi::Format::R16_UINT: return DXGI_FORMAT_R16_UINT;
-    case rhi::Format::Unknown: break;
+    case rhi::Format::RGBA8_UNORM:
+      return DXGI_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA8_SRGB:
+      return DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+    case rhi::Format::BGRA8_UNORM:
+      return DXGI_FORMAT_B8G8R8A8_UNORM;
+    case rhi::Format::RGBA32_FLOAT:
+      return DXGI_FORMAT_R32G32B32A32_FLOAT;
+    case rhi::Format::RGB32_FLOAT:
+      return DXGI_FORMAT_R32G32B32_FLOAT;
+    case rhi::Format::R32_UINT:
+      return DXGI_FORMAT_R32_UINT;
+    case rhi::Format::R16_UINT:
+      return DXGI_FORMAT_R16_UINT;
+    case rhi::Format::Unknown:
+      break;
   }
   throw Error("d3d12: unsupported format");
 }
@@ -25,20 +33,32 @@ DXGI_FORMAT toDxgiFormat(rhi::Format format) {
 D3D12_RESOURCE_STATES toResourceStates(rhi::ResourceState state) {
   using S = rhi::ResourceState;
   switch (state) {
-    case S::Undefined: return D3D12_RESOURCE_STATE_COMMON;
-    case S::ShaderResource: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
-    case S::UnorderedAccess: return D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
-    case S::ConstantBuffer: return D3D12_RESOURCE_STATE_VERTEX_AND_CONSTANT_BUFFER;
-    case S::CopySource: return D3D12_RESOURCE_STATE_COPY_SOURCE;
-    case S::CopyDest: return D3D12_RESOURCE_STATE_COPY_DEST;
+    case S::Undefined:
+      return D3D12_RESOURCE_STATE_COMMON;
+    case S::ShaderResource:
+      return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+    case S::UnorderedAccess:
+      return D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
+    case S::ConstantBuffer:
+      return D3D12_RESOURCE_STATE_VERTEX_AND_CONSTANT_BUFFER;
+    case S::CopySource:
+      return D3D12_RESOURCE_STATE_COPY_SOURCE;
+    case S::CopyDest:
+      return D3D12_RESOURCE_STATE_COPY_DEST;
     // DXR reads vertex, index, AABB and instance buffers as non-pixel shader resources.
-    case S::AccelStructBuildInput: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+    case S::AccelStructBuildInput:
+      return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
     case S::AccelStructWrite:
-    case S::AccelStructRead: return D3D12_RESOURCE_STATE_RAYTRACING_ACCELERATION_STRUCTURE;
-    case S::ShaderTable: return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
-    case S::HostRead: return D3D12_RESOURCE_STATE_COPY_DEST;  // readback heaps only
-    case S::RenderTarget: return D3D12_RESOURCE_STATE_RENDER_TARGET;
-    case S::Present: return D3D12_RESOURCE_STATE_PRESENT;
+    case S::AccelStructRead:
+      return D3D12_RESOURCE_STATE_RAYTRACING_ACCELERATION_STRUCTURE;
+    case S::ShaderTable:
+      return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+    case S::HostRead:
+      return D3D12_RESOURCE_STATE_COPY_DEST;  // readback heaps only
+    case S::RenderTarget:
+      return D3D12_RESOURCE_STATE_RENDER_TARGET;
+    case S::Present:
+      return D3D12_RESOURCE_STATE_PRESENT;
   }
   return D3D12_RESOURCE_STATE_COMMON;
 }
@@ -61,7 +81,8 @@ D3D12_HEAP_PROPERTIES heapProperties(D3D12_HEAP_TYPE type) {
 // readback heaps in COPY_DEST; acceleration-structure storage in
 // RAYTRACING_ACCELERATION_STRUCTURE - as D3D12 requires of each.
 D3D12Buffer::D3D12Buffer(D3D12Device& device, const rhi::BufferDesc& desc) : desc_(desc) {
-  if (desc.byteSize == 0) throw Error(fmt::format("d3d12: buffer '{}' has zero size", desc.debugName));
+  if (desc.byteSize == 0)
+    throw Error(fmt::format("d3d12: buffer '{}' has zero size", desc.debugName));
   resourceBytes_ = desc.byteSize;
   // CBVs cover whole 256-byte units (D3D12_CONSTANT_BUFFER_DATA_PLACEMENT_ALIGNMENT).
   if (hasFlag(desc.usage, rhi::BufferUsage::ConstantBuffer))
@@ -96,8 +117,8 @@ D3D12Buffer::D3D12Buffer(D3D12Device& device, const rhi::BufferDesc& desc) : des
   rd.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
   rd.Flags = flags;
   const auto heap = heapProperties(heapType);
-  HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd, initial, nullptr,
-                                                        IID_PPV_ARGS(&resource_));
+  HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd, initial,
+                                                        nullptr, IID_PPV_ARGS(&resource_));
   if (FAILED(hr))
     throw Error(fmt::format("d3d12: allocating {} bytes for buffer '{}' failed: {}", resourceBytes_,
                             desc.debugName, hresultName(hr)));
@@ -105,25 +126,30 @@ D3D12Buffer::D3D12Buffer(D3D12Device& device, const rhi::BufferDesc& desc) : des
   if (desc.memory != rhi::MemoryLocation::DeviceLocal) {
     // Readback: the CPU may read everything; upload: it reads nothing.
     D3D12_RANGE readNothing{0, 0};
-    check(resource_->Map(0, desc.memory == rhi::MemoryLocation::Upload ? &readNothing : nullptr, &mapped_),
+    check(resource_->Map(0, desc.memory == rhi::MemoryLocation::Upload ? &readNothing : nullptr,
+                         &mapped_),
           "ID3D12Resource::Map");
   }
 }
 
 void* D3D12Buffer::mappedData() {
   if (!mapped_)
-    throw Error(fmt::format("d3d12: buffer '{}' is device-local and cannot be mapped", desc_.debugName));
+    throw Error(
+        fmt::format("d3d12: buffer '{}' is device-local and cannot be mapped", desc_.debugName));
   return mapped_;
 }
 
-DXGI_FORMAT D3D12Texture::format() const { return toDxgiFormat(desc_.format); }
+DXGI_FORMAT D3D12Texture::format() const {
+  return toDxgiFormat(desc_.format);
+}
 
 // D3D12: CreateCommittedResource (TEXTURE2D, one mip) on a DEFAULT heap;
 // storage textures allow unordered access.
 D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : desc_(desc) {
   // sRGB formats have no UAV support in D3D12 (nor storage-image support in Vulkan).
   if (desc.format == rhi::Format::RGBA8_SRGB && hasFlag(desc.usage, rhi::TextureUsage::Storage))
-    throw Error(fmt::format("d3d12: texture '{}': RGBA8_SRGB cannot have TextureUsage::Storage", desc.debugName));
+    throw Error(fmt::format("d3d12: texture '{}': RGBA8_SRGB cannot have TextureUsage::Storage",
+                            desc.debugName));
   D3D12_RESOURCE_DESC rd{};
   rd.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
   rd.Width = desc.width;
@@ -133,16 +159,18 @@ D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : 
   rd.Format = toDxgiFormat(desc.format);
   rd.SampleDesc.Count = 1;
   rd.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
-  rd.Flags = hasFlag(desc.usage, rhi::TextureUsage::Storage) ? D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS
-                                                              : D3D12_RESOURCE_FLAG_NONE;
-  if (hasFlag(desc.usage, rhi::TextureUsage::RenderTarget)) rd.Flags |= D3D12_RESOURCE_FLAG_ALLOW_RENDER_TARGET;
+  rd.Flags = hasFlag(desc.usage, rhi::TextureUsage::Storage)
+                 ? D3D12_RESOURCE_FLAG_ALLOW_UNORDERED_ACCESS
+                 : D3D12_RESOURCE_FLAG_NONE;
+  if (hasFlag(desc.usage, rhi::TextureUsage::RenderTarget))
+    rd.Flags |= D3D12_RESOURCE_FLAG_ALLOW_RENDER_TARGET;
   const auto heap = heapProperties(D3D12_HEAP_TYPE_DEFAULT);
   HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd,
                                                         D3D12_RESOURCE_STATE_COMMON, nullptr,
                                                         IID_PPV_ARGS(&resource_));
   if (FAILED(hr))
-    throw Error(fmt::format("d3d12: creating texture '{}' ({}x{}) failed: {}", desc.debugName, desc.width,
-                            desc.height, hresultName(hr)));
+    throw Error(fmt::format("d3d12: creating texture '{}' ({}x{}) failed: {}", desc.debugName,
+                            desc.width, desc.height, hresultName(hr)));
   setName(resource_.Get(), desc.debugName);
 }
 
@@ -154,16 +182,20 @@ D3D12Texture::D3D12Texture(const rhi::TextureDesc& desc, ComPtr<ID3D12Resource> 
 namespace {
 D3D12_TEXTURE_ADDRESS_MODE toAddressMode(rhi::AddressMode mode) {
   switch (mode) {
-    case rhi::AddressMode::Repeat: return D3D12_TEXTURE_ADDRESS_MODE_WRAP;
-    case rhi::AddressMode::MirroredRepeat: return D3D12_TEXTURE_ADDRESS_MODE_MIRROR;
-    case rhi::AddressMode::ClampToEdge: return D3D12_TEXTURE_ADDRESS_MODE_CLAMP;
+    case rhi::AddressMode::Repeat:
+      return D3D12_TEXTURE_ADDRESS_MODE_WRAP;
+    case rhi::AddressMode::MirroredRepeat:
+      return D3D12_TEXTURE_ADDRESS_MODE_MIRROR;
+    case rhi::AddressMode::ClampToEdge:
+      return D3D12_TEXTURE_ADDRESS_MODE_CLAMP;
   }
   return D3D12_TEXTURE_ADDRESS_MODE_WRAP;
 }
 
 // Point mip filtering always: textures have one mip level.
 D3D12_FILTER toFilter(rhi::Filter minFilter, rhi::Filter magFilter) {
-  const bool minLinear = minFilter == rhi::Filter::Linear, magLinear = magFilter == rhi::Filter::Linear;
+  const bool minLinear = minFilter == rhi::Filter::Linear,
+             magLinear = magFilter == rhi::Filter::Linear;
   if (minLinear && magLinear) return D3D12_FILTER_MIN_MAG_LINEAR_MIP_POINT;
   if (minLinear) return D3D12_FILTER_MIN_LINEAR_MAG_MIP_POINT;
   if (magLinear) return D3D12_FILTER_MIN_POINT_MAG_LINEAR_MIP_POINT;
@@ -189,7 +221,8 @@ D3D12Sampler::D3D12Sampler(const rhi::SamplerDesc& desc) : desc_(desc) {
 // and scratch; the result lives in a buffer that stays in
 // RAYTRACING_ACCELERATION_STRUCTURE state. Scratch is allocated per build by
 // the command list.
-D3D12AccelStruct::D3D12AccelStruct(D3D12Device& device, const rhi::rt::AccelStructDesc& desc) : desc_(desc) {
+D3D12AccelStruct::D3D12AccelStruct(D3D12Device& device, const rhi::rt::AccelStructDesc& desc)
+    : desc_(desc) {
   if (desc.isTopLevel && desc.topLevelMaxInstances == 0)
     throw Error(fmt::format("d3d12: top-level '{}' has topLevelMaxInstances = 0", desc.debugName));
   if (!desc.isTopLevel && desc.bottomLevelGeometries.empty())
@@ -198,18 +231,21 @@ D3D12AccelStruct::D3D12AccelStruct(D3D12Device& device, const rhi::rt::AccelStru
   D3D12_RAYTRACING_ACCELERATION_STRUCTURE_PREBUILD_INFO info{};
   device.handle()->GetRaytracingAccelerationStructurePrebuildInfo(&inputs.inputs, &info);
   if (info.ResultDataMaxSizeInBytes == 0)
-    throw Error(fmt::format("d3d12: the driver reports no size for acceleration structure '{}'", desc.debugName));
-  scratchBytes_ = rhi::alignUp(info.ScratchDataSizeInBytes, D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
+    throw Error(fmt::format("d3d12: the driver reports no size for acceleration structure '{}'",
+                            desc.debugName));
+  scratchBytes_ = rhi::alignUp(info.ScratchDataSizeInBytes,
+                               D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
 
   rhi::BufferDesc storage;
-  storage.byteSize =
-      rhi::alignUp(info.ResultDataMaxSizeInBytes, D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
+  storage.byteSize = rhi::alignUp(info.ResultDataMaxSizeInBytes,
+                                  D3D12_RAYTRACING_ACCELERATION_STRUCTURE_BYTE_ALIGNMENT);
   storage.usage = rhi::BufferUsage::AccelStructStorage;
   storage.debugName = desc.debugName;
   storage_ = std::make_unique<D3D12Buffer>(device, storage);
 }
 
-AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress, uint32_t instanceCount) const {
+AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress,
+                                                     uint32_t instanceCount) const {
   AccelStructBuildInputs in;
   auto& inputs = in.inputs;
   inputs.Flags = desc_.buildFlags == rhi::rt::BuildFlags::PreferFastBuild
@@ -219,23 +255,27 @@ AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress, u
   if (desc_.isTopLevel) {
     inputs.Type = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL;
     inputs.NumDescs = instanceCount;
-    inputs.InstanceDescs = instanceAddress;  // rhi::rt::InstanceDesc == D3D12_RAYTRACING_INSTANCE_DESC
+    inputs.InstanceDescs =
+        instanceAddress;  // rhi::rt::InstanceDesc == D3D12_RAYTRACING_INSTANCE_DESC
     return in;
   }
   inputs.Type = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL;
   for (const auto& geo : desc_.bottomLevelGeometries) {
     D3D12_RAYTRACING_GEOMETRY_DESC g{};
     g.Flags = D3D12_RAYTRACING_GEOMETRY_FLAG_NONE;
-    if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::Opaque)) g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_OPAQUE;
+    if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::Opaque))
+      g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_OPAQUE;
     if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation))
       g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_NO_DUPLICATE_ANYHIT_INVOCATION;
     if (geo.type == rhi::rt::GeometryType::Triangles) {
       const auto& t = geo.triangles;
       if (!t.vertexBuffer)
-        throw Error(fmt::format("d3d12: '{}' has a triangle geometry without vertices", desc_.debugName));
+        throw Error(
+            fmt::format("d3d12: '{}' has a triangle geometry without vertices", desc_.debugName));
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_TRIANGLES;
       auto& tri = g.Triangles;
-      tri.Transform3x4 = t.transformBuffer ? t.transformBuffer->deviceAddress() + t.transformOffset : 0;
+      tri.Transform3x4 =
+          t.transformBuffer ? t.transformBuffer->deviceAddress() + t.transformOffset : 0;
       tri.VertexFormat = toDxgiFormat(t.vertexFormat);
       tri.VertexCount = t.vertexCount;
       tri.VertexBuffer.StartAddress = t.vertexBuffer->deviceAddress() + t.vertexOffset;
@@ -250,7 +290,8 @@ AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress, u
     } else {
       const auto& a = geo.aabbs;
       if (!a.buffer)
-        throw Error(fmt::format("d3d12: '{}' has an AABB geometry without a buffer", desc_.debugName));
+        throw Error(
+            fmt::format("d3d12: '{}' has an AABB geometry without a buffer", desc_.debugName));
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_PROCEDURAL_PRIMITIVE_AABBS;
       g.AABBs.AABBCount = a.count;
       g.AABBs.AABBs.StartAddress = a.buffer->deviceAddress() + a.offset;

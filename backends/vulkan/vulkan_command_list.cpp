@@ -20,13 +20,18 @@ constexpr VkPipelineStageFlags kShaderStages =
 StageAccess stageAccess(rhi::ResourceState state) {
   using S = rhi::ResourceState;
   switch (state) {
-    case S::Undefined: return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
-    case S::ShaderResource: return {kShaderStages, VK_ACCESS_SHADER_READ_BIT};
+    case S::Undefined:
+      return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
+    case S::ShaderResource:
+      return {kShaderStages, VK_ACCESS_SHADER_READ_BIT};
     case S::UnorderedAccess:
       return {kShaderStages, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
-    case S::ConstantBuffer: return {kShaderStages, VK_ACCESS_UNIFORM_READ_BIT};
-    case S::CopySource: return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
-    case S::CopyDest: return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
+    case S::ConstantBuffer:
+      return {kShaderStages, VK_ACCESS_UNIFORM_READ_BIT};
+    case S::CopySource:
+      return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
+    case S::CopyDest:
+      return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
     case S::AccelStructBuildInput:
       return {VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, VK_ACCESS_SHADER_READ_BIT};
     case S::AccelStructWrite:
@@ -38,26 +43,35 @@ StageAccess stageAccess(rhi::ResourceState state) {
               VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR};
     case S::ShaderTable:
       return {VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT};
-    case S::HostRead: return {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
+    case S::HostRead:
+      return {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
     case S::RenderTarget:
       return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
               VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
     // The presentation engine's reads are ordered by the present semaphore.
-    case S::Present: return {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0};
+    case S::Present:
+      return {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0};
   }
-  return {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT};
+  return {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+          VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT};
 }
 
 // Shader access uses GENERAL (storage images need it); copies use the
 // transfer-optimal layouts.
 VkImageLayout imageLayout(rhi::ResourceState state) {
   switch (state) {
-    case rhi::ResourceState::Undefined: return VK_IMAGE_LAYOUT_UNDEFINED;
-    case rhi::ResourceState::CopySource: return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    case rhi::ResourceState::CopyDest: return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    case rhi::ResourceState::RenderTarget: return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    case rhi::ResourceState::Present: return VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    default: return VK_IMAGE_LAYOUT_GENERAL;
+    case rhi::ResourceState::Undefined:
+      return VK_IMAGE_LAYOUT_UNDEFINED;
+    case rhi::ResourceState::CopySource:
+      return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    case rhi::ResourceState::CopyDest:
+      return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    case rhi::ResourceState::RenderTarget:
+      return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    case rhi::ResourceState::Present:
+      return VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    default:
+      return VK_IMAGE_LAYOUT_GENERAL;
   }
 }
 
@@ -84,7 +98,8 @@ VulkanCommandList::VulkanCommandList(VulkanDevice& device) : device_(device) {
   alloc.commandPool = pool_;
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   alloc.commandBufferCount = 1;
-  check(vkAllocateCommandBuffers(device_.handle(), &alloc, &commandBuffer_), "vkAllocateCommandBuffers");
+  check(vkAllocateCommandBuffers(device_.handle(), &alloc, &commandBuffer_),
+        "vkAllocateCommandBuffers");
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
   check(vkCreateFence(device_.handle(), &fenceInfo, nullptr, &fence_), "vkCreateFence");
@@ -143,7 +158,8 @@ void VulkanCommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState 
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = from.access;
   barrier.dstAccessMask = to.access;
-  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 1, &barrier, 0, nullptr, 0,
+                       nullptr);
   buffer->state = state;
 }
 
@@ -154,7 +170,8 @@ void VulkanCommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::Reso
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = from.access;
   barrier.dstAccessMask = to.access;
-  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 1, &barrier, 0, nullptr, 0,
+                       nullptr);
   as->state = state;
 }
 
@@ -171,7 +188,8 @@ void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceSta
   barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = t->image();
   barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+  vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 0, nullptr, 0, nullptr, 1,
+                       &barrier);
   texture->state = state;
 }
 
@@ -179,16 +197,16 @@ void VulkanCommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size
                                     uint64_t offset) {
   requireOpen("writeBuffer");
   if (offset + bytes > buffer->desc().byteSize)
-    throw Error(fmt::format("vulkan: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)", bytes,
-                            offset, buffer->desc().debugName, buffer->desc().byteSize));
+    throw Error(fmt::format("vulkan: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)",
+                            bytes, offset, buffer->desc().debugName, buffer->desc().byteSize));
   if (bytes == 0) return;
-  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
-                                     0, "writeBuffer staging");
+  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource,
+                                     rhi::MemoryLocation::Upload, 0, "writeBuffer staging");
   std::memcpy(staging->mappedData(), data, bytes);
   setBufferState(buffer, rhi::ResourceState::CopyDest);
   VkBufferCopy region{0, offset, bytes};
-  vkCmdCopyBuffer(commandBuffer_, staging->handle(), static_cast<VulkanBuffer*>(buffer)->handle(), 1,
-                  &region);
+  vkCmdCopyBuffer(commandBuffer_, staging->handle(), static_cast<VulkanBuffer*>(buffer)->handle(),
+                  1, &region);
 }
 
 void VulkanCommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) {
@@ -198,15 +216,16 @@ void VulkanCommandList::writeTexture(rhi::ITexture* texture, const void* data, s
   if (bytes != expected)
     throw Error(fmt::format("vulkan: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes,
                             d.debugName, d.width, d.height, expected));
-  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource, rhi::MemoryLocation::Upload,
-                                     0, "writeTexture staging");
+  auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource,
+                                     rhi::MemoryLocation::Upload, 0, "writeTexture staging");
   std::memcpy(staging->mappedData(), data, bytes);
   setTextureState(texture, rhi::ResourceState::CopyDest);
   VkBufferImageCopy region{};
   region.bufferOffset = staging->alignedOffset();
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {d.width, d.height, 1};
-  vkCmdCopyBufferToImage(commandBuffer_, staging->handle(), static_cast<VulkanTexture*>(texture)->image(),
+  vkCmdCopyBufferToImage(commandBuffer_, staging->handle(),
+                         static_cast<VulkanTexture*>(texture)->image(),
                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 }
 
@@ -223,7 +242,8 @@ void VulkanCommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::I
     setBufferState(dst, rhi::ResourceState::HostRead);
 }
 
-void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst, uint64_t dstOffset) {
+void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst,
+                                            uint64_t dstOffset) {
   requireOpen("copyTextureToBuffer");
   const auto& d = src->desc();
   const uint64_t bytes = uint64_t(d.width) * d.height * rhi::formatByteSize(d.format);
@@ -237,8 +257,8 @@ void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* ds
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {d.width, d.height, 1};
   vkCmdCopyImageToBuffer(commandBuffer_, static_cast<VulkanTexture*>(src)->image(),
-                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, static_cast<VulkanBuffer*>(dst)->handle(),
-                         1, &region);
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         static_cast<VulkanBuffer*>(dst)->handle(), 1, &region);
   if (dst->desc().memory == rhi::MemoryLocation::Readback)
     setBufferState(dst, rhi::ResourceState::HostRead);
 }
@@ -275,7 +295,8 @@ void VulkanCommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
 }
 
-void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b, float a) {
+void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b,
+                                          float a) {
   requireOpen("clearTextureFloat");
   setTextureState(texture, rhi::ResourceState::CopyDest);
   VkClearColorValue color{};
@@ -291,7 +312,8 @@ void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float
 void VulkanCommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
   requireOpen("clearBufferUint");
   setBufferState(buffer, rhi::ResourceState::CopyDest);
-  vkCmdFillBuffer(commandBuffer_, static_cast<VulkanBuffer*>(buffer)->handle(), 0, VK_WHOLE_SIZE, value);
+  vkCmdFillBuffer(commandBuffer_, static_cast<VulkanBuffer*>(buffer)->handle(), 0, VK_WHOLE_SIZE,
+                  value);
 }
 
 void VulkanCommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
@@ -334,8 +356,8 @@ void VulkanCommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as,
                             as->desc().debugName, vas->desc().topLevelMaxInstances));
   for (uint32_t i = 0; i < count; ++i)
     if (instances[i].bottomLevelAddress == 0)
-      throw Error(fmt::format("vulkan: instance {} of '{}' has no bottom level", i,
-                              as->desc().debugName));
+      throw Error(
+          fmt::format("vulkan: instance {} of '{}' has no bottom level", i, as->desc().debugName));
   // Bottom levels built earlier in this list are read by this build; the
   // instances only hold their addresses, so one global barrier covers them.
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -371,16 +393,21 @@ void VulkanCommandList::transitionBindingSets(const std::vector<rhi::IBindingSet
         case rhi::ResourceType::AccelStruct:
           setAccelStructState(item.accelStruct.get(), rhi::ResourceState::AccelStructRead);
           break;
-        case rhi::ResourceType::StorageBuffer: setBufferState(item.buffer.get(), shaderState); break;
+        case rhi::ResourceType::StorageBuffer:
+          setBufferState(item.buffer.get(), shaderState);
+          break;
         case rhi::ResourceType::ConstantBuffer:
           setBufferState(item.buffer.get(), rhi::ResourceState::ConstantBuffer);
           break;
-        case rhi::ResourceType::StorageTexture: setTextureState(item.texture.get(), shaderState); break;
+        case rhi::ResourceType::StorageTexture:
+          setTextureState(item.texture.get(), shaderState);
+          break;
         case rhi::ResourceType::SampledTexture:
           for (const auto& texture : item.textures)
             setTextureState(texture.get(), rhi::ResourceState::ShaderResource);
           break;
-        case rhi::ResourceType::Sampler: break;  // no memory behind a sampler
+        case rhi::ResourceType::Sampler:
+          break;  // no memory behind a sampler
       }
     }
   }
@@ -390,7 +417,8 @@ void VulkanCommandList::setRayTracingState(const rhi::RayTracingState& state) {
   requireOpen("setRayTracingState");
   auto* pipeline = static_cast<VulkanRayTracingPipeline*>(state.pipeline);
   auto* table = static_cast<VulkanShaderTable*>(state.shaderTable);
-  if (!pipeline || !table) throw Error("vulkan: setRayTracingState needs a pipeline and a shader table");
+  if (!pipeline || !table)
+    throw Error("vulkan: setRayTracingState needs a pipeline and a shader table");
   transitionBindingSets(state.bindingSets);
   boundRegions_ = table->prepare();
   transient_.push_back(table->buffer());
@@ -399,7 +427,8 @@ void VulkanCommandList::setRayTracingState(const rhi::RayTracingState& state) {
   for (auto* s : state.bindingSets) sets.push_back(static_cast<VulkanBindingSet*>(s)->handle());
   if (!sets.empty())
     vkCmdBindDescriptorSets(commandBuffer_, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR,
-                            pipeline->layout().handle(), 0, uint32_t(sets.size()), sets.data(), 0, nullptr);
+                            pipeline->layout().handle(), 0, uint32_t(sets.size()), sets.data(), 0,
+                            nullptr);
   boundLayout_ = pipeline->layout().handle();
   boundStages_ = pipeline->layout().stages();
   rayTracingBound_ = true;
@@ -415,8 +444,9 @@ void VulkanCommandList::setComputeState(const rhi::ComputeState& state) {
   std::vector<VkDescriptorSet> sets;
   for (auto* s : state.bindingSets) sets.push_back(static_cast<VulkanBindingSet*>(s)->handle());
   if (!sets.empty())
-    vkCmdBindDescriptorSets(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->layout().handle(),
-                            0, uint32_t(sets.size()), sets.data(), 0, nullptr);
+    vkCmdBindDescriptorSets(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE,
+                            pipeline->layout().handle(), 0, uint32_t(sets.size()), sets.data(), 0,
+                            nullptr);
   boundLayout_ = pipeline->layout().handle();
   boundStages_ = pipeline->layout().stages();
   computeBound_ = true;

@@ -9,14 +9,22 @@ namespace penumbra::vk {
 
 VkFormat toVkFormat(rhi::Format format) {
   switch (format) {
-    case rhi::Format::RGBA8_UNORM: return VK_FORMAT_R8G8B8A8_UNORM;
-    case rhi::Format::RGBA8_SRGB: return VK_FORMAT_R8G8B8A8_SRGB;
-    case rhi::Format::BGRA8_UNORM: return VK_FORMAT_B8G8R8A8_UNORM;
-    case rhi::Format::RGBA32_FLOAT: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case rhi::Format::RGB32_FLOAT: return VK_FORMAT_R32G32B32_SFLOAT;
-    case rhi::Format::R32_UINT: return VK_FORMAT_R32_UINT;
-    case rhi::Format::R16_UINT: return VK_FORMAT_R16_UINT;
-    case rhi::Format::Unknown: break;
+    case rhi::Format::RGBA8_UNORM:
+      return VK_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA8_SRGB:
+      return VK_FORMAT_R8G8B8A8_SRGB;
+    case rhi::Format::BGRA8_UNORM:
+      return VK_FORMAT_B8G8R8A8_UNORM;
+    case rhi::Format::RGBA32_FLOAT:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case rhi::Format::RGB32_FLOAT:
+      return VK_FORMAT_R32G32B32_SFLOAT;
+    case rhi::Format::R32_UINT:
+      return VK_FORMAT_R32_UINT;
+    case rhi::Format::R16_UINT:
+      return VK_FORMAT_R16_UINT;
+    case rhi::Format::Unknown:
+      break;
   }
   throw Error("vulkan: unsupported format");
 }
@@ -52,7 +60,9 @@ VulkanBuffer::VulkanBuffer(VulkanDevice& device, const rhi::BufferDesc& desc, ui
   vkGetBufferMemoryRequirements(dev, buffer_, &req);
   VkMemoryPropertyFlags required = 0, preferred = 0;
   switch (desc.memory) {
-    case rhi::MemoryLocation::DeviceLocal: required = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT; break;
+    case rhi::MemoryLocation::DeviceLocal:
+      required = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+      break;
     case rhi::MemoryLocation::Upload:
       required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
       break;
@@ -94,8 +104,8 @@ VulkanBuffer::~VulkanBuffer() {
 
 void* VulkanBuffer::mappedData() {
   if (!mapped_)
-    throw Error(fmt::format("vulkan: buffer '{}' is device-local and cannot be mapped",
-                            desc_.debugName));
+    throw Error(
+        fmt::format("vulkan: buffer '{}' is device-local and cannot be mapped", desc_.debugName));
   return static_cast<uint8_t*>(mapped_) + alignedOffset_;
 }
 
@@ -135,7 +145,8 @@ VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
   createView();
 }
 
-VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc, VkImage externalImage)
+VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc,
+                             VkImage externalImage)
     : device_(device), desc_(desc), image_(externalImage), ownsImage_(false) {
   createView();
 }
@@ -166,9 +177,12 @@ VkFilter toVkFilter(rhi::Filter filter) {
 
 VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode) {
   switch (mode) {
-    case rhi::AddressMode::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    case rhi::AddressMode::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
-    case rhi::AddressMode::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case rhi::AddressMode::Repeat:
+      return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case rhi::AddressMode::MirroredRepeat:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case rhi::AddressMode::ClampToEdge:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   }
   return VK_SAMPLER_ADDRESS_MODE_REPEAT;
 }
@@ -195,7 +209,9 @@ VulkanSampler::VulkanSampler(VulkanDevice& device, const rhi::SamplerDesc& desc)
   device_.setName(VK_OBJECT_TYPE_SAMPLER, uint64_t(sampler_), desc.debugName);
 }
 
-VulkanSampler::~VulkanSampler() { vkDestroySampler(device_.handle(), sampler_, nullptr); }
+VulkanSampler::~VulkanSampler() {
+  vkDestroySampler(device_.handle(), sampler_, nullptr);
+}
 
 VulkanAccelStruct::VulkanAccelStruct(VulkanDevice& device, const rhi::rt::AccelStructDesc& desc)
     : device_(device), desc_(desc) {
@@ -242,7 +258,8 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
   if (desc_.isTopLevel) {
     VkAccelerationStructureGeometryKHR g{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
     g.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-    g.geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+    g.geometry.instances.sType =
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
     g.geometry.instances.arrayOfPointers = VK_FALSE;
     g.geometry.instances.data.deviceAddress = instanceAddress;
     in.geometries.push_back(g);
@@ -271,8 +288,8 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
         if (t.transformBuffer)
           tri.transformData.deviceAddress = t.transformBuffer->deviceAddress() + t.transformOffset;
         if (t.indexBuffer) {
-          tri.indexType = t.indexFormat == rhi::Format::R16_UINT ? VK_INDEX_TYPE_UINT16
-                                                                  : VK_INDEX_TYPE_UINT32;
+          tri.indexType =
+              t.indexFormat == rhi::Format::R16_UINT ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32;
           tri.indexData.deviceAddress = t.indexBuffer->deviceAddress() + t.indexOffset;
           primitives = t.indexCount / 3;
         } else {
@@ -282,8 +299,8 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
       } else {
         const auto& a = geo.aabbs;
         if (!a.buffer)
-          throw Error(fmt::format("vulkan: '{}' has an AABB geometry without a buffer",
-                                  desc_.debugName));
+          throw Error(
+              fmt::format("vulkan: '{}' has an AABB geometry without a buffer", desc_.debugName));
         g.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
         g.geometry.aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
         g.geometry.aabbs.data.deviceAddress = a.buffer->deviceAddress() + a.offset;

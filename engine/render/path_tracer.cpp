@@ -150,8 +150,7 @@ struct PathTracer::SceneBuffers {
   rhi::rt::AccelStructHandle topLevel;
   rhi::BufferHandle implicits, implicitAabbs;
   std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
-  std::vector<ImplicitFamily>
-      implicitFamilies;  // hit groups PT_RAY_TYPES * (1 + i) on are family i's
+  std::vector<ImplicitFamily> implicitFamilies;                  // hit group 1 + i is family i's
 };
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
@@ -488,8 +487,7 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
     d.instanceID = range.firstObject;
     d.instanceMask = 0xff;
     const auto slot = std::find(s.implicitFamilies.begin(), s.implicitFamilies.end(), range.family);
-    d.instanceContributionToHitGroupIndex =
-        PT_RAY_TYPES * (1 + uint32_t(slot - s.implicitFamilies.begin()));
+    d.instanceContributionToHitGroupIndex = 1 + uint32_t(slot - s.implicitFamilies.begin());
     d.bottomLevelAddress = s.implicitBottomLevels.back()->deviceAddress();
     tlasInstances.push_back(d);
   }
@@ -510,21 +508,17 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
   rhi::RayTracingPipelineDesc desc;
   desc.debugName = fmt::format("{} (effects {:#x})", rayGen, pipelineEffects_);
   desc.shaders = {rayGenShader, shaders::shaderDesc("path_trace.rmiss"),
-                  shaders::shaderDesc("shadow.rmiss"), shaders::shaderDesc("triangle.rchit")};
-  // PT_RAY_TYPES hit groups per geometry kind, radiance then shadow (the
-  // shadow ones without closest hit: shadow rays skip it). The triangles'
-  // come first, with the alpha any-hit when the scene has alpha-cut
-  // materials; then each implicit family the scene uses, in the order of the
-  // TLAS instances' hit-group offsets: a pipeline holds only the
-  // intersection shaders of the geometry its scene contains.
+                  shaders::shaderDesc("triangle.rchit")};
+  // One hit group per geometry kind, for radiance and shadow rays alike
+  // (PT_RAY_CONTRIBUTION). The triangles' comes first, with the alpha
+  // any-hit when the scene has alpha-cut materials; then each implicit
+  // family the scene uses, in the order of the TLAS instances' hit-group
+  // offsets: a pipeline holds only the intersection shaders of the geometry
+  // its scene contains.
   const bool alphaMask = (pipelineEffects_ & PT_EFFECT_ALPHA_MASK) != 0;
   desc.hitGroups = {
-      {"triangles", "triangle.rchit", alphaMask ? "triangle_alpha.rahit" : "", "", false},
-      {"triangles.shadow", "", alphaMask ? "triangle_alpha_shadow.rahit" : "", "", false}};
-  if (alphaMask) {
-    desc.shaders.push_back(shaders::shaderDesc("triangle_alpha.rahit"));
-    desc.shaders.push_back(shaders::shaderDesc("triangle_alpha_shadow.rahit"));
-  }
+      {"triangles", "triangle.rchit", alphaMask ? "triangle_alpha.rahit" : "", "", false}};
+  if (alphaMask) desc.shaders.push_back(shaders::shaderDesc("triangle_alpha.rahit"));
   if (!scene_->implicitFamilies.empty())
     desc.shaders.push_back(shaders::shaderDesc("implicit.rchit"));
   for (ImplicitFamily family : scene_->implicitFamilies) {
@@ -532,10 +526,7 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
     desc.shaders.push_back(shaders::shaderDesc(implicitIntersectionShader(family)));
     desc.hitGroups.push_back(
         {name, "implicit.rchit", "", implicitIntersectionShader(family), true});
-    desc.hitGroups.push_back({name + ".shadow", "", "", implicitIntersectionShader(family), true});
   }
-  static_assert(PT_RAY_TYPES == 2 && PT_RAY_RADIANCE == 0,
-                "hit groups are listed radiance, shadow");
   desc.maxPayloadBytes = 24;    // HitRecord (hit_record.hlsli)
   desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
   desc.maxRecursionDepth = 1;   // only the ray generation shader traces
@@ -546,8 +537,7 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
 
   p.table = p.pipeline->createShaderTable(std::string(rayGen) + " shader table");
   p.table->setRayGenerationShader(rayGen);
-  p.table->addMissShader("path_trace.rmiss");  // miss index 0: radiance rays
-  p.table->addMissShader("shadow.rmiss");      // miss index 1: shadow rays
+  p.table->addMissShader("path_trace.rmiss");  // miss index 0, for every ray
   for (const auto& group : desc.hitGroups) p.table->addHitGroup(group.exportName);
   if (rayGeneration != RayGeneration::Probe)
     p.bindings = createBindings(*p.pipeline, nullptr, nullptr, "path tracer bindings");

@@ -199,7 +199,7 @@ class PathTracer {
   PipelineOptions options_;
   scene::Camera camera_;
   std::vector<scene::Material> materials_;
-  std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
+  std::vector<uint32_t> drawnMaterials_;      // materials of instances and implicit objects
   std::vector<uint32_t> gpuToSceneInstance_;  // InstanceData order (meshInstanceOrder)
   uint32_t accumulatedSamples_ = 0;
   uint32_t firstSample_ = 0;

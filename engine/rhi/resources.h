@@ -121,7 +121,7 @@ struct GeometryDesc {
 // Byte-identical to D3D12_RAYTRACING_INSTANCE_DESC and VkAccelerationStructureInstanceKHR.
 struct InstanceDesc {
   AffineTransform transform = kIdentityTransform;
-  uint32_t instanceID : 24 = 0;                           // InstanceID() / gl_InstanceCustomIndexEXT
+  uint32_t instanceID : 24 = 0;  // InstanceID() / gl_InstanceCustomIndexEXT
   uint32_t instanceMask : 8 = 0xff;
   uint32_t instanceContributionToHitGroupIndex : 24 = 0;  // hit-group offset in the shader table
   uint32_t flags : 8 = 0;                                 // InstanceFlags

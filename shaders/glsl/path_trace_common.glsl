@@ -8,9 +8,7 @@
 #include "surface_hit.hlsli"
 
 #define PT_PAYLOAD_RADIANCE 0
-#define PT_PAYLOAD_SHADOW 1
 #define PT_MISS_RADIANCE 0
-#define PT_MISS_SHADOW 1
 
 layout(push_constant, std430) uniform FramePush { FrameConstants gFrame; };
 layout(set = 0, binding = PT_SLOT_SCENE) uniform accelerationStructureEXT gScene;

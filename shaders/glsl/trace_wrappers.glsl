@@ -1,24 +1,30 @@
-// traceClosest / traceVisibility for ray-generation shaders that declare the
-// gHit (HitRecord) and gVisible payloads and the gRaysThisLaunch counter, plus the
-// running-mean accumulation into gAccumulation.
+// traceRay (the integrator's one trace call) and traceClosest /
+// traceVisibility over it, for ray-generation shaders that declare the gHit
+// (HitRecord) payload and the gRaysThisLaunch counter, plus the running-mean
+// accumulation into gAccumulation.
 // No opaque ray flag: geometry decides, and only alpha-masked meshes are
 // non-opaque (their any-hit shader cuts texels away for both kinds of ray).
-SurfaceHit traceClosest(float3 origin, float3 direction) {
+// Shadow rays carry the HitRecord too, so both kinds can leave from one call
+// site: they skip closest hits and stop at the first one, leaving the record
+// as it was (hitT 0), and the radiance miss shader marks a miss (hitT < 0).
+SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
   gRaysThisLaunch += 1u;
-  traceRayEXT(gScene, gl_RayFlagsNoneEXT, 0xff, PT_RAY_RADIANCE, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, origin,
-              0.0, direction, 1e30, PT_PAYLOAD_RADIANCE);
+  gHit.hitT = 0.0;
+  traceRayEXT(gScene, shadow ? gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT : gl_RayFlagsNoneEXT,
+              0xff, PT_RAY_CONTRIBUTION, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, origin,
+              0.0, direction, tMax, PT_PAYLOAD_RADIANCE);
+  if (shadow) {
+    SurfaceHit blocked = surfaceMiss();
+    blocked.hitT = gHit.hitT;
+    return blocked;
+  }
   return surfaceFromRecord(origin, direction, gHit);
 }
 
+SurfaceHit traceClosest(float3 origin, float3 direction) { return traceRay(origin, direction, 1e30, false); }
+
 bool traceVisibility(float3 origin, float3 direction, float tMax) {
-  gRaysThisLaunch += 1u;
-  gVisible = 0u;
-  traceRayEXT(gScene,
-              gl_RayFlagsTerminateOnFirstHitEXT |
-                  gl_RayFlagsSkipClosestHitShaderEXT,
-              0xff, PT_RAY_SHADOW, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_SHADOW, origin, 0.0, direction, tMax,
-              PT_PAYLOAD_SHADOW);
-  return gVisible != 0u;
+  return traceRay(origin, direction, tMax, true).hitT < 0.0;
 }
 
 // Running mean over all frames: mean_n = (mean_{n-1} * before + sum) / n.

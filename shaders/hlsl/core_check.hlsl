@@ -33,7 +33,9 @@ struct FramePush {
 
 // Rays start inside the sphere (centred at the origin), so the hit is where
 // they leave it: the implicit core's sphere, as compiled by this front-end.
-SurfaceHit traceClosest(float3 origin, float3 direction) {
+// Any two points inside a sphere see each other: a shadow ray never hits.
+SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
+  if (shadow) return surfaceMiss();
   ImplicitHit leaving = intersectSphere(origin, direction, gSphere[0].z, 0.0, 1e30);
   if (leaving.s < 0.0) return surfaceMiss();
   SurfaceHit h = surfaceMiss();
@@ -45,9 +47,6 @@ SurfaceHit traceClosest(float3 origin, float3 direction) {
   h.primitiveIndex = 0u;
   return h;
 }
-
-// Any two points inside a sphere see each other.
-bool traceVisibility(float3 origin, float3 direction, float tMax) { return true; }
 
 InstanceData loadInstanceData(uint index) {
   InstanceData m;
@@ -125,6 +124,11 @@ float4 loadVertexTangent(uint vertex) { return float4(1.0, 0.0, 0.0, 1.0); }
 float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
 #include "surface_from_record.hlsli"
 
+// The harness keeps no guides.
+static uint2 gPixel;
+uint2 launchPixel() { return gPixel; }
+void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission) {}
+
 #include "camera.hlsli"
 #include "path_tracer.hlsli"
 
@@ -134,13 +138,8 @@ void main(uint3 id : SV_DispatchThreadID) {
   uint pixelIndex = id.x;
   uint2 pixel = uint2(pixelIndex % c.image.x, pixelIndex / c.image.x);
   if (pixel.y >= c.image.y) return;
-  float3 sum = zero3();
-  for (uint s = 0u; s < c.image.z; s += 1u) {
-    Rng rng = rngCreate(pixel, s, c.sampling.x);
-    float2 jitter = jitteredPixelSample(s, c.image.z, rngNext(rng), rngNext(rng));
-    float3 direction = cameraRayDirection(c, float2(pixel) + jitter);
-    PathGuides guides;
-    sum += tracePath(c, c.cameraPosition.xyz, direction, rng, guides);
-  }
+  gPixel = pixel;
+  float2 moments;
+  float3 sum = tracePixel(c, moments);
   gOutput[pixelIndex] = float4(sum / float(c.image.z), 1.0);
 }

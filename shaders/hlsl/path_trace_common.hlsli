@@ -8,7 +8,6 @@
 #include "payloads.hlsli"
 
 #define PT_MISS_RADIANCE 0
-#define PT_MISS_SHADOW 1
 
 // Wrapped in a struct so entry points can copy the frame out as a plain
 // FrameConstants value (a ConstantBuffer<T> is not a T).

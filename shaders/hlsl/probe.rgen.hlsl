@@ -16,6 +16,6 @@ void main() {
   ray.TMin = 0.0;
   ray.TMax = probe.origin.w;
   HitRecord record = hitRecordMiss();
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
+  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_CONTRIBUTION, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
   gProbeHits[index] = packProbeHit(surfaceFromRecord(ray.Origin, ray.Direction, record));
 }

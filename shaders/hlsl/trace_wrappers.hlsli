@@ -8,32 +8,32 @@ static uint gRaysThisLaunch = 0u;
 
 // No opaque ray flag: geometry decides, and only alpha-masked meshes are
 // non-opaque (their any-hit shader cuts texels away for both kinds of ray).
-SurfaceHit traceClosest(float3 origin, float3 direction) {
-  gRaysThisLaunch += 1u;
-  RayDesc ray;
-  ray.Origin = origin;
-  ray.Direction = direction;
-  ray.TMin = 0.0;
-  ray.TMax = 1e30;
-  HitRecord record = hitRecordMiss();
-  TraceRay(gScene, RAY_FLAG_NONE, 0xff, PT_RAY_RADIANCE, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
-  return surfaceFromRecord(origin, direction, record);
-}
-
-bool traceVisibility(float3 origin, float3 direction, float tMax) {
+// Shadow rays carry the HitRecord too, so both kinds can leave from one call
+// site: they skip closest hits and stop at the first one, leaving the record
+// as it was (hitT 0), and the radiance miss shader marks a miss (hitT < 0).
+SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
   gRaysThisLaunch += 1u;
   RayDesc ray;
   ray.Origin = origin;
   ray.Direction = direction;
   ray.TMin = 0.0;
   ray.TMax = tMax;
-  ShadowPayload shadow;
-  shadow.visible = 0u;
-  TraceRay(gScene,
-           RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH |
-               RAY_FLAG_SKIP_CLOSEST_HIT_SHADER,
-           0xff, PT_RAY_SHADOW, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_SHADOW, ray, shadow);
-  return shadow.visible != 0u;
+  HitRecord record = hitRecordMiss();
+  record.hitT = 0.0;
+  TraceRay(gScene, shadow ? RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH | RAY_FLAG_SKIP_CLOSEST_HIT_SHADER : RAY_FLAG_NONE,
+           0xff, PT_RAY_CONTRIBUTION, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
+  if (shadow) {
+    SurfaceHit blocked = surfaceMiss();
+    blocked.hitT = record.hitT;
+    return blocked;
+  }
+  return surfaceFromRecord(origin, direction, record);
+}
+
+SurfaceHit traceClosest(float3 origin, float3 direction) { return traceRay(origin, direction, 1e30, false); }
+
+bool traceVisibility(float3 origin, float3 direction, float tMax) {
+  return traceRay(origin, direction, tMax, true).hitT < 0.0;
 }
 
 // Running mean over all frames: mean_n = (mean_{n-1} * before + sum) / n.

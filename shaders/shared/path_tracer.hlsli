@@ -6,14 +6,20 @@
 // Russian roulette, and optional per-sample radiance clamping.
 //
 // The entry points define, before including this file:
-//   SurfaceHit traceClosest(float3 origin, float3 direction);
-//   bool traceVisibility(float3 origin, float3 direction, float tMax);
+//   SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow);
+//     a radiance ray's closest surface (hitT < 0: it missed), or for a
+//     shadow ray hitT < 0 exactly when nothing blocks [0, tMax]; the one
+//     trace call of the integrator (tracePixel says why)
+//   uint2 launchPixel();  // the pixel this invocation renders
+//   void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission);
+//     one sample's guides into the guide buffers' running means
 //   InstanceData loadInstanceData(uint index);
 //   MaterialData loadMaterial(uint index);
 //   EmissiveTriangle loadEmissiveTriangle(uint index);
 //   PointLight loadPointLight(uint index);
 #ifndef PENUMBRA_PATH_TRACER_HLSLI
 #define PENUMBRA_PATH_TRACER_HLSLI
+#include "camera.hlsli"
 #include "lights.hlsli"
 #include "material.hlsli"
 #include "ray_offset.hlsli"
@@ -156,17 +162,6 @@ bool scatter(FrameConstants c, DisneyMaterial material, Frame frame, float3 ng, 
   return true;
 }
 
-// What the denoiser needs of one sample's path, at its first non-delta
-// vertex: a mirror or smooth glass passes the guides on to the surface seen
-// through it ("primary surface replacement"), so a reflection is filtered
-// with the reflected surface's albedo, normal and depth.
-struct PathGuides {
-  float3 albedo;    // demodulationAlbedo() times the throughput of the delta chain before it
-  float3 normal;    // world shading normal, on the viewer's side; zero where the path found no surface
-  float3 emission;  // the part of the radiance emitted along the chain, up to and including it
-  float distance;   // length of the unfolded path from the camera to it; 0: no surface
-};
-
 // What the denoiser divides a vertex's illumination by: the base colour
 // (diffuse, metal, glass tint) plus the dielectric specular layer's normal
 // reflectance, so a black glossy surface still has something to filter.
@@ -174,158 +169,318 @@ float3 demodulationAlbedo(DisneyMaterial m) {
   return m.baseColor + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectricSpecularF0(m);
 }
 
-PathGuides noGuides() {
-  PathGuides g;
-  g.albedo = zero3();
-  g.normal = zero3();
-  g.emission = zero3();
-  g.distance = 0.0;
+// One path between two traced rays: only what the next vertex needs, since
+// whatever is alive across a trace call is saved and restored around it.
+//
+// The guides (what the denoiser needs of the path) are those of its first
+// non-delta vertex: a mirror or smooth glass passes them on to the surface
+// seen through it ("primary surface replacement"), so a reflection is
+// filtered with the reflected surface's albedo, normal and depth. While the
+// chain of delta vertices is open, its throughput is the path's and its
+// length and emission are kept here; the vertex that closes it hands its
+// guides over (VertexGuides), and they go to the guide buffers at once. A
+// chain that escapes the scene has no surface: zero guides, as a camera ray
+// that misses.
+struct PathState {
+  float3 radiance;
+  float3 throughput;
+  float previousPdf;
+  bool previousDelta;  // the camera ray counts as a delta "bounce"
+  uint depth;          // of the vertex the next radiance ray finds
+  Rng rng;
+  bool guidesOpen;       // every vertex so far was delta: the guides are still ahead
+  float chainLength;     // unfolded length of the path so far, while open
+  float3 chainEmission;  // radiance emitted along the chain, while open; then the guides' emission
+  float cosForward;      // the camera ray's cosine to the view axis: path length to view depth
+};
+
+PathState startPath(Rng rng, float cosForward) {
+  PathState p;
+  p.radiance = zero3();
+  p.throughput = splat3(1.0);
+  p.previousPdf = 0.0;
+  p.previousDelta = true;
+  p.depth = 0u;
+  p.rng = rng;
+  p.guidesOpen = true;
+  p.chainLength = 0.0;
+  p.chainEmission = zero3();
+  p.cosForward = cosForward;
+  return p;
+}
+
+// What a vertex leaves to trace after its first shadow ray: the point and
+// spot lights' shadow rays (built when their turn comes) and the bounce, if
+// the path goes on.
+struct VertexRays {
+  bool continues;
+  float3 bounceOrigin;
+  float3 bounceDirection;
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  uint nextPointLight;
+  uint pointLights;  // 0 without NEE
+  // What the point lights' shadow rays are built from.
+  DisneyMaterial material;
+  Frame frame;
+  float3 position;
+  float3 ng;
+  float3 incoming;
+  float3 wo;
+  float3 throughput;  // before the scatter
+#endif
+};
+
+VertexRays noVertexRays() {
+  VertexRays v;
+  v.continues = false;
+  v.bounceOrigin = zero3();
+  v.bounceDirection = float3(0.0, 0.0, 1.0);
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  v.nextPointLight = 0u;
+  v.pointLights = 0u;
+  v.material = unpackDisney(loadMaterial(0u));
+  v.frame = frameFromNormal(float3(0.0, 0.0, 1.0));
+  v.position = zero3();
+  v.ng = float3(0.0, 0.0, 1.0);
+  v.incoming = float3(0.0, 0.0, 1.0);
+  v.wo = float3(0.0, 0.0, 1.0);
+  v.throughput = zero3();
+#endif
+  return v;
+}
+
+// The guides of the vertex that closed the path's delta chain, if it did.
+struct VertexGuides {
+  bool closed;
+  float3 albedo;
+  float3 normal;
+};
+
+VertexGuides closeGuides(inout PathState p, float3 albedo, float3 normal) {
+  p.guidesOpen = false;
+  VertexGuides g;
+  g.closed = true;
+  g.albedo = albedo;
+  g.normal = normal;
   return g;
 }
 
-// Radiance arriving along (origin, direction), and the path's guides.
-//
-// Each vertex first prepares its shadow rays (the light sample and the BSDF
-// value towards it), then samples the next direction, and traces the shadow
-// rays last, so that what is alive across each trace call is the path state
-// alone (throughput, radiance, the next ray, the random stream), not the hit,
-// material and shading frame: whatever is alive across a trace is saved and
-// restored around it. The random numbers are drawn in the same order as
-// when the shadow ray was traced before the bounce was sampled.
-float3 tracePath(FrameConstants c, float3 origin, float3 direction, inout Rng rng, out PathGuides guides) {
+// The vertex a radiance ray found along `direction`: its emission and
+// guides, its area-light sample (`shadow`, tMax 0 if none), the point
+// lights' and the bounce in `rays`. False: no ray follows (the ray missed,
+// the path is at its maximum depth, or the vertex is exactly grazing).
+bool shadeVertex(FrameConstants c, SurfaceHit hit, float3 direction, inout PathState p, inout VertexRays rays,
+                 out VertexGuides guides, out ShadowRay shadow) {
+  shadow = noShadowRay();
+  guides.closed = false;
+  guides.albedo = zero3();
+  guides.normal = zero3();
+  rays.continues = false;
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  rays.pointLights = 0u;
+#endif
   // Locals are not `const`: GLSL allows const only for constant expressions.
   uint flags = c.sampling.w;
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
   bool useMis = useNee && (flags & PT_FLAG_MIS) != 0u;
-  uint maxDepth = c.sampling.y;
   float clampLimit = c.shading.w;
-
-  float3 radiance = zero3();
-  float3 throughput = splat3(1.0);
-  float previousPdf = 0.0;
-  bool previousDelta = true;  // the camera ray counts as a delta "bounce"
-  guides = noGuides();
-  bool guidesOpen = true;  // every vertex so far was delta: the guides are still ahead
-  float3 chainThroughput = splat3(1.0);
-  float chainLength = 0.0;
-
-  for (uint depth = 0u;; depth += 1u) {
-    SurfaceHit hit = traceClosest(origin, direction);
-    if (hit.hitT < 0.0) break;  // no environment light yet
-    float3 radianceBefore = radiance;
-    InstanceData instance = loadInstanceData(hit.instanceIndex);
-    MaterialData data = loadMaterial(instance.materialIndex);
+  if (hit.hitT < 0.0) return false;  // no environment light yet
+  float3 radianceBefore = p.radiance;
+  InstanceData instance = loadInstanceData(hit.instanceIndex);
+  MaterialData data = loadMaterial(instance.materialIndex);
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
-    data = applyMaterialTextures(data, hit.uv);
+  data = applyMaterialTextures(data, hit.uv);
 #endif
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
-    // Emission: one-sided, from the front face (counter-clockwise; outside
-    // of an implicit surface).
-    float cosLight = -dot(direction, hit.geometricNormal);
-    if (instance.firstEmissiveTriangle != PT_NO_EMISSION && cosLight > 0.0) {
-      float3 emitted = throughput * data.emission.xyz;
-      // An emitter NEE never samples has light pdf 0: BSDF sampling is the
-      // only strategy that finds it, so its MIS weight is 1.
-      bool neeSamples = instance.firstEmissiveTriangle != PT_EMISSION_NOT_SAMPLED;
-      if (depth == 0u || previousDelta || !useNee || c.lights.x == 0u || !neeSamples) {
-        radiance += clampContribution(emitted, clampLimit);
-      } else if (useMis) {
-        float lightPdf = areaToSolidAnglePdf(
-            emissiveTrianglePdfArea(instance.firstEmissiveTriangle + hit.primitiveIndex), hit.hitT,
-            cosLight);
-        radiance += clampContribution(emitted * misWeight(flags, previousPdf, lightPdf), clampLimit);
-      }
-      // NEE without MIS: this light was already counted by a shadow ray.
+  // Emission: one-sided, from the front face (counter-clockwise; outside
+  // of an implicit surface).
+  float cosLight = -dot(direction, hit.geometricNormal);
+  if (instance.firstEmissiveTriangle != PT_NO_EMISSION && cosLight > 0.0) {
+    float3 emitted = p.throughput * data.emission.xyz;
+    // An emitter NEE never samples has light pdf 0: BSDF sampling is the
+    // only strategy that finds it, so its MIS weight is 1.
+    bool neeSamples = instance.firstEmissiveTriangle != PT_EMISSION_NOT_SAMPLED;
+    if (p.depth == 0u || p.previousDelta || !useNee || c.lights.x == 0u || !neeSamples) {
+      p.radiance += clampContribution(emitted, clampLimit);
+    } else if (useMis) {
+      float lightPdf = areaToSolidAnglePdf(
+          emissiveTrianglePdfArea(instance.firstEmissiveTriangle + hit.primitiveIndex), hit.hitT, cosLight);
+      p.radiance += clampContribution(emitted * misWeight(flags, p.previousPdf, lightPdf), clampLimit);
     }
+    // NEE without MIS: this light was already counted by a shadow ray.
+  }
 #endif
-    DisneyMaterial material = unpackDisney(data);
-    if (guidesOpen) {
-      // Provisionally this vertex; a delta scatter below passes them on.
-      chainLength += hit.hitT;
-      guides.emission += radiance - radianceBefore;
-      guides.albedo = chainThroughput * demodulationAlbedo(material);
-      // Facing the viewer, so both sides of a surface filter alike.
-      float3 n = shadingNormalFor(hit, -direction);
-      guides.normal = dot(n, direction) > 0.0 ? -n : n;
-      guides.distance = chainLength;
-    }
-    if (depth >= maxDepth) break;
+  DisneyMaterial material = unpackDisney(data);
+  // This vertex's guides, should it close the chain.
+  float3 guideAlbedo = zero3();
+  float3 guideNormal = zero3();
+  if (p.guidesOpen) {
+    p.chainLength += hit.hitT;
+    p.chainEmission += p.radiance - radianceBefore;
+    guideAlbedo = p.throughput * demodulationAlbedo(material);
+    // Facing the viewer, so both sides of a surface filter alike.
+    float3 n = shadingNormalFor(hit, -direction);
+    guideNormal = dot(n, direction) > 0.0 ? -n : n;
+  }
+  // The BSDF sees the shading frame; rays leave from the geometric surface,
+  // and every direction must be on the same geometric side as the shading
+  // frame says (shadingConsistent), so interpolated normals leak no light.
+  float3 ng = hit.geometricNormal;
+  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction));
+  float3 wo = frameToLocal(frame, -direction);
+  // At the maximum depth, or exactly grazing (no side to scatter into).
+  if (p.depth >= c.sampling.y || wo.z == 0.0 || dot(direction, ng) == 0.0) {
+    if (p.guidesOpen) guides = closeGuides(p, guideAlbedo, guideNormal);
+    return false;
+  }
 
-    // The BSDF sees the shading frame; rays leave from the geometric surface,
-    // and every direction must be on the same geometric side as the shading
-    // frame says (shadingConsistent), so interpolated normals leak no light.
-    float3 ng = hit.geometricNormal;
-    Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction));
-    float3 wo = frameToLocal(frame, -direction);
-    if (wo.z == 0.0 || dot(direction, ng) == 0.0) break;  // exactly grazing: no side to scatter into
-
-    ShadowRay areaShadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
-    if (useNee && c.lights.x > 0u) {
-      float u0 = rngNext(rng);
-      float u1 = rngNext(rng);
-      float u2 = rngNext(rng);
-      LightSample light = sampleEmissiveTriangles(c.lights.x, u0, u1, u2);
-      float3 toLight = light.position - hit.position;
-      float distance = length(toLight);
-      float3 wi = toLight / max(distance, 1e-30);
-      float cosAtLight = -dot(light.normal, wi);
-      float3 wiLocal = frameToLocal(frame, wi);
-      if (cosAtLight > 0.0 && distance > 0.0 && wiLocal.z != 0.0 &&
-          shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z)) {
-        BsdfEval e = disneyEval(material, wo, wiLocal);
-        if (maxComponent(e.f) > 0.0) {
-          float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
-          // End the shadow ray just off the light's surface, on the lit side.
-          float3 target = offsetRayOrigin(light.position, light.normal);
-          float3 shadowDir = target - spawn;
-          float shadowLength = length(shadowDir);
-          if (shadowLength > 0.0) {
-            float lightPdf = areaToSolidAnglePdf(light.pdfArea, distance, cosAtLight);
-            float weight = useMis ? misWeight(flags, lightPdf, e.pdf) : 1.0;
-            areaShadow.origin = spawn;
-            areaShadow.direction = shadowDir / shadowLength;
-            areaShadow.tMax = shadowLength;
-            areaShadow.contribution = clampContribution(
-                throughput * e.f * light.radiance * (abs(wiLocal.z) * weight / lightPdf), clampLimit);
-          }
+  if (useNee && c.lights.x > 0u) {
+    float u0 = rngNext(p.rng);
+    float u1 = rngNext(p.rng);
+    float u2 = rngNext(p.rng);
+    LightSample light = sampleEmissiveTriangles(c.lights.x, u0, u1, u2);
+    float3 toLight = light.position - hit.position;
+    float distance = length(toLight);
+    float3 wi = toLight / max(distance, 1e-30);
+    float cosAtLight = -dot(light.normal, wi);
+    float3 wiLocal = frameToLocal(frame, wi);
+    if (cosAtLight > 0.0 && distance > 0.0 && wiLocal.z != 0.0 &&
+        shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z)) {
+      BsdfEval e = disneyEval(material, wo, wiLocal);
+      if (maxComponent(e.f) > 0.0) {
+        float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
+        // End the shadow ray just off the light's surface, on the lit side.
+        float3 target = offsetRayOrigin(light.position, light.normal);
+        float3 shadowDir = target - spawn;
+        float shadowLength = length(shadowDir);
+        if (shadowLength > 0.0) {
+          float lightPdf = areaToSolidAnglePdf(light.pdfArea, distance, cosAtLight);
+          float weight = useMis ? misWeight(flags, lightPdf, e.pdf) : 1.0;
+          shadow.origin = spawn;
+          shadow.direction = shadowDir / shadowLength;
+          shadow.tMax = shadowLength;
+          shadow.contribution = clampContribution(
+              p.throughput * e.f * light.radiance * (abs(wiLocal.z) * weight / lightPdf), clampLimit);
         }
       }
     }
-#endif
-#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-    float3 vertexThroughput = throughput;  // the point lights' shadow rays are built after the scatter
-#endif
-
-    float3 wiWorld;
-    bool continues =
-        scatter(c, material, frame, ng, direction, wo, depth, rng, throughput, previousPdf, previousDelta, wiWorld);
-    float3 nextOrigin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
-    guidesOpen = guidesOpen && continues && previousDelta;
-    chainThroughput = throughput;
-
-    // One trace call site for every shadow ray of the vertex: the area
-    // light's, then one per point or spot light.
-    uint shadowRays = 1u;
-#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-    if (useNee) shadowRays += c.lights.y;
-#endif
-    for (uint k = 0u; k < shadowRays; k += 1u) {
-      ShadowRay shadow = areaShadow;
-#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-      if (k > 0u)
-        shadow = pointLightShadowRay(loadPointLight(k - 1u), material, frame, hit.position, ng, direction, wo,
-                                     vertexThroughput, clampLimit);
-#endif
-      if (shadow.tMax > 0.0 && traceVisibility(shadow.origin, shadow.direction, shadow.tMax))
-        radiance += shadow.contribution;
-    }
-    if (!continues) break;
-    origin = nextOrigin;
-    direction = wiWorld;
   }
-  return radiance;
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  rays.nextPointLight = 0u;
+  rays.pointLights = useNee ? c.lights.y : 0u;
+  rays.material = material;
+  rays.frame = frame;
+  rays.position = hit.position;
+  rays.ng = ng;
+  rays.incoming = direction;
+  rays.wo = wo;
+  rays.throughput = p.throughput;
+#endif
+
+  float3 wiWorld;
+  rays.continues = scatter(c, material, frame, ng, direction, wo, p.depth, p.rng, p.throughput, p.previousPdf,
+                           p.previousDelta, wiWorld);
+  rays.bounceOrigin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
+  rays.bounceDirection = wiWorld;
+  if (p.guidesOpen && !(rays.continues && p.previousDelta)) guides = closeGuides(p, guideAlbedo, guideNormal);
+  p.depth += 1u;
+  return true;
+}
+
+// The vertex's next point- or spot-light shadow ray that has something to
+// carry; false when none is left.
+bool nextPointLightShadowRay(FrameConstants c, inout VertexRays rays, out ShadowRay shadow) {
+  shadow = noShadowRay();
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  while (rays.nextPointLight < rays.pointLights) {
+    shadow = pointLightShadowRay(loadPointLight(rays.nextPointLight), rays.material, rays.frame, rays.position,
+                                 rays.ng, rays.incoming, rays.wo, rays.throughput, c.shading.w);
+    rays.nextPointLight += 1u;
+    if (shadow.tMax > 0.0) return true;
+  }
+#endif
+  return false;
+}
+
+// The sum of this frame's path samples (FrameConstants.image.z of them,
+// continuing the pixel's sample sequence) through launchPixel(), and the
+// first two moments of their filtered luminance; their guides go to the
+// guide buffers as they close.
+//
+// One loop traces one ray per iteration, from one call site: a camera ray,
+// a shadow ray or a bounce, whichever the path needs next, and a path that
+// ends starts the pixel's next sample in the same iteration. Neighbouring
+// threads of a warp trace together at that one call site whatever kind of
+// ray each needs, where separate call sites for bounce and shadow rays each
+// ran with only the threads that needed that kind (about half of them for
+// shadow rays), and every trace call costs the whole warp. Each vertex first
+// prepares its shadow rays and samples its bounce, then traces them, so what
+// is alive across the trace is the path state and the vertex's pending rays,
+// not the hit and its material; the pixel is read again when a sample
+// starts rather than kept. Random numbers are drawn in the same order as by
+// a path traced alone.
+float3 tracePixel(FrameConstants c, out float2 moments) {
+  uint samples = c.image.z;
+  uint before = c.image.w;  // samples of the running means before this frame
+  float3 sum = zero3();
+  moments = float2(0.0, 0.0);
+  VertexRays rays = noVertexRays();
+  uint s = 0u;
+  Rng rng = rngCreate(launchPixel(), c.lights.z + before, c.sampling.x);
+  float2 jitter = jitteredPixelSample(0u, samples, rngNext(rng), rngNext(rng));
+  float3 rayOrigin = c.cameraPosition.xyz;
+  float3 rayDirection = cameraRayDirection(c, float2(launchPixel()) + jitter);
+  PathState p = startPath(rng, dot(rayDirection, c.cameraForward.xyz));
+  float rayTMax = 1e30;
+  bool shadowRay = false;
+  float3 shadowContribution = zero3();
+  for (;;) {
+    SurfaceHit hit = traceRay(rayOrigin, rayDirection, rayTMax, shadowRay);
+    bool more = true;
+    ShadowRay shadow = noShadowRay();
+    if (shadowRay) {
+      if (hit.hitT < 0.0) p.radiance += shadowContribution;
+    } else {
+      VertexGuides guides;
+      more = shadeVertex(c, hit, rayDirection, p, rays, guides, shadow);
+      if (guides.closed)
+        addGuideSample(launchPixel(), before + s, guides.albedo,
+                       float4(guides.normal, p.chainLength * p.cosForward), p.chainEmission);
+    }
+    if (more && (shadow.tMax > 0.0 || nextPointLightShadowRay(c, rays, shadow))) {
+      rayOrigin = shadow.origin;
+      rayDirection = shadow.direction;
+      rayTMax = shadow.tMax;
+      shadowRay = true;
+      shadowContribution = shadow.contribution;
+      continue;
+    }
+    if (more && rays.continues) {
+      rayOrigin = rays.bounceOrigin;
+      rayDirection = rays.bounceDirection;
+      rayTMax = 1e30;
+      shadowRay = false;
+      continue;
+    }
+    // The path ends: on to the pixel's next sample.
+    if (p.guidesOpen) addGuideSample(launchPixel(), before + s, zero3(), float4(0.0, 0.0, 0.0, 0.0), zero3());
+    sum += p.radiance;
+    float l = luminance(p.radiance - (p.guidesOpen ? zero3() : p.chainEmission));
+    moments += float2(l, l * l);
+    s += 1u;
+    if (s >= samples) break;
+    rng = rngCreate(launchPixel(), c.lights.z + before + s, c.sampling.x);
+    jitter = jitteredPixelSample(s, samples, rngNext(rng), rngNext(rng));
+    rayOrigin = c.cameraPosition.xyz;
+    rayDirection = cameraRayDirection(c, float2(launchPixel()) + jitter);
+    p = startPath(rng, dot(rayDirection, c.cameraForward.xyz));
+    rayTMax = 1e30;
+    shadowRay = false;
+  }
+  return sum;
 }
 
 #endif

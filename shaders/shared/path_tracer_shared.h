@@ -63,13 +63,11 @@ namespace penumbra::gpu {
 #define PT_SLOT_GUIDE_EMISSION PENUMBRA_U(PT_U_GUIDE_EMISSION)
 #define PT_SLOT_GUIDE_MOMENTS PENUMBRA_U(PT_U_GUIDE_MOMENTS)
 
-// Ray types: each geometry kind has one hit group per ray type, adjacent in
-// the shader table, so TraceRay's ray contribution is the ray type. Shadow
-// rays get hit groups of their own because DXR requires an any-hit shader's
-// payload type to be the tracing ray's.
-#define PT_RAY_RADIANCE 0
-#define PT_RAY_SHADOW 1
-#define PT_RAY_TYPES 2
+// One hit group per geometry kind serves every ray: shadow rays skip its
+// closest hit by ray flag and share its any-hit shader, its miss shader and
+// the HitRecord payload (DXR requires an any-hit shader's payload type to be
+// the tracing ray's). So TraceRay's ray contribution is 0.
+#define PT_RAY_CONTRIBUTION 0
 // TraceRay's geometry multiplier: 0, so every geometry of a BLAS uses its
 // instance's hit groups. The merged BLAS holds one geometry per mesh
 // (PathTracer::uploadScene), all of them triangles; the closest hit tells

@@ -36,10 +36,10 @@ TEST_CASE(
     "tables",
     "[rhi][root-signature]") {
   PipelineBindingLayout layout;
-  for (const char* name : {"path_trace.rgen", "whitted.rgen", "probe.rgen", "path_trace.rmiss",
-                           "shadow.rmiss", "triangle.rchit", "triangle_alpha.rahit",
-                           "triangle_alpha_shadow.rahit", "implicit.rchit", "implicit_sphere.rint",
-                           "implicit_plane_box.rint", "implicit_sdf.rint", "implicit_fractal.rint"})
+  for (const char* name :
+       {"path_trace.rgen", "whitted.rgen", "probe.rgen", "path_trace.rmiss", "triangle.rchit",
+        "triangle_alpha.rahit", "implicit.rchit", "implicit_sphere.rint", "implicit_plane_box.rint",
+        "implicit_sdf.rint", "implicit_fractal.rint"})
     mergeBindingLayout(layout, shaders::shaderDesc(name).bindingLayout, name);
   const RootSignatureLayout rs = computeRootSignatureLayout(layout);
 

@@ -14,19 +14,11 @@ using namespace penumbra::rhi;
 
 namespace {
 // Every shader a path tracer pipeline can hold (implicit hit groups included).
-const char* const kPathTracerShaders[] = {"path_trace.rgen",
-                                          "whitted.rgen",
-                                          "probe.rgen",
-                                          "path_trace.rmiss",
-                                          "shadow.rmiss",
-                                          "triangle.rchit",
-                                          "triangle_alpha.rahit",
-                                          "triangle_alpha_shadow.rahit",
-                                          "implicit.rchit",
-                                          "implicit_sphere.rint",
-                                          "implicit_plane_box.rint",
-                                          "implicit_sdf.rint",
-                                          "implicit_fractal.rint"};
+const char* const kPathTracerShaders[] = {
+    "path_trace.rgen",   "whitted.rgen",         "probe.rgen",
+    "path_trace.rmiss",  "triangle.rchit",       "triangle_alpha.rahit",
+    "implicit.rchit",    "implicit_sphere.rint", "implicit_plane_box.rint",
+    "implicit_sdf.rint", "implicit_fractal.rint"};
 
 PipelineBindingLayout reflectPathTracer() {
   PipelineBindingLayout layout;
