@@ -34,7 +34,7 @@ void CameraController::move(glm::vec3 metres) {
 }
 
 void CameraController::lookAt(glm::vec3 target) {
-  const glm::vec3 direction = target - camera_.position;
+  const glm::vec3 direction = target - glm::vec3(camera_.position);
   if (glm::length(direction) <= 0.0f) return;
   const glm::vec3 forward = glm::normalize(direction);
   // Straight along up the right vector (forward x up) would vanish.

@@ -137,8 +137,9 @@ void Denoiser::record(rhi::ICommandList& cmd, const PathTracer& tracer, const sc
 
   const bool temporal = settings.mode == DenoiseMode::Svgf;
   gpu::DenoiseFrame f{};
-  const CameraFrame now = cameraFrame(camera, width_, height_);
-  const CameraFrame before = cameraFrame(historyValid_ ? previousCamera_ : camera, width_, height_);
+  const CameraFrame now = cameraFrame(camera, width_, height_, tracer.renderOrigin());
+  const CameraFrame before =
+      cameraFrame(historyValid_ ? previousCamera_ : camera, width_, height_, tracer.renderOrigin());
   f.cameraPosition = now.position;
   f.cameraRight = now.right;
   f.cameraUp = now.up;

@@ -36,15 +36,15 @@ rhi::rt::AffineTransform toAffine(const Matrix& m) {
 // InstanceData for a mesh instance: the TLAS transform and its inverse (in
 // double, so the inverse is as exact as float storage allows), as rows.
 gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
-                               uint32_t firstEmissiveTriangle, const glm::mat4& objectToWorld) {
-  const glm::dmat4 inverse = glm::inverse(glm::dmat4(objectToWorld));
+                               uint32_t firstEmissiveTriangle, const glm::dmat4& objectToWorld) {
+  const glm::dmat4 inverse = glm::inverse(objectToWorld);
   gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {},
                       {},         {},          {}};
   gpu::float4* forward[3] = {&d.objectToWorld0, &d.objectToWorld1, &d.objectToWorld2};
   gpu::float4* backward[3] = {&d.worldToObject0, &d.worldToObject1, &d.worldToObject2};
   for (int row = 0; row < 3; ++row) {  // glm is column-major: m[column][row]
-    *forward[row] = {objectToWorld[0][row], objectToWorld[1][row], objectToWorld[2][row],
-                     objectToWorld[3][row]};
+    *forward[row] = {float(objectToWorld[0][row]), float(objectToWorld[1][row]),
+                     float(objectToWorld[2][row]), float(objectToWorld[3][row])};
     *backward[row] = {float(inverse[0][row]), float(inverse[1][row]), float(inverse[2][row]),
                       float(inverse[3][row])};
   }
@@ -104,10 +104,20 @@ rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& 
   return device.createBuffer(desc);
 }
 
-gpu::PointLight packPointLight(const scene::PointLight& l) {
+// Render space's origin for a camera at `position`: the nearest point of a
+// 64 m grid. Within 64 m, floats resolve 4 um (the Cornell box's light hangs
+// 100 um under its ceiling); on a grid, cameras that move a little keep the
+// origin and render exactly what they rendered, and a scene near the world's
+// origin renders in world space.
+glm::dvec3 renderOriginNear(const glm::dvec3& position) {
+  constexpr double kGrid = 64.0;
+  return glm::round(position / kGrid) * kGrid;
+}
+
+gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
   gpu::PointLight p;
   const bool spot = l.outerConeDegrees < 180.0f;
-  p.position = toFloat4(l.position,
+  p.position = toFloat4(glm::vec3(l.position - renderOrigin),
                         std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
   p.intensity = toFloat4(l.intensity);
   p.spot = toFloat4(glm::normalize(l.direction),
@@ -155,7 +165,12 @@ struct PathTracer::SceneBuffers {
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
                        uint32_t height, const PipelineOptions& options)
-    : device_(device), width_(width), height_(height), options_(options), camera_(scene.camera) {
+    : device_(device),
+      width_(width),
+      height_(height),
+      options_(options),
+      camera_(scene.camera),
+      renderOrigin_(renderOriginNear(scene.camera.position)) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
   scene::validate(scene);
@@ -243,11 +258,15 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
   for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
   std::vector<gpu::PointLight> pointLights;
-  for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l));
+  for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
   pointLightCount_ = uint32_t(pointLights.size());
   ambient_ = scene.ambient;
 
-  // Emitters: world-space triangles of every instance of an emissive mesh,
+  // Everything the GPU sees is placed relative to renderOrigin_ (the camera's
+  // position when the scene was uploaded), in double until then: the render
+  // space, where floats are precise near the camera wherever the scene is.
+  const glm::dmat4 toRenderSpace = glm::translate(glm::dmat4(1.0), -renderOrigin_);
+  // Emitters: render-space triangles of every instance of an emissive mesh,
   // chosen for NEE in proportion to power (area x luminance).
   std::vector<gpu::InstanceData> instances;
   std::vector<gpu::EmissiveTriangle> emissive;
@@ -258,13 +277,14 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     const auto& inst = scene.instances[sceneIndex];
     const auto& mesh = scene.meshes[inst.mesh];
     const auto& material = scene.materials[mesh.material];
+    const glm::dmat4 objectToRender = toRenderSpace * inst.transform;
     gpu::InstanceData data = instanceData(firstIndex[inst.mesh], firstVertex[inst.mesh],
-                                          mesh.material, PT_NO_EMISSION, inst.transform);
+                                          mesh.material, PT_NO_EMISSION, objectToRender);
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = uint32_t(emissive.size());
       // A mirroring transform reverses the winding of the world-space corners;
       // swapping two keeps the emitting side the mesh's front.
-      const bool mirrored = glm::determinant(glm::mat3(inst.transform)) < 0.0f;
+      const bool mirrored = glm::determinant(glm::dmat3(inst.transform)) < 0.0;
       // A textured emitter is chosen by its mean radiance; the shader
       // multiplies the texture in where it samples.
       const bool textured = material.emissiveTexture != scene::Material::kNoTexture;
@@ -284,7 +304,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
         glm::vec2 uv[3];
         for (int k = 0; k < 3; ++k) {
           const uint32_t vertex = mesh.indices[t + k];
-          p[k] = glm::vec3(inst.transform * glm::vec4(mesh.positions[vertex], 1.0f));
+          p[k] = glm::vec3(objectToRender * glm::dvec4(glm::dvec3(mesh.positions[vertex]), 1.0));
           uv[k] = uvSet.empty() ? glm::vec2(0.0f) : uvSet[vertex];
         }
         if (mirrored) {
@@ -307,7 +327,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   for (const auto& object : scene.implicits) {
     const bool emits = scene.materials[object.material].isEmissive();
     instances.push_back(instanceData(
-        0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION, glm::mat4(1.0f)));
+        0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION, glm::dmat4(1.0)));
   }
   double totalPower = 0;
   for (double p : power) totalPower += p;
@@ -410,7 +430,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     s.mergedBottomLevel = device_.createAccelStruct(blas);
     cmd->buildBottomLevelAccelStruct(s.mergedBottomLevel.get());
     rhi::rt::InstanceDesc d;
-    d.transform = toAffine(glm::translate(glm::dmat4(1.0), origin));
+    d.transform = toAffine(glm::translate(glm::dmat4(1.0), origin - renderOrigin_));
     d.instanceID = 0;  // + geometry index: the GPU instance (triangle.rchit)
     d.flags = rhi::rt::InstanceTriangleCullDisable;
     d.bottomLevelAddress = s.mergedBottomLevel->deviceAddress();
@@ -428,7 +448,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
       cmd->buildBottomLevelAccelStruct(bottomLevel.get());
     }
     rhi::rt::InstanceDesc d;
-    d.transform = toAffine(inst.transform);
+    d.transform = toAffine(toRenderSpace * inst.transform);
     d.instanceID = gpuIndex;
     d.flags = rhi::rt::InstanceTriangleCullDisable;
     d.bottomLevelAddress = bottomLevel->deviceAddress();
@@ -452,7 +472,11 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 void PathTracer::uploadImplicits(const scene::Scene& scene,
                                  std::vector<rhi::rt::InstanceDesc>& tlasInstances) {
   auto& s = *scene_;
-  const ImplicitLayout layout = layoutImplicits(scene.implicits, uint32_t(scene.instances.size()));
+  // In render space, as the meshes (uploadScene).
+  std::vector<scene::ImplicitObject> objects = scene.implicits;
+  for (auto& object : objects)
+    object.transform = glm::translate(glm::dmat4(1.0), -renderOrigin_) * object.transform;
+  const ImplicitLayout layout = layoutImplicits(objects, uint32_t(scene.instances.size()));
   s.implicits = makeStorageBuffer(device_, layout.data, rhi::BufferUsage::None, "implicit objects");
   s.implicitAabbs = makeStorageBuffer(device_, layout.aabbs,
                                       rhi::BufferUsage::AccelStructBuildInput, "implicit AABBs");
@@ -623,11 +647,13 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   return true;
 }
 
-CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height) {
+CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height,
+                        const glm::dvec3& renderOrigin) {
   const glm::vec3 forward = glm::normalize(camera.forward);
   const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
   const glm::vec3 up = glm::cross(right, forward);
-  return {toFloat4(camera.position, std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f)),
+  return {toFloat4(glm::vec3(camera.position - renderOrigin),
+                   std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f)),
           toFloat4(right, float(width) / float(height)), toFloat4(up), toFloat4(forward)};
 }
 
@@ -685,7 +711,7 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
     throw Error(fmt::format("path tracer: {} samples per frame is outside 1..{}", samples,
                             kMaxSamplesPerFrame));
   gpu::FrameConstants c;
-  const CameraFrame camera = cameraFrame(camera_, width_, height_);
+  const CameraFrame camera = cameraFrame(camera_, width_, height_, renderOrigin_);
   c.cameraPosition = camera.position;
   c.cameraRight = camera.right;
   c.cameraUp = camera.up;

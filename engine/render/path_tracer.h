@@ -65,7 +65,10 @@ struct FrameQueries {
 struct CameraFrame {
   gpu::float4 position, right, up, forward;
 };
-CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height);
+// The camera in render space: its position relative to `renderOrigin`
+// (PathTracer::renderOrigin()).
+CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height,
+                        const glm::dvec3& renderOrigin);
 
 // FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);
@@ -167,6 +170,12 @@ class PathTracer {
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   uint32_t emissiveTriangleCount() const { return emissiveTriangleCount_; }
+  // Where render space's origin lies in the world: near the camera's position
+  // when the scene was uploaded (a 64 m grid point). The GPU sees every
+  // position relative to it, so floats are precise near the camera however
+  // far from the world's origin the scene is (docs/ARCHITECTURE.md,
+  // "Precision").
+  const glm::dvec3& renderOrigin() const { return renderOrigin_; }
   // The PT_EFFECT_* bits the scene calls for, and those the pipeline holds.
   uint32_t sceneEffects() const { return sceneEffects_; }
   uint32_t pipelineEffects() const { return pipelineEffects_; }
@@ -198,6 +207,7 @@ class PathTracer {
   uint32_t width_, height_;
   PipelineOptions options_;
   scene::Camera camera_;
+  glm::dvec3 renderOrigin_;
   std::vector<scene::Material> materials_;
   std::vector<uint32_t> drawnMaterials_;      // materials of instances and implicit objects
   std::vector<uint32_t> gpuToSceneInstance_;  // InstanceData order (meshInstanceOrder)

@@ -18,9 +18,12 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
     throw Error(fmt::format("path tracer: {} probe rays is more than {}", rays.size(), kMaxRays));
   std::vector<gpu::ProbeRay> packed;
   packed.reserve(rays.size());
+  // Rays and hits are world space here, render space on the GPU.
   for (const auto& r : rays)
-    packed.push_back({{r.origin.x, r.origin.y, r.origin.z, r.tMax},
-                      {r.direction.x, r.direction.y, r.direction.z, 0.0f}});
+    packed.push_back(
+        {{float(double(r.origin.x) - renderOrigin_.x), float(double(r.origin.y) - renderOrigin_.y),
+          float(double(r.origin.z) - renderOrigin_.z), r.tMax},
+         {r.direction.x, r.direction.y, r.direction.z, 0.0f}});
 
   rhi::BufferDesc desc;
   desc.byteSize = packed.size() * sizeof(gpu::ProbeRay);
@@ -55,7 +58,7 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   hits.reserve(results.size());
   for (const auto& r : results) {
     SurfaceHit h;
-    h.position = {r.position.x, r.position.y, r.position.z};
+    h.position = glm::vec3(glm::dvec3(r.position.x, r.position.y, r.position.z) + renderOrigin_);
     h.hitT = r.position.w;
     h.geometricNormal = {r.normal.x, r.normal.y, r.normal.z};
     // The GPU orders mesh instances its own way (meshInstanceOrder);

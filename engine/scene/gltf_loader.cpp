@@ -46,33 +46,31 @@ std::string named(const char* kind, size_t index, const std::string& name) {
                       : fmt::format("{} {} '{}'", kind, index, name);
 }
 
-glm::mat4 localTransform(const tinygltf::Node& node, const std::string& where) {
-  glm::mat4 m(1.0f);
+// In double, as glTF stores it: a big root translation (georeferenced data)
+// must survive composition (scene.h says why).
+glm::dmat4 localTransform(const tinygltf::Node& node, const std::string& where) {
+  glm::dmat4 m(1.0);
   auto sizeIs = [&](const std::vector<double>& v, size_t n, const char* what) {
     if (!v.empty() && v.size() != n)
       throw Error(fmt::format("{}: {} has {} numbers, expected {}", where, what, v.size(), n));
     return !v.empty();
   };
   if (sizeIs(node.matrix, 16, "matrix")) {
-    for (int i = 0; i < 16; ++i)
-      glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);  // column-major
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = node.matrix[size_t(i)];  // column-major
   } else {
-    glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
     if (sizeIs(node.translation, 3, "translation"))
-      t = glm::translate(glm::mat4(1.0f),
-                         glm::vec3(float(node.translation[0]), float(node.translation[1]),
-                                   float(node.translation[2])));
+      t = glm::translate(glm::dmat4(1.0),
+                         glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
     if (sizeIs(node.rotation, 4, "rotation")) {
       // glTF stores (x, y, z, w); glm::quat's constructor takes w first.
-      glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
-                  float(node.rotation[2]));
-      const float len = glm::length(q);
-      if (!(len > 0.0f)) throw Error(fmt::format("{}: rotation is not a unit quaternion", where));
+      glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+      const double len = glm::length(q);
+      if (!(len > 0.0)) throw Error(fmt::format("{}: rotation is not a unit quaternion", where));
       r = glm::mat4_cast(q / len);
     }
     if (sizeIs(node.scale, 3, "scale"))
-      s = glm::scale(glm::mat4(1.0f),
-                     glm::vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
+      s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     m = t * r * s;
   }
   for (int i = 0; i < 16; ++i)
@@ -84,18 +82,18 @@ glm::mat4 localTransform(const tinygltf::Node& node, const std::string& where) {
 // A view that frames the world bounds of every instance, looking down -z
 // (glTF's camera convention), for files without cameras.
 Camera framingCamera(const Scene& scene) {
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (const auto& inst : scene.instances)
     for (const auto& p : scene.meshes[inst.mesh].positions) {
-      const glm::vec3 w = glm::vec3(inst.transform * glm::vec4(p, 1.0f));
+      const glm::dvec3 w(inst.transform * glm::dvec4(glm::dvec3(p), 1.0));
       lo = glm::min(lo, w);
       hi = glm::max(hi, w);
     }
   Camera c;
   c.verticalFovDegrees = 45.0f;
-  const glm::vec3 center = 0.5f * (lo + hi);
-  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
-  c.position = center + glm::vec3(0.0f, 0.0f, radius / std::sin(glm::radians(22.5f)));
+  const glm::dvec3 center = 0.5 * (lo + hi);
+  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+  c.position = center + glm::dvec3(0.0, 0.0, radius / std::sin(glm::radians(22.5)));
   c.forward = glm::vec3(0.0f, 0.0f, -1.0f);
   c.up = glm::vec3(0.0f, 1.0f, 0.0f);
   return c;
@@ -234,7 +232,7 @@ class Importer {
     return meshes_.emplace(index, std::move(result)).first->second;
   }
 
-  void addCamera(size_t nodeIndex, const glm::mat4& world) {
+  void addCamera(size_t nodeIndex, const glm::dmat4& world) {
     const auto& node = model_.nodes[nodeIndex];
     const std::string where = fmt::format("{} {}", at(), named("node", nodeIndex, node.name));
     if (node.camera < 0 || size_t(node.camera) >= model_.cameras.size())
@@ -254,9 +252,9 @@ class Importer {
     NamedCamera c;
     c.name = src.name;
     c.nodeName = node.name;
-    c.camera.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
-    const glm::vec3 forward = glm::vec3(world * glm::vec4(0, 0, -1, 0));
-    const glm::vec3 up = glm::vec3(world * glm::vec4(0, 1, 0, 0));
+    c.camera.position = glm::dvec3(world * glm::dvec4(0, 0, 0, 1));
+    const glm::vec3 forward = glm::vec3(world * glm::dvec4(0, 0, -1, 0));
+    const glm::vec3 up = glm::vec3(world * glm::dvec4(0, 1, 0, 0));
     if (!(glm::length(forward) > 0.0f) || !(glm::length(glm::cross(forward, up)) > 0.0f))
       throw Error(fmt::format("{}: the node's transform collapses {}'s view", where, name));
     c.camera.forward = glm::normalize(forward);
@@ -272,12 +270,12 @@ class Importer {
   void traverse(const std::vector<int>& roots) {
     struct Step {
       int node;
-      glm::mat4 parent;
+      glm::dmat4 parent;
       bool leave;
     };
     std::vector<Step> stack;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-      stack.push_back({*it, glm::mat4(1.0f), false});
+      stack.push_back({*it, glm::dmat4(1.0), false});
     std::vector<uint8_t> onPath(model_.nodes.size(), 0), seen(model_.nodes.size(), 0);
     size_t visits = 0;
     while (!stack.empty()) {
@@ -301,9 +299,9 @@ class Importer {
       if (++visits > 10'000'000)
         throw Error(fmt::format("{}: the node graph expands to more than 10 million nodes", at()));
       onPath[index] = 1;
-      stack.push_back({step.node, glm::mat4(1.0f), true});
+      stack.push_back({step.node, glm::dmat4(1.0), true});
 
-      const glm::mat4 world = step.parent * localTransform(node, where);
+      const glm::dmat4 world = step.parent * localTransform(node, where);
       if (node.mesh >= 0)
         for (uint32_t mesh : meshesOf(node.mesh, where))
           out_.scene.instances.push_back({mesh, world});

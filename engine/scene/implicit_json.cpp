@@ -124,12 +124,13 @@ ImplicitShape parseShape(const json& o, const std::string& kind, const std::stri
 }
 
 // Object to world = unitScale * translate * rotate * scale.
-glm::mat4 parseTransform(const json& t, float unitScale, const std::string& where) {
+// Double, as every world placement (scene.h).
+glm::dmat4 parseTransform(const json& t, float unitScale, const std::string& where) {
   if (!t.is_object()) throw Error(where + ": must be an object");
   rejectUnknownKeys(t, {"translate", "rotate", "scale"}, where);
-  glm::mat4 m(1.0f);
+  glm::dmat4 m(1.0);
   if (t.contains("translate"))
-    m = glm::translate(m, readVec3(t.at("translate"), where + " translate"));
+    m = glm::translate(m, readDVec3(t.at("translate"), where + " translate"));
   if (t.contains("rotate")) {
     const json& r = t.at("rotate");
     const std::string at = where + " rotate";
@@ -137,15 +138,16 @@ glm::mat4 parseTransform(const json& t, float unitScale, const std::string& wher
     rejectUnknownKeys(r, {"axis", "degrees"}, at);
     const glm::vec3 axis = readVec3(require(r, "axis", at), at + " axis");
     if (!(glm::length(axis) > 0.0f)) throw Error(at + ": the axis must be non-zero");
-    m = glm::rotate(m, glm::radians(requireFloat(r, "degrees", at)), glm::normalize(axis));
+    m = glm::rotate(m, glm::radians(double(requireFloat(r, "degrees", at))),
+                    glm::dvec3(glm::normalize(axis)));
   }
   if (t.contains("scale")) {
     const json& s = t.at("scale");
     const glm::vec3 scale =
         s.is_number() ? glm::vec3(s.get<float>()) : readVec3(s, where + " scale");
-    m = glm::scale(m, scale);
+    m = glm::scale(m, glm::dvec3(scale));
   }
-  return glm::scale(glm::mat4(1.0f), glm::vec3(unitScale)) * m;
+  return glm::scale(glm::dmat4(1.0), glm::dvec3(unitScale)) * m;
 }
 
 ImplicitObject parseObject(const json& o, size_t index,
@@ -173,7 +175,7 @@ ImplicitObject parseObject(const json& o, size_t index,
   object.material = it->second;
   object.transform = o.contains("transform")
                          ? parseTransform(o.at("transform"), unitScale, at + " transform")
-                         : glm::scale(glm::mat4(1.0f), glm::vec3(unitScale));
+                         : glm::scale(glm::dmat4(1.0), glm::dvec3(unitScale));
   object.sphereTracing.maxSteps = readCount(o, "maxSteps", object.sphereTracing.maxSteps, at);
   object.sphereTracing.tolerance = readFloat(o, "tolerance", object.sphereTracing.tolerance, at);
   return object;

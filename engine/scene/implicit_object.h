@@ -85,7 +85,8 @@ struct SphereTracing {
 struct ImplicitObject {
   std::string name;
   ImplicitShape shape;
-  glm::mat4 transform{1.0f};  // object to world (see the header comment for what is allowed)
+  glm::dmat4 transform{
+      1.0};  // object to world, double as Instance's (see the header comment for what is allowed)
   uint32_t material = 0;
   SphereTracing sphereTracing;  // SDF kinds only
 

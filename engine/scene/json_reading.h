@@ -10,15 +10,21 @@
 
 namespace penumbra::scene {
 
-inline glm::vec3 readVec3(const nlohmann::json& value, const std::string& where) {
+// Positions and translations are read as double (world placements stay
+// double until the renderer moves them to the camera); everything else float.
+inline glm::dvec3 readDVec3(const nlohmann::json& value, const std::string& where) {
   if (!value.is_array() || value.size() != 3)
     throw Error(fmt::format("{}: expected an array of 3 numbers", where));
-  glm::vec3 v;
+  glm::dvec3 v;
   for (int i = 0; i < 3; ++i) {
     if (!value[i].is_number()) throw Error(fmt::format("{}: element {} is not a number", where, i));
-    v[i] = value[i].get<float>();
+    v[i] = value[i].get<double>();
   }
   return v;
+}
+
+inline glm::vec3 readVec3(const nlohmann::json& value, const std::string& where) {
+  return glm::vec3(readDVec3(value, where));
 }
 
 inline const nlohmann::json& require(const nlohmann::json& object, const char* key,

@@ -106,7 +106,7 @@ struct Material {
 // A delta light for NEE and Whitted: a point light, or a spot light when
 // outerConeDegrees < 180.
 struct PointLight {
-  glm::vec3 position{0.0f};
+  glm::dvec3 position{0.0};   // double, as every world placement (Instance)
   glm::vec3 intensity{1.0f};  // radiant intensity, W/sr per channel
   glm::vec3 direction{0.0f, -1.0f, 0.0f};
   float innerConeDegrees = 180.0f;
@@ -127,13 +127,17 @@ struct Mesh {
   uint32_t triangleCount() const { return uint32_t(indices.size() / 3); }
 };
 
+// World placements (instance and implicit-object transforms, camera and light
+// positions) are double: a scene may sit far from the origin (georeferenced
+// data, large levels), and the renderer moves the world to the camera in
+// double before anything becomes float (docs/ARCHITECTURE.md, "Precision").
 struct Instance {
   uint32_t mesh = 0;
-  glm::mat4 transform{1.0f};  // object to world
+  glm::dmat4 transform{1.0};  // object to world
 };
 
 struct Camera {
-  glm::vec3 position{0.0f};
+  glm::dvec3 position{0.0};
   glm::vec3 forward{0.0f, 0.0f, 1.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float verticalFovDegrees = 45.0f;

@@ -12,11 +12,11 @@
 #include <optional>
 #include <sstream>
 
-#include "scene/material_row.h"
 #include "scene/gltf_loader.h"
 #include "scene/implicit_json.h"
-#include "scene/scene_generators.h"
 #include "scene/json_reading.h"
+#include "scene/material_row.h"
+#include "scene/scene_generators.h"
 #include "util/embedded_files.h"
 #include "util/error.h"
 
@@ -37,7 +37,8 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
     throw Error(fmt::format("{}: unknown model '{}' (disney, lambert, phong)", where, model));
   }
   material.name = name;
-  if (m.contains("baseColor")) material.baseColor = readVec3(m.at("baseColor"), where + " baseColor");
+  if (m.contains("baseColor"))
+    material.baseColor = readVec3(m.at("baseColor"), where + " baseColor");
   if (m.contains("albedo")) material.baseColor = readVec3(m.at("albedo"), where + " albedo");
   if (m.contains("emission")) material.emission = readVec3(m.at("emission"), where + " emission");
   material.metallic = readFloat(m, "metallic", material.metallic, where);
@@ -68,7 +69,8 @@ MaterialRowDesc parseMaterialRow(const json& row, const Scene& scene,
   MaterialRowDesc desc;
   const std::string material = require(row, "material", where).get<std::string>();
   auto it = materialIndex.find(material);
-  if (it == materialIndex.end()) throw Error(fmt::format("{}: unknown material '{}'", where, material));
+  if (it == materialIndex.end())
+    throw Error(fmt::format("{}: unknown material '{}'", where, material));
   desc.base = scene.materials[it->second];
   desc.vary = row.value("vary", desc.vary);
   desc.count = row.value("count", desc.count);
@@ -79,44 +81,45 @@ MaterialRowDesc parseMaterialRow(const json& row, const Scene& scene,
   return desc;
 }
 
-glm::mat4 readTransform(const json& g, const std::string& where) {
+glm::dmat4 readTransform(const json& g, const std::string& where) {
   if (g.contains("transform")) {
     const json& m = g.at("transform");
     if (!m.is_array() || m.size() != 16)
       throw Error(where + ": \"transform\" must be an array of 16 numbers (column-major)");
-    glm::mat4 t;
+    glm::dmat4 t;
     for (int i = 0; i < 16; ++i) {
       if (!m[size_t(i)].is_number()) throw Error(where + ": \"transform\" holds a non-number");
-      glm::value_ptr(t)[i] = m[size_t(i)].get<float>();
+      glm::value_ptr(t)[i] = m[size_t(i)].get<double>();
     }
     return t;
   }
-  glm::mat4 t(1.0f);
+  glm::dmat4 t(1.0);
   if (g.contains("translation"))
-    t = glm::translate(t, readVec3(g.at("translation"), where + " translation"));
+    t = glm::translate(t, readDVec3(g.at("translation"), where + " translation"));
   if (g.contains("rotation")) {
     const json& r = g.at("rotation");
     if (!r.is_array() || r.size() != 4 || !r[0].is_number() || !r[1].is_number() ||
         !r[2].is_number() || !r[3].is_number())
       throw Error(where + ": \"rotation\" must be a quaternion [x, y, z, w]");
-    const glm::quat q(r[3].get<float>(), r[0].get<float>(), r[1].get<float>(), r[2].get<float>());
-    if (!(glm::length(q) > 0.0f)) throw Error(where + ": \"rotation\" is a zero quaternion");
+    const glm::dquat q(r[3].get<double>(), r[0].get<double>(), r[1].get<double>(),
+                       r[2].get<double>());
+    if (!(glm::length(q) > 0.0)) throw Error(where + ": \"rotation\" is a zero quaternion");
     t = t * glm::mat4_cast(glm::normalize(q));
   }
-  if (g.contains("scale")) t = glm::scale(t, readVec3(g.at("scale"), where + " scale"));
+  if (g.contains("scale")) t = glm::scale(t, readDVec3(g.at("scale"), where + " scale"));
   return t;
 }
 
-Camera transformCamera(const Camera& c, const glm::mat4& t) {
+Camera transformCamera(const Camera& c, const glm::dmat4& t) {
   Camera r = c;
-  r.position = glm::vec3(t * glm::vec4(c.position, 1.0f));
-  r.forward = glm::normalize(glm::vec3(t * glm::vec4(c.forward, 0.0f)));
-  r.up = glm::normalize(glm::vec3(t * glm::vec4(c.up, 0.0f)));
+  r.position = glm::dvec3(t * glm::dvec4(c.position, 1.0));
+  r.forward = glm::normalize(glm::vec3(t * glm::dvec4(glm::dvec3(c.forward), 0.0)));
+  r.up = glm::normalize(glm::vec3(t * glm::dvec4(glm::dvec3(c.up), 0.0)));
   return r;
 }
 
 // Appends `part` to `scene`, its instances and cameras moved by `t`.
-void merge(Scene& scene, const Scene& part, const glm::mat4& t) {
+void merge(Scene& scene, const Scene& part, const glm::dmat4& t) {
   const uint32_t materialBase = uint32_t(scene.materials.size());
   const uint32_t meshBase = uint32_t(scene.meshes.size());
   const uint32_t textureBase = uint32_t(scene.textures.size());
@@ -157,7 +160,7 @@ std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::s
     std::filesystem::path path(file.get<std::string>());
     if (path.is_relative() && !baseDirectory.empty())
       path = std::filesystem::path(baseDirectory) / path;
-    const glm::mat4 t = readTransform(g, where);
+    const glm::dmat4 t = readTransform(g, where);
     Scene part = loadGltf(path.string());
     if (g.contains("camera")) {
       if (!g.at("camera").is_string()) throw Error(where + ": \"camera\" must be a string");
@@ -180,10 +183,11 @@ Scene parseScene(std::string_view text, const std::string& source,
     throw Error(fmt::format("scene '{}': invalid JSON at byte {}: {}", source, e.byte, e.what()));
   }
   if (doc.value("format", "") != "penumbra-scene")
-    throw Error(fmt::format("scene '{}': not a penumbra scene (\"format\" must be \"penumbra-scene\")",
-                            source));
+    throw Error(fmt::format(
+        "scene '{}': not a penumbra scene (\"format\" must be \"penumbra-scene\")", source));
   if (doc.value("version", 0) != 1)
-    throw Error(fmt::format("scene '{}': unsupported version (this build reads version 1)", source));
+    throw Error(
+        fmt::format("scene '{}': unsupported version (this build reads version 1)", source));
 
   Scene scene;
   scene.name = doc.value("name", source);
@@ -194,7 +198,8 @@ Scene parseScene(std::string_view text, const std::string& source,
   if (!hasGltf || doc.contains("camera")) {
     const json& cam = require(doc, "camera", at);
     scene.camera.position =
-        readVec3(require(cam, "position", at + " camera"), at + " camera.position") * scale;
+        readDVec3(require(cam, "position", at + " camera"), at + " camera.position") *
+        double(scale);
     scene.camera.forward =
         glm::normalize(readVec3(require(cam, "forward", at + " camera"), at + " camera.forward"));
     scene.camera.up =
@@ -222,10 +227,12 @@ Scene parseScene(std::string_view text, const std::string& source,
       if (type != "point" && type != "spot")
         throw Error(fmt::format("{}: unknown light type '{}' (point, spot)", where, type));
       PointLight light;
-      light.position = readVec3(require(l, "position", where), where + " position") * scale;
+      light.position =
+          readDVec3(require(l, "position", where), where + " position") * double(scale);
       light.intensity = readVec3(require(l, "intensity", where), where + " intensity");
       if (type == "spot") {
-        light.direction = glm::normalize(readVec3(require(l, "direction", where), where + " direction"));
+        light.direction =
+            glm::normalize(readVec3(require(l, "direction", where), where + " direction"));
         light.outerConeDegrees = require(l, "outerConeDegrees", where).get<float>();
         light.innerConeDegrees = l.value("innerConeDegrees", light.outerConeDegrees);
       }
@@ -246,7 +253,8 @@ Scene parseScene(std::string_view text, const std::string& source,
       throw Error(fmt::format("{}: unknown material '{}'", where, materialName));
     mesh.material = it->second;
     const json& quads = require(m, "quads", where);
-    if (!quads.is_array() || quads.empty()) throw Error(where + ": \"quads\" must be a non-empty array");
+    if (!quads.is_array() || quads.empty())
+      throw Error(where + ": \"quads\" must be a non-empty array");
     for (const auto& quad : quads) {
       if (!quad.is_array() || quad.size() != 4)
         throw Error(where + ": each quad needs exactly 4 vertices");
@@ -255,14 +263,15 @@ Scene parseScene(std::string_view text, const std::string& source,
         mesh.positions.push_back(readVec3(quad[i], where + " quad vertex") * scale);
       for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
     }
-    scene.instances.push_back({uint32_t(scene.meshes.size()), glm::mat4(1.0f)});
+    scene.instances.push_back({uint32_t(scene.meshes.size()), glm::dmat4(1.0)});
     scene.meshes.push_back(std::move(mesh));
   }
   if (doc.contains("implicits"))
     scene.implicits = parseImplicits(doc.at("implicits"), materialIndex, scale, at);
   if (doc.contains("generated")) addGenerated(scene, doc.at("generated"), materialIndex, scale, at);
   if (doc.contains("materialTest"))
-    addMaterialRow(scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
+    addMaterialRow(scene,
+                   parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
   if (hasGltf) {
     auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory);
     if (!doc.contains("camera") && view) scene.camera = *view;
@@ -278,8 +287,10 @@ Scene loadScene(const std::string& nameOrPath) {
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) {
     std::string names;
     for (const auto& n : builtInSceneNames()) names += (names.empty() ? "" : ", ") + n;
-    throw Error(fmt::format("scene '{}': no built-in scene of that name and no such file "
-                            "(built-in: {})", nameOrPath, names));
+    throw Error(
+        fmt::format("scene '{}': no built-in scene of that name and no such file "
+                    "(built-in: {})",
+                    nameOrPath, names));
   }
   std::ifstream file(nameOrPath, std::ios::binary);
   std::stringstream text;

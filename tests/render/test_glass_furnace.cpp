@@ -71,12 +71,12 @@ View classify(const scene::Scene& s, uint32_t x, uint32_t y) {
   uint32_t misses = 0, frontal = 0;
   for (const auto& film : test::pixelFootprint(x, y)) {
     const glm::vec3 d = test::cameraRayDirection(s.camera, kSize, kSize, film);
-    const glm::vec3 oc = s.camera.position - kSphereCentre;
+    const glm::vec3 oc = glm::vec3(s.camera.position) - kSphereCentre;
     const float b = glm::dot(oc, d);
     auto hitCosine = [&](float radius) -> float {  // -1 on a miss
       const float disc = b * b - (glm::dot(oc, oc) - radius * radius);
       if (disc < 0.0f) return -1.0f;
-      const glm::vec3 p = s.camera.position + (-b - std::sqrt(disc)) * d;
+      const glm::vec3 p = glm::vec3(s.camera.position) + (-b - std::sqrt(disc)) * d;
       return -glm::dot(d, glm::normalize(p - kSphereCentre));
     };
     if (hitCosine(kSphereRadius) < 0.0f) ++misses;

@@ -24,7 +24,7 @@ TEST_CASE("render job: a written record reads back with every field", "[render]"
   CHECK(job.vary == "metallic");
   CHECK(job.set == "roughness=0.25");
   REQUIRE(job.camera.has_value());
-  CHECK(job.camera->position == glm::vec3(0.5f, 1.25f, -3.0f));
+  CHECK(job.camera->position == glm::dvec3(0.5, 1.25, -3.0));
   CHECK(job.camera->verticalFovDegrees == 30.0f);
   CHECK(job.width == 320u);
   CHECK(job.height == 200u);
@@ -139,8 +139,9 @@ TEST_CASE("render job: bad material overrides name the file and the field", "[re
   box.name = "box";
   box.materials = {scene::Material::lambert("white", glm::vec3(0.8f))};
   render::MaterialOverride outOfRange{3, box.materials[0]};
-  REQUIRE_THROWS_WITH(render::applyMaterialOverrides(box, {outOfRange}, "e.json"),
-                      "e.json: \"materials[0].index\" 3 is out of range: scene 'box' has 1 materials");
+  REQUIRE_THROWS_WITH(
+      render::applyMaterialOverrides(box, {outOfRange}, "e.json"),
+      "e.json: \"materials[0].index\" 3 is out of range: scene 'box' has 1 materials");
   render::MaterialOverride renamed{0, box.materials[0]};
   renamed.material.name = "floor";
   REQUIRE_THROWS_WITH(
@@ -157,10 +158,12 @@ TEST_CASE("render job: bad material overrides name the file and the field", "[re
     REQUIRE(at != std::string::npos);
     return text.replace(at, from.size(), to);
   };
-  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"roughness\": 1.0", "\"roughness\": 1e39"), "g.json"),
-                      "g.json: \"materials[0].roughness\" must be a finite number");
-  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"metallic\": 0.0", "\"metallic\": null"), "h.json"),
-                      "h.json: \"materials[0].metallic\" must be a number");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(broken("\"roughness\": 1.0", "\"roughness\": 1e39"), "g.json"),
+      "g.json: \"materials[0].roughness\" must be a finite number");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(broken("\"metallic\": 0.0", "\"metallic\": null"), "h.json"),
+      "h.json: \"materials[0].metallic\" must be a number");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"index\": 0", "\"index\": -1"), "i.json"),
                       "i.json: \"materials[0].index\" must be a whole number >= 0");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"lambert\"", "\"glass\""), "j.json"),

@@ -102,7 +102,7 @@ Leaf leafRadiance(const scene::Scene& s, const std::vector<test::WorldTriangle>&
   const glm::vec3 n = glm::dot(p.normal, p.direction) < 0.0f ? p.normal : -p.normal;
   glm::vec3 light = s.ambient;
   for (const auto& l : s.pointLights) {
-    const glm::vec3 toLight = l.position - p.position;
+    const glm::vec3 toLight = glm::vec3(l.position) - p.position;
     const float distance = glm::length(toLight);
     const float cosine = glm::dot(n, toLight / distance);
     if (cosine <= 0.0f) continue;

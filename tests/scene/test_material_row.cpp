@@ -37,7 +37,7 @@ TEST_CASE("material-test: seven spheres differ in one parameter from 0 to 1", "[
   for (const auto& inst : s.instances) {
     const auto& mesh = s.meshes[inst.mesh];
     if (mesh.name.rfind("material row sphere", 0) == 0)
-      screenX.push_back(glm::dot(glm::vec3(inst.transform[3]) - cam.position, right));
+      screenX.push_back(glm::dot(glm::vec3(inst.transform[3]) - glm::vec3(cam.position), right));
   }
   REQUIRE(screenX.size() == 7u);
   for (size_t i = 1; i < screenX.size(); ++i) REQUIRE(screenX[i] > screenX[i - 1]);
@@ -62,12 +62,17 @@ TEST_CASE("material-test: --vary and --set change the row", "[scene]") {
 
 TEST_CASE("material-test: bad --vary and --set are clear errors", "[scene]") {
   auto s = scene::loadScene("material-test");
-  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "colour", ""), ContainsSubstring("--vary 'colour'"));
-  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "gloss=1"), ContainsSubstring("unknown material parameter 'gloss'"));
+  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "colour", ""),
+                      ContainsSubstring("--vary 'colour'"));
+  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "gloss=1"),
+                      ContainsSubstring("unknown material parameter 'gloss'"));
   REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "metallic=abc"), ContainsSubstring("'abc'"));
-  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "baseColor=1,2"), ContainsSubstring("needs 3 numbers"));
-  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "metallic=1,2"), ContainsSubstring("needs 1 number"));
-  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "0.5"), ContainsSubstring("expected name=value"));
+  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "baseColor=1,2"),
+                      ContainsSubstring("needs 3 numbers"));
+  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "metallic=1,2"),
+                      ContainsSubstring("needs 1 number"));
+  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "0.5"),
+                      ContainsSubstring("expected name=value"));
   auto cornell = scene::loadScene("cornell-box");
   REQUIRE_THROWS_WITH(scene::changeMaterialRow(cornell, "roughness", ""),
                       ContainsSubstring("has no material-test row"));
