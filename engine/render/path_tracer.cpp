@@ -9,6 +9,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+#include <map>
+#include <tuple>
 
 #include "effects.h"
 #include "path_tracer_shared.h"
@@ -52,45 +54,68 @@ gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32
 }
 
 // The order of the instances on the GPU (InstanceData, TLAS instance IDs):
-// first those whose mesh is drawn once, which share one BLAS (one geometry
-// each, its transform applied when the BLAS is built), then the instances of
-// meshes drawn several times, one TLAS instance each over the mesh's BLAS.
-// A TLAS instance costs traversal a ray transform and a second hierarchy;
-// most scenes draw most meshes once (the Cornell box: 8 instances, one
-// BLAS). Instanced meshes keep their own BLAS so their triangles are stored
-// once.
+// first the merge groups, each a run of instances whose meshes are drawn
+// once and lie in one cell of a 64 m grid, which share one BLAS (one
+// geometry each, its transform applied when the BLAS is built, about the
+// group's centre); then every other instance, one TLAS instance each over
+// its mesh's BLAS. A TLAS instance costs traversal a ray transform and a
+// second hierarchy; most scenes draw most meshes once (the Cornell box: 8
+// instances, one BLAS). Instanced meshes keep their own BLAS so their
+// triangles are stored once. A group's floats are precise to its extent
+// (about 8 um within two cells), so a mesh larger than a cell, or far from
+// the others, is not merged: a 0.1 mm part keeps its precision beside a
+// 10 km terrain.
+struct MergeGroup {
+  uint32_t first = 0, count = 0;  // GPU instance indices
+  glm::dvec3 centre{0.0};         // of the group's world bounds: its BLAS's origin
+};
+
 struct MeshInstanceOrder {
   std::vector<uint32_t> sceneInstance;  // GPU instance index -> scene instance index
-  uint32_t merged = 0;                  // the first `merged` share the merged BLAS
+  std::vector<MergeGroup> groups;
+  uint32_t merged = 0;  // the first `merged` GPU instances are in groups
 };
 
 MeshInstanceOrder meshInstanceOrder(const scene::Scene& scene) {
+  constexpr double kCell = 64.0;
   std::vector<uint32_t> uses(scene.meshes.size(), 0);
   for (const auto& inst : scene.instances) ++uses[inst.mesh];
+  struct Bounds {
+    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
+  };
+  std::map<std::tuple<int64_t, int64_t, int64_t>, std::vector<uint32_t>> cells;
+  std::map<std::tuple<int64_t, int64_t, int64_t>, Bounds> cellBounds;
+  std::vector<bool> grouped(scene.instances.size(), false);
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const auto& inst = scene.instances[i];
+    if (uses[inst.mesh] != 1 || scene.meshes[inst.mesh].positions.empty()) continue;
+    Bounds b;
+    for (const glm::vec3& p : scene.meshes[inst.mesh].positions) {
+      const glm::dvec3 w(inst.transform * glm::dvec4(glm::dvec3(p), 1.0));
+      b.lo = glm::min(b.lo, w);
+      b.hi = glm::max(b.hi, w);
+    }
+    const glm::dvec3 extent = b.hi - b.lo;
+    if (std::max({extent.x, extent.y, extent.z}) > kCell) continue;
+    const glm::dvec3 cell = glm::floor(0.5 * (b.lo + b.hi) / kCell);
+    const auto key = std::make_tuple(int64_t(cell.x), int64_t(cell.y), int64_t(cell.z));
+    cells[key].push_back(i);
+    Bounds& cb = cellBounds[key];
+    cb.lo = glm::min(cb.lo, b.lo);
+    cb.hi = glm::max(cb.hi, b.hi);
+    grouped[i] = true;
+  }
   MeshInstanceOrder order;
-  for (uint32_t i = 0; i < scene.instances.size(); ++i)
-    if (uses[scene.instances[i].mesh] == 1) order.sceneInstance.push_back(i);
+  for (const auto& [key, members] : cells) {
+    const Bounds& b = cellBounds[key];
+    order.groups.push_back(
+        {uint32_t(order.sceneInstance.size()), uint32_t(members.size()), 0.5 * (b.lo + b.hi)});
+    order.sceneInstance.insert(order.sceneInstance.end(), members.begin(), members.end());
+  }
   order.merged = uint32_t(order.sceneInstance.size());
   for (uint32_t i = 0; i < scene.instances.size(); ++i)
-    if (uses[scene.instances[i].mesh] > 1) order.sceneInstance.push_back(i);
+    if (!grouped[i]) order.sceneInstance.push_back(i);
   return order;
-}
-
-// The merged BLAS's space: world space moved by `origin` (the centre of its
-// instances' bounds), so its vertices keep float precision about their
-// centre wherever the scene sits; its TLAS instance translates it back.
-glm::dvec3 mergedOrigin(const scene::Scene& scene, const MeshInstanceOrder& order) {
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (uint32_t k = 0; k < order.merged; ++k) {
-    const auto& inst = scene.instances[order.sceneInstance[k]];
-    const glm::dmat4 m(inst.transform);
-    for (const glm::vec3& p : scene.meshes[inst.mesh].positions) {
-      const glm::dvec3 w(m * glm::dvec4(glm::dvec3(p), 1.0));
-      lo = glm::min(lo, w);
-      hi = glm::max(hi, w);
-    }
-  }
-  return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
 }
 
 template <class T>
@@ -154,8 +179,9 @@ struct PathTracer::SceneBuffers {
   rhi::BufferHandle normals, tangents, texcoords;
   SceneTextures textures;
   rhi::BufferHandle textureRefs;
-  rhi::rt::AccelStructHandle mergedBottomLevel;  // every mesh drawn once (MeshInstanceOrder)
-  rhi::BufferHandle mergedTransforms;            // its geometries' transforms, 3x4 rows
+  std::vector<rhi::rt::AccelStructHandle> mergedBottomLevels;  // one per MergeGroup
+  rhi::BufferHandle
+      mergedTransforms;  // their geometries' transforms, 3x4 rows, in GPU instance order
   std::vector<rhi::rt::AccelStructHandle> bottomLevels;  // per instanced mesh; null for the others
   rhi::rt::AccelStructHandle topLevel;
   rhi::BufferHandle implicits, implicitAabbs;
@@ -407,33 +433,32 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     return geo;
   };
   std::vector<rhi::rt::InstanceDesc> tlasInstances;
-  if (order.merged > 0) {
-    const glm::dvec3 origin = mergedOrigin(scene, order);
-    std::vector<rhi::rt::AffineTransform> transforms;
-    rhi::rt::AccelStructDesc blas;
-    blas.debugName = "BLAS meshes drawn once";
-    for (uint32_t k = 0; k < order.merged; ++k) {
-      const auto& inst = scene.instances[order.sceneInstance[k]];
-      transforms.push_back(
-          toAffine(glm::translate(glm::dmat4(1.0), -origin) * glm::dmat4(inst.transform)));
-      blas.bottomLevelGeometries.push_back(meshGeometry(inst.mesh));
-    }
-    s.mergedTransforms = makeStorageBuffer(device_, transforms, BufferUsage::AccelStructBuildInput,
-                                           "merged BLAS transforms");
+  std::vector<rhi::rt::AffineTransform> transforms;  // every group's geometries, in GPU order
+  for (const MergeGroup& group : order.groups)
+    for (uint32_t k = group.first; k < group.first + group.count; ++k)
+      transforms.push_back(toAffine(glm::translate(glm::dmat4(1.0), -group.centre) *
+                                    scene.instances[order.sceneInstance[k]].transform));
+  s.mergedTransforms = makeStorageBuffer(device_, transforms, BufferUsage::AccelStructBuildInput,
+                                         "merged BLAS transforms");
+  if (!transforms.empty())
     cmd->writeBuffer(s.mergedTransforms.get(), transforms.data(),
                      transforms.size() * sizeof(transforms[0]));
-    for (uint32_t k = 0; k < order.merged; ++k) {
-      auto& triangles = blas.bottomLevelGeometries[k].triangles;
-      triangles.transformBuffer = s.mergedTransforms.get();
-      triangles.transformOffset = k * sizeof(rhi::rt::AffineTransform);
+  for (const MergeGroup& group : order.groups) {
+    rhi::rt::AccelStructDesc blas;
+    blas.debugName = fmt::format("BLAS of {} meshes drawn once", group.count);
+    for (uint32_t k = group.first; k < group.first + group.count; ++k) {
+      rhi::rt::GeometryDesc geo = meshGeometry(scene.instances[order.sceneInstance[k]].mesh);
+      geo.triangles.transformBuffer = s.mergedTransforms.get();
+      geo.triangles.transformOffset = k * sizeof(rhi::rt::AffineTransform);
+      blas.bottomLevelGeometries.push_back(geo);
     }
-    s.mergedBottomLevel = device_.createAccelStruct(blas);
-    cmd->buildBottomLevelAccelStruct(s.mergedBottomLevel.get());
+    s.mergedBottomLevels.push_back(device_.createAccelStruct(blas));
+    cmd->buildBottomLevelAccelStruct(s.mergedBottomLevels.back().get());
     rhi::rt::InstanceDesc d;
-    d.transform = toAffine(glm::translate(glm::dmat4(1.0), origin - renderOrigin_));
-    d.instanceID = 0;  // + geometry index: the GPU instance (triangle.rchit)
+    d.transform = toAffine(glm::translate(glm::dmat4(1.0), group.centre - renderOrigin_));
+    d.instanceID = group.first;  // + geometry index: the GPU instance (triangle.rchit)
     d.flags = rhi::rt::InstanceTriangleCullDisable;
-    d.bottomLevelAddress = s.mergedBottomLevel->deviceAddress();
+    d.bottomLevelAddress = s.mergedBottomLevels.back()->deviceAddress();
     tlasInstances.push_back(d);
   }
   s.bottomLevels.resize(scene.meshes.size());

@@ -78,7 +78,7 @@ gpu::MaterialData packMaterial(const scene::Material& material);
 
 // A world-space ray for PathTracer::traceProbeRays.
 struct ProbeRay {
-  glm::vec3 origin{0.0f};
+  glm::dvec3 origin{0.0};                 // world space, double as every world position
   glm::vec3 direction{0.0f, 0.0f, 1.0f};  // hitT is measured in units of its length
   float tMax = 1e30f;
 };

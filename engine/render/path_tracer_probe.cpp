@@ -20,10 +20,9 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   packed.reserve(rays.size());
   // Rays and hits are world space here, render space on the GPU.
   for (const auto& r : rays)
-    packed.push_back(
-        {{float(double(r.origin.x) - renderOrigin_.x), float(double(r.origin.y) - renderOrigin_.y),
-          float(double(r.origin.z) - renderOrigin_.z), r.tMax},
-         {r.direction.x, r.direction.y, r.direction.z, 0.0f}});
+    packed.push_back({{float(r.origin.x - renderOrigin_.x), float(r.origin.y - renderOrigin_.y),
+                       float(r.origin.z - renderOrigin_.z), r.tMax},
+                      {r.direction.x, r.direction.y, r.direction.z, 0.0f}});
 
   rhi::BufferDesc desc;
   desc.byteSize = packed.size() * sizeof(gpu::ProbeRay);
