@@ -89,6 +89,21 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   if (p.mode == TINYGLTF_MODE_TRIANGLES && sequence.size() % 3 != 0)
     warnings.push_back(fmt::format("{}: {} indices are not a multiple of 3; the last {} ignored",
                                    where, sequence.size(), sequence.size() % 3));
+  // A zero-area triangle (a repeated or collinear corner) can never be hit
+  // and has no normal: it is dropped here, so none reaches the GPU.
+  std::vector<uint32_t> kept;
+  kept.reserve(mesh.indices.size());
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::vec3 a = mesh.positions[mesh.indices[t]];
+    const glm::vec3 n = glm::cross(mesh.positions[mesh.indices[t + 1]] - a,
+                                   mesh.positions[mesh.indices[t + 2]] - a);
+    if (glm::dot(n, n) > 0.0f)
+      kept.insert(kept.end(), mesh.indices.begin() + t, mesh.indices.begin() + t + 3);
+  }
+  if (const size_t dropped = (mesh.indices.size() - kept.size()) / 3; dropped > 0)
+    warnings.push_back(
+        fmt::format("{}: {} degenerate (zero-area) triangles dropped", where, dropped));
+  mesh.indices = std::move(kept);
   if (mesh.indices.empty()) {
     warnings.push_back(fmt::format("{}: has no triangles; skipped", where));
     return std::nullopt;

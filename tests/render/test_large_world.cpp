@@ -13,6 +13,7 @@
 #include "render_test_utils.h"
 #include "scene/mesh_builders.h"
 #include "scene/scene_loader.h"
+#include "test_data.h"
 
 using namespace penumbra;
 
@@ -230,4 +231,11 @@ TEST_CASE(
     }
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE(
+    "large worlds: a textured room with alpha-cut quads renders the same image 1e4 and 1e6 m away",
+    "[render][gpu][precision]") {
+  checkOffsets(scene::loadScene(test::dataPath("scenes/textured-room.json")), 32, 16,
+               {{1e4, 1e4, 1e4}, {-1e6, 2e5, 1e6}});
 }

@@ -379,3 +379,25 @@ TEST_CASE("bad glTF input gives one clear error naming the file and the part", "
     }
   }
 }
+
+TEST_CASE("glTF: zero-area triangles are dropped at load with a warning", "[gltf]") {
+  // degenerate.gltf (make_gltf.py): (0,1,2) and (1,4,2) have area 1/2; (0,0,1)
+  // repeats a corner and (0,1,3) has collinear corners (0,0,0) (1,0,0) (2,0,0).
+  const auto r = scene::importGltf(gltf("degenerate.gltf"));
+  REQUIRE(r.scene.meshes.size() == 1u);
+  const auto& mesh = r.scene.meshes[0];
+  REQUIRE(mesh.indices.size() == 6u);
+  const std::vector<glm::vec3> expected = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                           {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (size_t i = 0; i < 6; ++i) CHECK(mesh.positions[mesh.indices[i]] == expected[i]);
+  CHECK(hasWarning(r, "2 degenerate (zero-area) triangles dropped"));
+}
+
+TEST_CASE(
+    "glTF: node transforms compose in double, so a root far from the origin keeps its centimetres",
+    "[gltf][precision]") {
+  // A float cannot hold 1000000.03 (its spacing there is 0.0625).
+  const auto s = scene::loadGltf(gltf("far_translation.gltf"));
+  REQUIRE(s.instances.size() == 1u);
+  CHECK(s.instances[0].transform[3] == glm::dvec4(1000000.03, -200000.01, 0.07, 1.0));
+}

@@ -746,6 +746,25 @@ def scene_files():
                   "transform": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 100, 0, 1]}]})
 
 
+def large_world():
+    """degenerate.gltf: four triangles, two of zero area (a repeated corner;
+    three collinear corners); far_translation.gltf: the unit triangle under a
+    root node translated by (1000000.03, -200000.01, 0.07), which a float
+    cannot hold (its spacing at 1e6 is 0.0625)."""
+    b = Builder()
+    pos = b.accessor([0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0, 1, 1, 0], minmax=True)
+    idx = b.accessor([0, 1, 2, 0, 0, 1, 0, 1, 3, 1, 4, 2], USHORT, "SCALAR")
+    b.add("meshes", {"name": "some degenerate", "primitives": [{"attributes": {"POSITION": pos}, "indices": idx}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["scene"] = 0
+    b.write_gltf("degenerate.gltf")
+
+    b = triangle_file()
+    b.doc["nodes"] = [{"translation": [1000000.03, -200000.01, 0.07], "children": [1]}, {"mesh": 0}]
+    b.write_gltf("far_translation.gltf")
+
+
 if __name__ == "__main__":
     transforms()
     sparse()
@@ -765,3 +784,4 @@ if __name__ == "__main__":
     invalid_textures()
     render_quads()
     scene_files()
+    large_world()
