@@ -405,6 +405,16 @@ bool nextPointLightShadowRay(FrameConstants c, inout VertexRays rays, out Shadow
   return false;
 }
 
+// Sample `s` of this frame at launchPixel(): its random stream (numbered
+// over the whole accumulation), its camera ray and its fresh path.
+PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 direction) {
+  Rng rng = rngCreate(launchPixel(), c.lights.z + c.image.w + s, c.sampling.x);
+  float2 jitter = jitteredPixelSample(s, c.image.z, rngNext(rng), rngNext(rng));
+  origin = c.cameraPosition.xyz;
+  direction = cameraRayDirection(c, float2(launchPixel()) + jitter);
+  return startPath(rng, dot(direction, c.cameraForward.xyz));
+}
+
 // The sum of this frame's path samples (FrameConstants.image.z of them,
 // continuing the pixel's sample sequence) through launchPixel(), and the
 // first two moments of their filtered luminance; their guides go to the
@@ -429,11 +439,9 @@ float3 tracePixel(FrameConstants c, out float2 moments) {
   moments = float2(0.0, 0.0);
   VertexRays rays = noVertexRays();
   uint s = 0u;
-  Rng rng = rngCreate(launchPixel(), c.lights.z + before, c.sampling.x);
-  float2 jitter = jitteredPixelSample(0u, samples, rngNext(rng), rngNext(rng));
-  float3 rayOrigin = c.cameraPosition.xyz;
-  float3 rayDirection = cameraRayDirection(c, float2(launchPixel()) + jitter);
-  PathState p = startPath(rng, dot(rayDirection, c.cameraForward.xyz));
+  float3 rayOrigin;
+  float3 rayDirection;
+  PathState p = startSample(c, s, rayOrigin, rayDirection);
   float rayTMax = 1e30;
   bool shadowRay = false;
   float3 shadowContribution = zero3();
@@ -472,11 +480,7 @@ float3 tracePixel(FrameConstants c, out float2 moments) {
     moments += float2(l, l * l);
     s += 1u;
     if (s >= samples) break;
-    rng = rngCreate(launchPixel(), c.lights.z + before + s, c.sampling.x);
-    jitter = jitteredPixelSample(s, samples, rngNext(rng), rngNext(rng));
-    rayOrigin = c.cameraPosition.xyz;
-    rayDirection = cameraRayDirection(c, float2(launchPixel()) + jitter);
-    p = startPath(rng, dot(rayDirection, c.cameraForward.xyz));
+    p = startSample(c, s, rayOrigin, rayDirection);
     rayTMax = 1e30;
     shadowRay = false;
   }
