@@ -83,8 +83,11 @@ MeshInstanceOrder meshInstanceOrder(const scene::Scene& scene) {
   struct Bounds {
     glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
   };
-  std::map<std::tuple<int64_t, int64_t, int64_t>, std::vector<uint32_t>> cells;
-  std::map<std::tuple<int64_t, int64_t, int64_t>, Bounds> cellBounds;
+  struct Cell {
+    std::vector<uint32_t> members;  // scene instance indices
+    Bounds bounds;
+  };
+  std::map<std::tuple<int64_t, int64_t, int64_t>, Cell> cells;
   std::vector<bool> grouped(scene.instances.size(), false);
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const auto& inst = scene.instances[i];
@@ -99,18 +102,17 @@ MeshInstanceOrder meshInstanceOrder(const scene::Scene& scene) {
     if (std::max({extent.x, extent.y, extent.z}) > kCell) continue;
     const glm::dvec3 cell = glm::floor(0.5 * (b.lo + b.hi) / kCell);
     const auto key = std::make_tuple(int64_t(cell.x), int64_t(cell.y), int64_t(cell.z));
-    cells[key].push_back(i);
-    Bounds& cb = cellBounds[key];
-    cb.lo = glm::min(cb.lo, b.lo);
-    cb.hi = glm::max(cb.hi, b.hi);
+    Cell& c = cells[key];
+    c.members.push_back(i);
+    c.bounds.lo = glm::min(c.bounds.lo, b.lo);
+    c.bounds.hi = glm::max(c.bounds.hi, b.hi);
     grouped[i] = true;
   }
   MeshInstanceOrder order;
-  for (const auto& [key, members] : cells) {
-    const Bounds& b = cellBounds[key];
-    order.groups.push_back(
-        {uint32_t(order.sceneInstance.size()), uint32_t(members.size()), 0.5 * (b.lo + b.hi)});
-    order.sceneInstance.insert(order.sceneInstance.end(), members.begin(), members.end());
+  for (const auto& [key, c] : cells) {
+    order.groups.push_back({uint32_t(order.sceneInstance.size()), uint32_t(c.members.size()),
+                            0.5 * (c.bounds.lo + c.bounds.hi)});
+    order.sceneInstance.insert(order.sceneInstance.end(), c.members.begin(), c.members.end());
   }
   order.merged = uint32_t(order.sceneInstance.size());
   for (uint32_t i = 0; i < scene.instances.size(); ++i)
@@ -254,6 +256,10 @@ void PathTracer::resize(uint32_t width, uint32_t height) {
   resetAccumulation();
 }
 
+glm::dmat4 PathTracer::worldToRenderSpace() const {
+  return glm::translate(glm::dmat4(1.0), -renderOrigin_);
+}
+
 void PathTracer::uploadScene(const scene::Scene& scene) {
   scene_ = std::make_unique<SceneBuffers>();
   std::vector<gpu::float4> vertices;
@@ -291,7 +297,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   // Everything the GPU sees is placed relative to renderOrigin_ (the camera's
   // position when the scene was uploaded), in double until then: the render
   // space, where floats are precise near the camera wherever the scene is.
-  const glm::dmat4 toRenderSpace = glm::translate(glm::dmat4(1.0), -renderOrigin_);
+  const glm::dmat4 toRenderSpace = worldToRenderSpace();
   // Emitters: render-space triangles of every instance of an emissive mesh,
   // chosen for NEE in proportion to power (area x luminance).
   std::vector<gpu::InstanceData> instances;
@@ -499,8 +505,7 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
   auto& s = *scene_;
   // In render space, as the meshes (uploadScene).
   std::vector<scene::ImplicitObject> objects = scene.implicits;
-  for (auto& object : objects)
-    object.transform = glm::translate(glm::dmat4(1.0), -renderOrigin_) * object.transform;
+  for (auto& object : objects) object.transform = worldToRenderSpace() * object.transform;
   const ImplicitLayout layout = layoutImplicits(objects, uint32_t(scene.instances.size()));
   s.implicits = makeStorageBuffer(device_, layout.data, rhi::BufferUsage::None, "implicit objects");
   s.implicitAabbs = makeStorageBuffer(device_, layout.aabbs,

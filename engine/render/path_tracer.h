@@ -176,6 +176,7 @@ class PathTracer {
   // far from the world's origin the scene is (docs/ARCHITECTURE.md,
   // "Precision").
   const glm::dvec3& renderOrigin() const { return renderOrigin_; }
+  glm::dmat4 worldToRenderSpace() const;
   // The PT_EFFECT_* bits the scene calls for, and those the pipeline holds.
   uint32_t sceneEffects() const { return sceneEffects_; }
   uint32_t pipelineEffects() const { return pipelineEffects_; }
