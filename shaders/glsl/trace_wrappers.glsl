@@ -7,21 +7,18 @@
 // Shadow rays carry the HitRecord too, so both kinds can leave from one call
 // site: they skip closest hits and stop at the first one, leaving the record
 // as it was (hitT 0), and the radiance miss shader marks a miss (hitT < 0).
-SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
+HitRecord traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
   gRaysThisLaunch += 1u;
   gHit.hitT = 0.0;
   traceRayEXT(gScene, shadow ? gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT : gl_RayFlagsNoneEXT,
               0xff, PT_RAY_CONTRIBUTION, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, origin,
               0.0, direction, tMax, PT_PAYLOAD_RADIANCE);
-  if (shadow) {
-    SurfaceHit blocked = surfaceMiss();
-    blocked.hitT = gHit.hitT;
-    return blocked;
-  }
-  return surfaceFromRecord(origin, direction, gHit);
+  return gHit;
 }
 
-SurfaceHit traceClosest(float3 origin, float3 direction) { return traceRay(origin, direction, 1e30, false); }
+SurfaceHit traceClosest(float3 origin, float3 direction) {
+  return surfaceFromRecord(origin, direction, traceRay(origin, direction, 1e30, false));
+}
 
 bool traceVisibility(float3 origin, float3 direction, float tMax) {
   return traceRay(origin, direction, tMax, true).hitT < 0.0;

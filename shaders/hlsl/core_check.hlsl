@@ -9,6 +9,7 @@
 // (lights.x = 0); the Vulkan furnace test covers NEE and MIS.
 #include "path_tracer_shared.h"
 #include "math.hlsli"
+#include "hit_record.hlsli"
 #include "surface_hit.hlsli"
 // The implicit-surface core, so an HLSL error in it fails this build too
 // (the DXR intersection shaders include the same files).
@@ -32,20 +33,18 @@ struct FramePush {
 [[vk::binding(PENUMBRA_U(0), 0)]] RWStructuredBuffer<float4> gOutput : register(u0);
 
 // Rays start inside the sphere (centred at the origin), so the hit is where
-// they leave it: the implicit core's sphere, as compiled by this front-end.
+// they leave it: the implicit core's sphere, as compiled by this front-end,
+// reported as the implicit object ImplicitData[0] (loadImplicit below).
 // Any two points inside a sphere see each other: a shadow ray never hits.
-SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
-  if (shadow) return surfaceMiss();
+HitRecord traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
+  HitRecord r = hitRecordMiss();
+  if (shadow) return r;
   ImplicitHit leaving = intersectSphere(origin, direction, gSphere[0].z, 0.0, 1e30);
-  if (leaving.s < 0.0) return surfaceMiss();
-  SurfaceHit h = surfaceMiss();
-  h.hitT = leaving.s;
-  h.position = origin + h.hitT * direction;
-  h.geometricNormal = -leaving.normal;  // the emitting side faces inwards
-  h.shadingNormal = h.geometricNormal;
-  h.instanceIndex = 0u;
-  h.primitiveIndex = 0u;
-  return h;
+  if (leaving.s < 0.0) return r;
+  r.hitT = leaving.s;
+  r.primitive = PT_HIT_IMPLICIT;
+  r.attributes = -leaving.normal;  // the emitting side faces inwards
+  return r;
 }
 
 InstanceData loadInstanceData(uint index) {
@@ -114,9 +113,17 @@ TextureRefData loadTextureRef(uint index) {
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) { return float4(1.0, 1.0, 1.0, 1.0); }
 #include "textures.hlsli"
 
-// The harness has no meshes; these only let the record decoding of the ray
-// generation shaders (surface_from_record.hlsli) compile through this front-end.
-ImplicitData loadImplicit(uint index) { return (ImplicitData)0; }
+// The harness has no meshes; these only let the triangle half of the record
+// decoding (surface_from_record.hlsli) compile through this front-end.
+// The furnace sphere as ImplicitData[0]: at the origin, unscaled, InstanceData 0.
+ImplicitData loadImplicit(uint index) {
+  ImplicitData o = (ImplicitData)0;
+  o.worldToObject0 = float4(1.0, 0.0, 0.0, 0.0);
+  o.worldToObject1 = float4(0.0, 1.0, 0.0, 0.0);
+  o.worldToObject2 = float4(0.0, 0.0, 1.0, 0.0);
+  o.info = uint4(IMPLICIT_SPHERE, 0u, 0u, 0u);
+  return o;
+}
 uint3 triangleVertices(InstanceData instance, uint primitive) { return uint3(0u, 1u, 2u); }
 float3 loadVertexPosition(uint vertex) { return float3(float(vertex == 1u), float(vertex == 2u), 0.0); }
 float3 loadVertexNormal(uint vertex) { return float3(0.0, 0.0, 1.0); }

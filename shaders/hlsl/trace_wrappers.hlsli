@@ -11,7 +11,7 @@ static uint gRaysThisLaunch = 0u;
 // Shadow rays carry the HitRecord too, so both kinds can leave from one call
 // site: they skip closest hits and stop at the first one, leaving the record
 // as it was (hitT 0), and the radiance miss shader marks a miss (hitT < 0).
-SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
+HitRecord traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
   gRaysThisLaunch += 1u;
   RayDesc ray;
   ray.Origin = origin;
@@ -22,15 +22,12 @@ SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
   record.hitT = 0.0;
   TraceRay(gScene, shadow ? RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH | RAY_FLAG_SKIP_CLOSEST_HIT_SHADER : RAY_FLAG_NONE,
            0xff, PT_RAY_CONTRIBUTION, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
-  if (shadow) {
-    SurfaceHit blocked = surfaceMiss();
-    blocked.hitT = record.hitT;
-    return blocked;
-  }
-  return surfaceFromRecord(origin, direction, record);
+  return record;
 }
 
-SurfaceHit traceClosest(float3 origin, float3 direction) { return traceRay(origin, direction, 1e30, false); }
+SurfaceHit traceClosest(float3 origin, float3 direction) {
+  return surfaceFromRecord(origin, direction, traceRay(origin, direction, 1e30, false));
+}
 
 bool traceVisibility(float3 origin, float3 direction, float tMax) {
   return traceRay(origin, direction, tMax, true).hitT < 0.0;

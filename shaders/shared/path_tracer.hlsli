@@ -6,10 +6,12 @@
 // Russian roulette, and optional per-sample radiance clamping.
 //
 // The entry points define, before including this file:
-//   SurfaceHit traceRay(float3 origin, float3 direction, float tMax, bool shadow);
-//     a radiance ray's closest surface (hitT < 0: it missed), or for a
-//     shadow ray hitT < 0 exactly when nothing blocks [0, tMax]; the one
-//     trace call of the integrator (tracePixel says why)
+//   HitRecord traceRay(float3 origin, float3 direction, float tMax, bool shadow);
+//     a radiance ray's closest hit (hitT < 0: it missed), or for a shadow
+//     ray hitT < 0 exactly when nothing blocks [0, tMax]; the one trace call
+//     of the integrator (tracePixel says why)
+//   SurfaceHit surfaceFromRecord(float3 origin, float3 direction, HitRecord r);
+//     the surface a radiance ray's record describes (surface_from_record.hlsli)
 //   uint2 launchPixel();  // the pixel this invocation renders
 //   void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission);
 //     one sample's guides into the guide buffers' running means
@@ -209,44 +211,48 @@ PathState startPath(Rng rng, float cosForward) {
   return p;
 }
 
-// What a vertex leaves to trace after its first shadow ray: the point and
-// spot lights' shadow rays (built when their turn comes) and the bounce, if
-// the path goes on.
-struct VertexRays {
-  bool continues;
-  float3 bounceOrigin;
-  float3 bounceDirection;
-#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  uint nextPointLight;
-  uint pointLights;  // 0 without NEE
-  // What the point lights' shadow rays are built from.
-  DisneyMaterial material;
-  Frame frame;
-  float3 position;
-  float3 ng;
-  float3 incoming;
-  float3 wo;
-  float3 throughput;  // before the scatter
-#endif
+// A radiance ray of the path: the one traced, or the bounce that waits while
+// its vertex's shadow rays go first.
+struct PathRay {
+  float3 origin;
+  float3 direction;
 };
 
-VertexRays noVertexRays() {
-  VertexRays v;
-  v.continues = false;
-  v.bounceOrigin = zero3();
-  v.bounceDirection = float3(0.0, 0.0, 1.0);
+// What a vertex's point- and spot-light shadow rays are built from, one
+// after the other, while its bounce waits: the hit as traced (its record and
+// the ray that found it), not the shaded surface, which is rebuilt for each
+// (whatever is alive across a trace call is saved and restored around it:
+// 16 words, where the surface, its material and frame are about 45).
+struct PointLightVertex {
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  v.nextPointLight = 0u;
-  v.pointLights = 0u;
-  v.material = unpackDisney(loadMaterial(0u));
-  v.frame = frameFromNormal(float3(0.0, 0.0, 1.0));
-  v.position = zero3();
-  v.ng = float3(0.0, 0.0, 1.0);
-  v.incoming = float3(0.0, 0.0, 1.0);
-  v.wo = float3(0.0, 0.0, 1.0);
-  v.throughput = zero3();
+  HitRecord record;
+  PathRay ray;
+  float3 throughput;  // before the scatter
+  uint nextLight;
 #endif
+  uint lights;  // 0 without NEE or point lights
+};
+
+PointLightVertex noPointLightVertex() {
+  PointLightVertex v;
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  v.record = hitRecordMiss();
+  v.ray.origin = zero3();
+  v.ray.direction = float3(0.0, 0.0, 1.0);
+  v.throughput = zero3();
+  v.nextLight = 0u;
+#endif
+  v.lights = 0u;
   return v;
+}
+
+// The material of a hit, its textures applied.
+MaterialData hitMaterial(InstanceData instance, SurfaceHit hit) {
+  MaterialData data = loadMaterial(instance.materialIndex);
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  data = applyMaterialTextures(data, hit.uv);
+#endif
+  return data;
 }
 
 // The guides of the vertex that closed the path's delta chain, if it did.
@@ -265,20 +271,22 @@ VertexGuides closeGuides(inout PathState p, float3 albedo, float3 normal) {
   return g;
 }
 
-// The vertex a radiance ray found along `direction`: its emission and
-// guides, its area-light sample (`shadow`, tMax 0 if none), the point
-// lights' and the bounce in `rays`. False: no ray follows (the ray missed,
-// the path is at its maximum depth, or the vertex is exactly grazing).
-bool shadeVertex(FrameConstants c, SurfaceHit hit, float3 direction, inout PathState p, inout VertexRays rays,
-                 out VertexGuides guides, out ShadowRay shadow) {
+// The vertex that `ray` found (its trace returned `record`): its emission
+// and guides, its area-light sample (`shadow`, tMax 0 if none), what its
+// point lights' shadow rays are built from (`pointLights`) and its bounce.
+// False: the path ends here (the ray missed, the path is at its maximum
+// depth, the vertex is exactly grazing, or the scatter ended it); its
+// shadow rays are traced all the same.
+bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathState p, out VertexGuides guides,
+                 out ShadowRay shadow, out PointLightVertex pointLights, out PathRay bounce) {
   shadow = noShadowRay();
+  pointLights = noPointLightVertex();
   guides.closed = false;
   guides.albedo = zero3();
   guides.normal = zero3();
-  rays.continues = false;
-#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  rays.pointLights = 0u;
-#endif
+  bounce = ray;
+  SurfaceHit hit = surfaceFromRecord(ray.origin, ray.direction, record);
+  float3 direction = ray.direction;
   // Locals are not `const`: GLSL allows const only for constant expressions.
   uint flags = c.sampling.w;
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
@@ -287,10 +295,7 @@ bool shadeVertex(FrameConstants c, SurfaceHit hit, float3 direction, inout PathS
   if (hit.hitT < 0.0) return false;  // no environment light yet
   float3 radianceBefore = p.radiance;
   InstanceData instance = loadInstanceData(hit.instanceIndex);
-  MaterialData data = loadMaterial(instance.materialIndex);
-#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
-  data = applyMaterialTextures(data, hit.uv);
-#endif
+  MaterialData data = hitMaterial(instance, hit);
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
   // Emission: one-sided, from the front face (counter-clockwise; outside
@@ -369,36 +374,36 @@ bool shadeVertex(FrameConstants c, SurfaceHit hit, float3 direction, inout PathS
   }
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  rays.nextPointLight = 0u;
-  rays.pointLights = useNee ? c.lights.y : 0u;
-  rays.material = material;
-  rays.frame = frame;
-  rays.position = hit.position;
-  rays.ng = ng;
-  rays.incoming = direction;
-  rays.wo = wo;
-  rays.throughput = p.throughput;
+  pointLights.record = record;
+  pointLights.ray = ray;
+  pointLights.throughput = p.throughput;
+  pointLights.lights = useNee ? c.lights.y : 0u;
 #endif
 
   float3 wiWorld;
-  rays.continues = scatter(c, material, frame, ng, direction, wo, p.depth, p.rng, p.throughput, p.previousPdf,
+  bool continues = scatter(c, material, frame, ng, direction, wo, p.depth, p.rng, p.throughput, p.previousPdf,
                            p.previousDelta, wiWorld);
-  rays.bounceOrigin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
-  rays.bounceDirection = wiWorld;
-  if (p.guidesOpen && !(rays.continues && p.previousDelta)) guides = closeGuides(p, guideAlbedo, guideNormal);
+  bounce.origin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
+  bounce.direction = wiWorld;
+  if (p.guidesOpen && !(continues && p.previousDelta)) guides = closeGuides(p, guideAlbedo, guideNormal);
   p.depth += 1u;
-  return true;
+  return continues;
 }
 
 // The vertex's next point- or spot-light shadow ray that has something to
-// carry; false when none is left.
-bool nextPointLightShadowRay(FrameConstants c, inout VertexRays rays, out ShadowRay shadow) {
+// carry, its surface rebuilt from the record; false when none is left.
+bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, out ShadowRay shadow) {
   shadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  while (rays.nextPointLight < rays.pointLights) {
-    shadow = pointLightShadowRay(loadPointLight(rays.nextPointLight), rays.material, rays.frame, rays.position,
-                                 rays.ng, rays.incoming, rays.wo, rays.throughput, c.shading.w);
-    rays.nextPointLight += 1u;
+  if (v.nextLight >= v.lights) return false;
+  SurfaceHit hit = surfaceFromRecord(v.ray.origin, v.ray.direction, v.record);
+  DisneyMaterial material = unpackDisney(hitMaterial(loadInstanceData(hit.instanceIndex), hit));
+  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -v.ray.direction));
+  float3 wo = frameToLocal(frame, -v.ray.direction);
+  while (v.nextLight < v.lights) {
+    shadow = pointLightShadowRay(loadPointLight(v.nextLight), material, frame, hit.position, hit.geometricNormal,
+                                 v.ray.direction, wo, v.throughput, c.shading.w);
+    v.nextLight += 1u;
     if (shadow.tMax > 0.0) return true;
   }
 #endif
@@ -427,52 +432,40 @@ PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 di
 // ray each needs, where separate call sites for bounce and shadow rays each
 // ran with only the threads that needed that kind (about half of them for
 // shadow rays), and every trace call costs the whole warp. Each vertex first
-// prepares its shadow rays and samples its bounce, then traces them, so what
-// is alive across the trace is the path state and the vertex's pending rays,
-// not the hit and its material; the pixel is read again when a sample
-// starts rather than kept. Random numbers are drawn in the same order as by
-// a path traced alone.
+// prepares its first shadow ray and samples its bounce, then traces them, so
+// what is alive across the trace is the path state, one radiance ray (the
+// one traced, or the bounce waiting behind a shadow ray) and the shadow
+// ray's contribution, not the hit and its material; the pixel is read again
+// when a sample starts rather than kept. Random numbers are drawn in the
+// same order as by a path traced alone.
 float3 tracePixel(FrameConstants c, out float2 moments) {
   uint samples = c.image.z;
   uint before = c.image.w;  // samples of the running means before this frame
   float3 sum = zero3();
   moments = float2(0.0, 0.0);
-  VertexRays rays = noVertexRays();
   uint s = 0u;
-  float3 rayOrigin;
-  float3 rayDirection;
-  PathState p = startSample(c, s, rayOrigin, rayDirection);
-  float rayTMax = 1e30;
-  bool shadowRay = false;
-  float3 shadowContribution = zero3();
+  PathRay ray;
+  PathState p = startSample(c, s, ray.origin, ray.direction);
+  ShadowRay shadow = noShadowRay();  // to trace next, before `ray`, if tMax > 0
+  PointLightVertex pointLights = noPointLightVertex();
+  bool continues = true;  // after the shadow rays, `ray` is traced
   for (;;) {
-    SurfaceHit hit = traceRay(rayOrigin, rayDirection, rayTMax, shadowRay);
-    bool more = true;
-    ShadowRay shadow = noShadowRay();
-    if (shadowRay) {
-      if (hit.hitT < 0.0) p.radiance += shadowContribution;
+    bool tracingShadow = shadow.tMax > 0.0;
+    HitRecord record = traceRay(tracingShadow ? shadow.origin : ray.origin,
+                                tracingShadow ? shadow.direction : ray.direction,
+                                tracingShadow ? shadow.tMax : 1e30, tracingShadow);
+    if (tracingShadow) {
+      if (record.hitT < 0.0) p.radiance += shadow.contribution;
+      shadow = noShadowRay();
     } else {
       VertexGuides guides;
-      more = shadeVertex(c, hit, rayDirection, p, rays, guides, shadow);
+      continues = shadeVertex(c, record, ray, p, guides, shadow, pointLights, ray);
       if (guides.closed)
         addGuideSample(launchPixel(), before + s, guides.albedo,
                        float4(guides.normal, p.chainLength * p.cosForward), p.chainEmission);
     }
-    if (more && (shadow.tMax > 0.0 || nextPointLightShadowRay(c, rays, shadow))) {
-      rayOrigin = shadow.origin;
-      rayDirection = shadow.direction;
-      rayTMax = shadow.tMax;
-      shadowRay = true;
-      shadowContribution = shadow.contribution;
-      continue;
-    }
-    if (more && rays.continues) {
-      rayOrigin = rays.bounceOrigin;
-      rayDirection = rays.bounceDirection;
-      rayTMax = 1e30;
-      shadowRay = false;
-      continue;
-    }
+    if (shadow.tMax > 0.0 || nextPointLightShadowRay(c, pointLights, shadow)) continue;
+    if (continues) continue;
     // The path ends: on to the pixel's next sample.
     if (p.guidesOpen) addGuideSample(launchPixel(), before + s, zero3(), float4(0.0, 0.0, 0.0, 0.0), zero3());
     sum += p.radiance;
@@ -480,9 +473,8 @@ float3 tracePixel(FrameConstants c, out float2 moments) {
     moments += float2(l, l * l);
     s += 1u;
     if (s >= samples) break;
-    p = startSample(c, s, rayOrigin, rayDirection);
-    rayTMax = 1e30;
-    shadowRay = false;
+    p = startSample(c, s, ray.origin, ray.direction);
+    continues = true;
   }
   return sum;
 }
