@@ -134,6 +134,7 @@ float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
 // The harness keeps no guides.
 static uint2 gPixel;
 uint2 launchPixel() { return gPixel; }
+FrameConstants frameConstants() { return gPush.frame; }
 void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission) {}
 
 #include "camera.hlsli"
@@ -147,6 +148,6 @@ void main(uint3 id : SV_DispatchThreadID) {
   if (pixel.y >= c.image.y) return;
   gPixel = pixel;
   float2 moments;
-  float3 sum = tracePixel(c, moments);
+  float3 sum = tracePixel(moments);
   gOutput[pixelIndex] = float4(sum / float(c.image.z), 1.0);
 }

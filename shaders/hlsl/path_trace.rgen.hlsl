@@ -12,6 +12,7 @@ RWTexture2D<float4> gGuideMoments : PENUMBRA_REGISTER_U(PT_U_GUIDE_MOMENTS);
 // holds the radiance's: the guides one sample at a time, as its path closes
 // them; the moments once per frame.
 uint2 launchPixel() { return DispatchRaysIndex().xy; }
+FrameConstants frameConstants() { return gPush.frame; }
 
 float4 runningMean(float4 previous, float4 sum, uint samples, uint before) {
   return before > 0u ? (previous * float(before) + sum) / float(before + samples) : sum / float(samples);
@@ -30,7 +31,7 @@ void main() {
   FrameConstants frame = gPush.frame;
   uint2 pixel = DispatchRaysIndex().xy;
   float2 moments;
-  float3 sum = tracePixel(frame, moments);
+  float3 sum = tracePixel(moments);
   accumulate(pixel, sum, frame.image.z, frame.image.w);
   gGuideMoments[pixel] = runningMean(gGuideMoments[pixel], float4(moments, 0.0, 0.0), frame.image.z, frame.image.w);
 }

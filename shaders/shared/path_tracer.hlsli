@@ -12,6 +12,7 @@
 //     of the integrator (tracePixel says why)
 //   SurfaceHit surfaceFromRecord(float3 origin, float3 direction, HitRecord r);
 //     the surface a radiance ray's record describes (surface_from_record.hlsli)
+//   FrameConstants frameConstants();  // this launch's constants
 //   uint2 launchPixel();  // the pixel this invocation renders
 //   void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission);
 //     one sample's guides into the guide buffers' running means
@@ -436,11 +437,11 @@ PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 di
 // what is alive across the trace is the path state, one radiance ray (the
 // one traced, or the bounce waiting behind a shadow ray) and the shadow
 // ray's contribution, not the hit and its material; the pixel is read again
-// when a sample starts rather than kept. Random numbers are drawn in the
-// same order as by a path traced alone.
-float3 tracePixel(FrameConstants c, out float2 moments) {
-  uint samples = c.image.z;
-  uint before = c.image.w;  // samples of the running means before this frame
+// when a sample starts rather than kept, and so are the frame constants
+// after each trace. Random numbers are drawn in the same order as by a path
+// traced alone.
+float3 tracePixel(out float2 moments) {
+  FrameConstants c = frameConstants();
   float3 sum = zero3();
   moments = float2(0.0, 0.0);
   uint s = 0u;
@@ -454,6 +455,8 @@ float3 tracePixel(FrameConstants c, out float2 moments) {
     HitRecord record = traceRay(tracingShadow ? shadow.origin : ray.origin,
                                 tracingShadow ? shadow.direction : ray.direction,
                                 tracingShadow ? shadow.tMax : 1e30, tracingShadow);
+    c = frameConstants();
+    uint before = c.image.w;  // samples of the running means before this frame
     if (tracingShadow) {
       if (record.hitT < 0.0) p.radiance += shadow.contribution;
       shadow = noShadowRay();
@@ -472,7 +475,7 @@ float3 tracePixel(FrameConstants c, out float2 moments) {
     float l = luminance(p.radiance - (p.guidesOpen ? zero3() : p.chainEmission));
     moments += float2(l, l * l);
     s += 1u;
-    if (s >= samples) break;
+    if (s >= c.image.z) break;
     p = startSample(c, s, ray.origin, ray.direction);
     continues = true;
   }
