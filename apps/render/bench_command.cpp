@@ -79,6 +79,7 @@ void benchDenoiser(rhi::IDevice& device, render::PathTracer& tracer,
   std::vector<double> trace, filter;
   image::Image previousRaw, previousDenoised;
   double rawChange = 0, denoisedChange = 0;
+  settings.writeGuides = true;                // the denoiser reads them
   for (uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up
     settings.seed = 1000 + f;
     tracer.startNewMean(tracer.nextSampleIndex());
@@ -153,6 +154,9 @@ int runBench(const BenchOptions& o) {
         "", median(timings.frameSeconds) * 1e3, mean(timings.frameSeconds) * 1e3,
         total > 0 ? double(timings.rays) / total * 1e-6 : 0.0, t.pipelineCreationSeconds() * 1e3);
   };
+  const render::AccelStructBuildTimes& builds = specialized.accelStructBuildTimes();
+  fmt::print("acceleration structures: BLAS builds {:.3f} ms, TLAS build {:.3f} ms (GPU)\n",
+             builds.bottomLevelSeconds * 1e3, builds.topLevelSeconds * 1e3);
   report("specialized", specialized, tSpecialized);
   report("full", everything, tFull);
   fmt::print("full / specialized GPU time (medians): {:.3f}\n",

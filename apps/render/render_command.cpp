@@ -207,7 +207,9 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     effects += (effects.empty() ? "" : ", ") + name;
   fmt::print("pipeline effects: {}{}\n", effects.empty() ? "none" : effects,
              job.allEffects ? " (--all-effects)" : "");
-  const render::PathTracerSettings& settings = job.settings;
+  render::PathTracerSettings settings = job.settings;
+  // The guide buffers are what the denoiser and the AOVs read.
+  settings.writeGuides = o.denoise != render::DenoiseMode::Off || !aovs.empty();
 
   std::unique_ptr<render::Denoiser> denoiser;
   render::DenoiserSettings denoise;

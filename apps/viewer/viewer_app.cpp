@@ -347,6 +347,16 @@ void Viewer::renderFrame() {
 
   // The temporal denoiser integrates frames itself: until its history is
   // full, each frame starts a new mean; then the tracer accumulates.
+  // The guide buffers cost about a tenth of a frame: written only while the
+  // denoiser or a guide view reads them, and a change starts a new mean, so
+  // that they always hold every sample of it.
+  const bool guidesRead = (settings_.denoise != render::DenoiseMode::Off &&
+                           settings_.tracer.integrator == render::Integrator::Path) ||
+                          settings_.view != ViewBuffer::Image;
+  if (guidesRead != settings_.tracer.writeGuides) {
+    settings_.tracer.writeGuides = guidesRead;
+    tracer_->resetAccumulation();
+  }
   const bool startedOver = tracer_->accumulationGeneration() != seenGeneration_;
   if (startedOver) stillFrames_ = 0;
   const bool denoising = settings_.denoise != render::DenoiseMode::Off &&

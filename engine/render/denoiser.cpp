@@ -130,6 +130,10 @@ void Denoiser::record(rhi::ICommandList& cmd, const PathTracer& tracer, const sc
                             tracer.height(), width_, height_));
   if (settings.mode == DenoiseMode::Off)
     throw Error("denoiser: record called with the denoiser off");
+  if (!tracer.guidesWritten())
+    throw Error(
+        "denoiser: the path tracer did not write its guide buffers for every sample of the image "
+        "(PathTracerSettings::writeGuides)");
   if (samples == 0) throw Error("denoiser: the image has no samples yet");
   if (settings.iterations > 12) throw Error("denoiser: at most 12 a-trous iterations");
   if (settings.maxHistory < 1) throw Error("denoiser: the history must hold at least 1 frame");

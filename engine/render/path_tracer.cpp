@@ -40,7 +40,7 @@ rhi::rt::AffineTransform toAffine(const Matrix& m) {
 gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
                                uint32_t firstEmissiveTriangle, const glm::dmat4& objectToWorld) {
   const glm::dmat4 inverse = glm::inverse(objectToWorld);
-  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {},
+  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {}, {},
                       {},         {},          {}};
   gpu::float4* forward[3] = {&d.objectToWorld0, &d.objectToWorld1, &d.objectToWorld2};
   gpu::float4* backward[3] = {&d.worldToObject0, &d.worldToObject1, &d.worldToObject2};
@@ -312,6 +312,9 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     const glm::dmat4 objectToRender = toRenderSpace * inst.transform;
     gpu::InstanceData data = instanceData(firstIndex[inst.mesh], firstVertex[inst.mesh],
                                           mesh.material, PT_NO_EMISSION, objectToRender);
+    data.vertexAttributes.x = (mesh.normals.empty() ? 0u : PT_VERTEX_NORMALS) |
+                              (mesh.tangents.empty() ? 0u : PT_VERTEX_TANGENTS) |
+                              (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS);
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = uint32_t(emissive.size());
       // A mirroring transform reverses the winding of the world-space corners;
@@ -420,6 +423,16 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
                    s.textures.refs.size() * sizeof(gpu::TextureRefData));
 
+  // The builds go in a list of their own, after the uploads, so that GPU
+  // timestamps around them time the builds alone (accelStructBuildTimes).
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  cmd->open();
+  rhi::TimerQueryHandle bottomLevelTimer = device_.createTimerQuery();
+  rhi::TimerQueryHandle topLevelTimer = device_.createTimerQuery();
+  cmd->beginTimerQuery(bottomLevelTimer.get());
+
   // Alpha-masked meshes are the only non-opaque geometry: the any-hit
   // shader runs for them alone. Each texel is one hit or none, so duplicate
   // any-hit calls could not change a result, but they cost time.
@@ -486,16 +499,21 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     tlasInstances.push_back(d);
   }
   uploadImplicits(scene, tlasInstances);
+  cmd->endTimerQuery(bottomLevelTimer.get());
   rhi::rt::AccelStructDesc tlas;
   tlas.isTopLevel = true;
   tlas.topLevelMaxInstances = uint32_t(tlasInstances.size());
   tlas.debugName = "TLAS " + scene.name;
   s.topLevel = device_.createAccelStruct(tlas);
+  cmd->beginTimerQuery(topLevelTimer.get());
   cmd->buildTopLevelAccelStruct(s.topLevel.get(), tlasInstances.data(),
                                 uint32_t(tlasInstances.size()));
+  cmd->endTimerQuery(topLevelTimer.get());
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
+  accelStructBuildTimes_.bottomLevelSeconds = device_.timerQuerySeconds(bottomLevelTimer.get());
+  accelStructBuildTimes_.topLevelSeconds = device_.timerQuerySeconds(topLevelTimer.get());
 }
 
 // Records the open command list's BLAS builds; appends one TLAS instance per
@@ -708,6 +726,7 @@ uint32_t frameFlags(const PathTracerSettings& s) {
   }
   if (s.misHeuristic == MisHeuristic::Balance) flags |= PT_FLAG_BALANCE_HEURISTIC;
   if (s.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
+  if (s.writeGuides) flags |= PT_FLAG_GUIDES;
   return flags | (directions << PT_DIRECTIONS_SHIFT);
 }
 
@@ -763,6 +782,9 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
   cmd.dispatchRays(width_, height_);
   cmd.endTimerQuery(queries.timer.get());
   cmd.copyBuffer(queries.rays.get(), 0, rayCounter_.get(), 0, 4);
+  // The Whitted integrator leaves the guide buffers untouched.
+  const bool guides = settings.writeGuides && settings.integrator == Integrator::Path;
+  guidesWritten_ = (accumulatedSamples_ == 0 || guidesWritten_) && guides;
   accumulatedSamples_ += samples;
   queries.samples = samples;
 }

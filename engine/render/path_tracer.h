@@ -37,6 +37,10 @@ struct PathTracerSettings {
   bool russianRoulette = true;
   float radianceClamp = 0.0f;  // largest channel of one sample's contribution; 0 = off
   uint32_t seed = 0;
+  // Write the guide buffers (GuideBuffers) beside the image: the denoiser
+  // and the AOVs read them. Off by default: their per-sample writes cost
+  // about a tenth of a frame.
+  bool writeGuides = false;
 };
 
 // How the pipeline is built. By default it holds only the effects the scene
@@ -44,6 +48,14 @@ struct PathTracerSettings {
 // for comparison and benchmarks.
 struct PipelineOptions {
   bool allEffects = false;
+};
+
+// GPU time of the scene's acceleration-structure builds (timestamps around
+// them): every BLAS (meshes, and the implicit objects' AABBs with their small
+// uploads), then the TLAS.
+struct AccelStructBuildTimes {
+  double bottomLevelSeconds = 0;
+  double topLevelSeconds = 0;
 };
 
 struct FrameStats {
@@ -167,6 +179,9 @@ class PathTracer {
   image::Image readback(const rhi::TextureHandle& texture);
   const rhi::TextureHandle& accumulation() const { return accumulation_; }
   const GuideBuffers& guides() const { return guides_; }
+  // Whether the guide buffers hold the running means of every sample of the
+  // current mean (each of its frames had PathTracerSettings::writeGuides).
+  bool guidesWritten() const { return guidesWritten_; }
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   uint32_t emissiveTriangleCount() const { return emissiveTriangleCount_; }
@@ -182,6 +197,7 @@ class PathTracer {
   uint32_t pipelineEffects() const { return pipelineEffects_; }
   // CPU time spent creating ray-tracing pipelines so far (compiling shaders).
   double pipelineCreationSeconds() const { return pipelineCreationSeconds_; }
+  const AccelStructBuildTimes& accelStructBuildTimes() const { return accelStructBuildTimes_; }
 
  private:
   struct SceneBuffers;
@@ -213,6 +229,7 @@ class PathTracer {
   std::vector<uint32_t> drawnMaterials_;      // materials of instances and implicit objects
   std::vector<uint32_t> gpuToSceneInstance_;  // InstanceData order (meshInstanceOrder)
   uint32_t accumulatedSamples_ = 0;
+  bool guidesWritten_ = false;
   uint32_t firstSample_ = 0;
   uint64_t accumulationGeneration_ = 0;
   uint32_t emissiveTriangleCount_ = 0;
@@ -220,6 +237,7 @@ class PathTracer {
   uint32_t sceneEffects_ = 0;
   uint32_t pipelineEffects_ = 0;
   double pipelineCreationSeconds_ = 0;
+  AccelStructBuildTimes accelStructBuildTimes_;
   glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
   rhi::TextureHandle accumulation_;

@@ -59,6 +59,7 @@ InstanceData loadInstanceData(uint index) {
   m.worldToObject0 = m.objectToWorld0;
   m.worldToObject1 = m.objectToWorld1;
   m.worldToObject2 = m.objectToWorld2;
+  m.vertexAttributes = uint4(0u, 0u, 0u, 0u);
   return m;
 }
 

