@@ -249,7 +249,7 @@ void PathTracer::resize(uint32_t width, uint32_t height) {
   width_ = width;
   height_ = height;
   createAccumulation();
-  for (int i = 0; i < 2; ++i)
+  for (int i = 0; i < int(RayGeneration::Probe); ++i)
     if (pipelines_[i].pipeline)
       pipelines_[i].bindings =
           createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
@@ -568,13 +568,16 @@ void PathTracer::uploadImplicits(const scene::Scene& scene,
 PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGeneration) {
   RayGenerationPipeline& p = pipelines_[int(rayGeneration)];
   if (p.pipeline) return p;
-  static const char* const kNames[] = {"path_trace.rgen", "whitted.rgen", "probe.rgen"};
+  static const char* const kNames[] = {"path_trace.rgen", "path_trace.rgen", "whitted.rgen",
+                                       "probe.rgen"};
   const char* rayGen = kNames[int(rayGeneration)];
   // The shading ray-generation shaders are what the effect set specializes;
   // their export names stay the plain ones.
+  const uint32_t variant =
+      pipelineEffects_ | (rayGeneration == RayGeneration::PathWithGuides ? PT_OUTPUT_GUIDES : 0u);
   rhi::ShaderDesc rayGenShader = rayGeneration == RayGeneration::Probe
                                      ? shaders::shaderDesc(rayGen)
-                                     : shaders::shaderDesc(effectVariant(rayGen, pipelineEffects_));
+                                     : shaders::shaderDesc(effectVariant(rayGen, variant));
   rayGenShader.exportName = rayGen;
 
   rhi::RayTracingPipelineDesc desc;
@@ -726,7 +729,6 @@ uint32_t frameFlags(const PathTracerSettings& s) {
   }
   if (s.misHeuristic == MisHeuristic::Balance) flags |= PT_FLAG_BALANCE_HEURISTIC;
   if (s.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
-  if (s.writeGuides) flags |= PT_FLAG_GUIDES;
   return flags | (directions << PT_DIRECTIONS_SHIFT);
 }
 
@@ -775,6 +777,7 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
   // dispatch and copy in order, and each frame copies it to its own readback.
   cmd.clearBufferUint(rayCounter_.get(), 0);
   auto& p = pipelineFor(settings.integrator == Integrator::Whitted ? RayGeneration::Whitted
+                        : settings.writeGuides                     ? RayGeneration::PathWithGuides
                                                                    : RayGeneration::Path);
   cmd.setRayTracingState({p.pipeline.get(), p.table.get(), {p.bindings.get()}});
   cmd.setPushConstants(&c, sizeof(c));

@@ -38,8 +38,8 @@ struct PathTracerSettings {
   float radianceClamp = 0.0f;  // largest channel of one sample's contribution; 0 = off
   uint32_t seed = 0;
   // Write the guide buffers (GuideBuffers) beside the image: the denoiser
-  // and the AOVs read them. Off by default: their per-sample writes cost
-  // about a tenth of a frame.
+  // and the AOVs read them. Off by default: the pipeline that writes them
+  // (PT_OUTPUT_GUIDES) is about a tenth slower.
   bool writeGuides = false;
 };
 
@@ -209,7 +209,9 @@ class PathTracer {
   // compile every hit and intersection shader into each ray-generation shader
   // of a pipeline, so a pipeline holding all three costs three times as much
   // to build as the one a render needs.
-  enum class RayGeneration { Path, Whitted, Probe };
+  // The path tracer's comes in two: with and without the code that writes
+  // the guide buffers (PT_OUTPUT_GUIDES).
+  enum class RayGeneration { Path, PathWithGuides, Whitted, Probe };
   struct RayGenerationPipeline {
     rhi::RayTracingPipelineHandle pipeline;
     rhi::ShaderTableHandle table;
@@ -243,7 +245,7 @@ class PathTracer {
   rhi::TextureHandle accumulation_;
   GuideBuffers guides_;
   rhi::BufferHandle rayCounter_;
-  RayGenerationPipeline pipelines_[3];
+  RayGenerationPipeline pipelines_[4];
   rhi::CommandListHandle commandList_;
   FrameQueries ownFrame_;  // renderFrame's
 };

@@ -33,6 +33,7 @@ void main() {
   float2 moments;
   float3 sum = tracePixel(moments);
   accumulate(pixel, sum, frame.image.z, frame.image.w);
-  if ((frame.sampling.w & PT_FLAG_GUIDES) == 0u) return;
+#if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)
   gGuideMoments[pixel] = runningMean(gGuideMoments[pixel], float4(moments, 0.0, 0.0), frame.image.z, frame.image.w);
+#endif
 }

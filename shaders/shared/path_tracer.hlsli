@@ -423,8 +423,8 @@ PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 di
 
 // The sum of this frame's path samples (FrameConstants.image.z of them,
 // continuing the pixel's sample sequence) through launchPixel(), and the
-// first two moments of their filtered luminance; with PT_FLAG_GUIDES, their
-// guides go to the guide buffers as they close.
+// first two moments of their filtered luminance; with PT_OUTPUT_GUIDES,
+// their guides go to the guide buffers as they close.
 //
 // One loop traces one ray per iteration, from one call site: a camera ray,
 // a shadow ray or a bounce, whichever the path needs next, and a path that
@@ -457,21 +457,24 @@ float3 tracePixel(out float2 moments) {
                                 tracingShadow ? shadow.tMax : 1e30, tracingShadow);
     c = frameConstants();
     uint before = c.image.w;  // samples of the running means before this frame
-    bool writeGuides = (c.sampling.w & PT_FLAG_GUIDES) != 0u;
     if (tracingShadow) {
       if (record.hitT < 0.0) p.radiance += shadow.contribution;
       shadow = noShadowRay();
     } else {
       VertexGuides guides;
       continues = shadeVertex(c, record, ray, p, guides, shadow, pointLights, ray);
-      if (guides.closed && writeGuides)
+#if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)
+      if (guides.closed)
         addGuideSample(launchPixel(), before + s, guides.albedo,
                        float4(guides.normal, p.chainLength * p.cosForward), p.chainEmission);
+#endif
     }
     if (shadow.tMax > 0.0 || nextPointLightShadowRay(c, pointLights, shadow)) continue;
     if (continues) continue;
     // The path ends: on to the pixel's next sample.
-    if (p.guidesOpen && writeGuides) addGuideSample(launchPixel(), before + s, zero3(), float4(0.0, 0.0, 0.0, 0.0), zero3());
+#if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)
+    if (p.guidesOpen) addGuideSample(launchPixel(), before + s, zero3(), float4(0.0, 0.0, 0.0, 0.0), zero3());
+#endif
     sum += p.radiance;
     float l = luminance(p.radiance - (p.guidesOpen ? zero3() : p.chainEmission));
     moments += float2(l, l * l);

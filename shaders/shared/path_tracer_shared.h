@@ -79,10 +79,6 @@ namespace penumbra::gpu {
 #define PT_FLAG_MIS 2u               // MIS between NEE and BSDF sampling (area lights only)
 #define PT_FLAG_RUSSIAN_ROULETTE 4u
 #define PT_FLAG_BALANCE_HEURISTIC 8u // balance instead of power heuristic
-// Write the guide buffers (PT_U_GUIDE_*): only when the denoiser or an AOV
-// reads them, since their per-sample read-modify-write costs about a tenth
-// of a frame.
-#define PT_FLAG_GUIDES 16u
 // Bits 8-9 of sampling.w: how non-delta directions are sampled.
 #define PT_DIRECTIONS_BSDF 0u        // importance-sample the BSDF
 #define PT_DIRECTIONS_UNIFORM 1u     // uniform over the hemisphere (sphere if transmissive)

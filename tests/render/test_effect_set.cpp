@@ -99,9 +99,11 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
   // texture (MASK without one is decided when the scene is loaded).
   m = disney();
   m.normalTexture = 0;
-  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
   m.alphaMode = scene::AlphaMode::Mask;
-  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
   m.baseColorTexture = 0;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK));
@@ -111,21 +113,26 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
 }
 
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.rgen");
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) ==
-          "path_trace.e1.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) ==
+          "path_trace.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e127.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) == "path_trace.e1.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS | PT_OUTPUT_GUIDES) ==
+          "path_trace.e257.rgen");
   // Whitted has variants for specular and transmission only.
   REQUIRE(render::effectVariant("whitted.rgen", PT_EFFECT_AREA_LIGHTS) == "whitted.e0.rgen");
   REQUIRE(render::effectVariant("whitted.rgen", PT_EFFECTS_ALL) == "whitted.rgen");
-  // Every subset is embedded, and each effect removed makes the shader smaller.
+  // Every subset is embedded, and each effect (or the guides) removed makes
+  // the shader smaller.
+  const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit < PT_PATH_TRACE_EFFECT_BITS; bit <<= 1) {
-    const auto without =
-        shaders::shaderDesc(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL & ~bit));
+  for (uint32_t bit = 1; bit <= PT_OUTPUT_GUIDES; bit <<= 1) {
+    if ((PT_PATH_TRACE_EFFECT_BITS & bit) == 0) continue;  // alpha masking: no variant
+    const auto without = shaders::shaderDesc(render::effectVariant("path_trace.rgen", all & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
     REQUIRE(without.spirv.size() < full);
   }
-  for (uint32_t mask = 0; mask < PT_EFFECTS_ALL; ++mask)
+  for (uint32_t mask = 0; mask <= all; ++mask)
     REQUIRE_NOTHROW(shaders::shaderDesc(render::effectVariant("path_trace.rgen", mask)));
   // The triangles' closest hit only stores a HitRecord: it has no variants.
   REQUIRE_THROWS(render::effectVariant("triangle.rchit", PT_EFFECT_AREA_LIGHTS));
@@ -165,7 +172,8 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   // derivation forgot would drop its lobe and change the image), and both
   // Whitted branches.
   std::vector<Case> cases = {
-      {"cornell box (area light, Lambert)", scene::loadScene("cornell-box"), render::Integrator::Path},
+      {"cornell box (area light, Lambert)", scene::loadScene("cornell-box"),
+       render::Integrator::Path},
       {"rough glass sphere", cornellWithSphere(glass), render::Integrator::Path},
       {"every lobe, point light", cornellWithSphere(everything, true), render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
