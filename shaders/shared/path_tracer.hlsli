@@ -55,16 +55,25 @@ float3 frameToLocal(Frame f, float3 v) {
   return float3(dot(v, f.tangent), dot(v, f.bitangent), dot(v, f.normal));
 }
 
-// The shading frame about unit n, oriented by the hit's vertex tangent where
-// it has one (anisotropic lobes follow the mesh's tangents).
-Frame shadingFrame(SurfaceHit hit, float3 n) {
-  float3 t = resolveShadingTangent(hit.shadingTangent, n);
-  if (dot(t, t) < 0.5) return frameFromNormal(n);
-  Frame f;
-  f.tangent = t;
-  f.bitangent = cross(n, t);
-  f.normal = n;
-  return f;
+// The shading frame about unit n. An anisotropic material's lobes follow
+// the mesh's tangents, so its frame is oriented by the hit's vertex tangent
+// where it has one. Every other BSDF is the same about any tangent: its
+// frame is built from the normal alone, and a pipeline without the GGX
+// lobes (specular, glass) carries no tangent code at all.
+Frame shadingFrame(SurfaceHit hit, float3 n, DisneyMaterial material) {
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR) || PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  if (material.anisotropic != 0.0) {
+    float3 t = resolveShadingTangent(hit.shadingTangent, n);
+    if (dot(t, t) >= 0.5) {
+      Frame f;
+      f.tangent = t;
+      f.bitangent = cross(n, t);
+      f.normal = n;
+      return f;
+    }
+  }
+#endif
+  return frameFromNormal(n);
 }
 
 // A shadow ray prepared at a path vertex and traced once the vertex is
@@ -333,7 +342,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   // and every direction must be on the same geometric side as the shading
   // frame says (shadingConsistent), so interpolated normals leak no light.
   float3 ng = hit.geometricNormal;
-  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction));
+  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction), material);
   float3 wo = frameToLocal(frame, -direction);
   // At the maximum depth, or exactly grazing (no side to scatter into).
   if (p.depth >= c.sampling.y || wo.z == 0.0 || dot(direction, ng) == 0.0) {
@@ -399,7 +408,7 @@ bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, out Sha
   if (v.nextLight >= v.lights) return false;
   SurfaceHit hit = surfaceFromRecord(v.ray.origin, v.ray.direction, v.record);
   DisneyMaterial material = unpackDisney(hitMaterial(loadInstanceData(hit.instanceIndex), hit));
-  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -v.ray.direction));
+  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -v.ray.direction), material);
   float3 wo = frameToLocal(frame, -v.ray.direction);
   while (v.nextLight < v.lights) {
     shadow = pointLightShadowRay(loadPointLight(v.nextLight), material, frame, hit.position, hit.geometricNormal,
