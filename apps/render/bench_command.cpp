@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <numeric>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct BenchOptions {
   int device = -1;
   render::Integrator integrator = render::Integrator::Path;
   render::DenoiseMode denoise = render::DenoiseMode::Off;
+  // The denoiser's camera path: scene units per frame along the camera's
+  // right vector (0: a still camera).
+  double cameraPan = 0;
+  uint32_t referenceSpp = 256;  // of the converged reference the moving camera's last frame meets
 };
 
 // Mean over pixels of |luminance(a) - luminance(b)|.
@@ -42,6 +47,54 @@ double meanLuminanceChange(const image::Image& a, const image::Image& b) {
     sum += std::abs(0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]));
   }
   return pixels ? sum / double(pixels) : 0.0;
+}
+
+// The same, but each pixel against the previous frame where its surface was
+// then (the denoiser's motion vectors: previous film position minus this
+// one), over the pixels whose history the denoiser kept (history length in
+// moments.z > 1): the flicker of what stays in view while the camera moves.
+// `count` receives the number of such pixels.
+double meanReprojectedChange(const image::Image& now, const image::Image& before,
+                             const image::Image& motion, const image::Image& moments,
+                             size_t& count) {
+  double sum = 0;
+  count = 0;
+  for (uint32_t y = 0; y < now.height; ++y)
+    for (uint32_t x = 0; x < now.width; ++x) {
+      if (moments.pixel(x, y)[2] <= 1.0f) continue;
+      const float* m = motion.pixel(x, y);
+      const double px = std::floor(x + 0.5 + m[0]), py = std::floor(y + 0.5 + m[1]);
+      if (!(px >= 0 && py >= 0 && px < now.width && py < now.height)) continue;
+      const float* p = now.pixel(x, y);
+      const float* q = before.pixel(uint32_t(px), uint32_t(py));
+      sum += std::abs(0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]));
+      ++count;
+    }
+  return count ? sum / double(count) : 0.0;
+}
+
+// Relative MSE (as image::compareImages: (a - b)^2 / (b^2 + 1e-2) over RGB)
+// of `a` against the reference `b`, over the pixels whose denoiser history
+// length lies in [lo, hi) (a mean over the reprojection's taps: fractional).
+struct MaskedError {
+  double relativeMse = 0;
+  size_t pixels = 0;
+};
+MaskedError relativeMseByHistory(const image::Image& a, const image::Image& b,
+                                 const image::Image& moments, float lo, float hi) {
+  MaskedError e;
+  double sum = 0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x) {
+      const float history = moments.pixel(x, y)[2];
+      if (history < lo || history >= hi) continue;
+      const float* p = a.pixel(x, y);
+      const float* q = b.pixel(x, y);
+      for (int c = 0; c < 3; ++c) sum += double(p[c] - q[c]) * (p[c] - q[c]) / (q[c] * q[c] + 1e-2);
+      ++e.pixels;
+    }
+  e.relativeMse = e.pixels ? sum / (3.0 * e.pixels) : 0.0;
+  return e;
 }
 
 struct Timings {
@@ -71,26 +124,47 @@ std::string joinNames(uint32_t effects) {
 // samples (the real-time case; a still camera): the denoiser's GPU time, the
 // frame it makes with the path tracer's, and the temporal stability, the
 // mean frame-to-frame change of the raw and the denoised image.
-void benchDenoiser(rhi::IDevice& device, render::PathTracer& tracer,
+void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::PathTracer& tracer,
                    render::PathTracerSettings settings, const BenchOptions& o) {
   render::Denoiser denoiser(device, tracer.width(), tracer.height());
   render::DenoiserSettings d;
   d.mode = o.denoise;
   std::vector<double> trace, filter;
-  image::Image previousRaw, previousDenoised;
+  image::Image previousRaw, previousDenoised, moments;
   double rawChange = 0, denoisedChange = 0;
-  settings.writeGuides = true;                // the denoiser reads them
+  size_t reprojectedPixels = 0;
+  settings.writeGuides = true;  // the denoiser reads them
+  const scene::Camera start = tracer.camera();
+  scene::Camera camera = start;
+  const glm::dvec3 right = glm::normalize(
+      glm::cross(glm::dvec3(glm::normalize(start.forward)), glm::dvec3(glm::normalize(start.up))));
+  uint32_t nextSample = tracer.nextSampleIndex();
   for (uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up
     settings.seed = 1000 + f;
-    tracer.startNewMean(tracer.nextSampleIndex());
+    if (o.cameraPan != 0) {
+      camera.position = start.position + right * (o.cameraPan * f);
+      tracer.setCamera(camera);
+    }
+    tracer.startNewMean(nextSample);
+    nextSample += o.sppPerFrame;
     const auto stats = tracer.renderFrame(settings, o.sppPerFrame);
-    const double seconds = denoiser.run(tracer, tracer.camera(), o.sppPerFrame, d);
+    const double seconds = denoiser.run(tracer, camera, o.sppPerFrame, d);
     image::Image raw = tracer.readback(), denoised = tracer.readback(denoiser.output());
     if (f > 0) {
       trace.push_back(stats.gpuSeconds);
       filter.push_back(seconds);
-      rawChange += meanLuminanceChange(raw, previousRaw);
-      denoisedChange += meanLuminanceChange(denoised, previousDenoised);
+      if (o.cameraPan != 0) {
+        const image::Image motion = tracer.readback(denoiser.motion());
+        moments = tracer.readback(denoiser.moments());
+        size_t pixels = 0;
+        rawChange += meanReprojectedChange(raw, previousRaw, motion, moments, pixels);
+        denoisedChange +=
+            meanReprojectedChange(denoised, previousDenoised, motion, moments, pixels);
+        reprojectedPixels += pixels;
+      } else {
+        rawChange += meanLuminanceChange(raw, previousRaw);
+        denoisedChange += meanLuminanceChange(denoised, previousDenoised);
+      }
     }
     previousRaw = std::move(raw);
     previousDenoised = std::move(denoised);
@@ -101,9 +175,41 @@ void benchDenoiser(rhi::IDevice& device, render::PathTracer& tracer,
              render::denoiseModeName(o.denoise), median(filter) * 1e3, mean(filter) * 1e3);
   fmt::print("path tracing + denoiser GPU ms/frame median {:.3f}\n", median(frame) * 1e3);
   fmt::print(
-      "frame-to-frame mean |luminance change|: raw {:.4g}, denoised {:.4g} ({:.1f}x steadier)\n",
+      "frame-to-frame mean |luminance change|{}: raw {:.4g}, denoised {:.4g} ({:.1f}x steadier)\n",
+      o.cameraPan != 0 ? fmt::format(" along the pan, reprojected, over the {:.0f} % of pixels "
+                                     "kept in history",
+                                     100.0 * double(reprojectedPixels) /
+                                         (double(o.frames) * tracer.width() * tracer.height()))
+                       : std::string(),
       rawChange / o.frames, denoisedChange / o.frames,
       denoisedChange > 0 ? rawChange / denoisedChange : 0.0);
+  if (o.cameraPan == 0 || d.mode != render::DenoiseMode::Svgf) return;
+  // The last frame of the pan against a converged render from its camera
+  // (an independent seed), by how long the denoiser's history is at each
+  // pixel: just disoccluded (1 frame), recent (2-4), settled (5 or more).
+  render::PathTracer reference(device, scene, tracer.width(), tracer.height());
+  reference.setCamera(camera);
+  render::PathTracerSettings converged = settings;
+  converged.writeGuides = false;
+  converged.seed = 987654321u;
+  while (reference.accumulatedSamples() < o.referenceSpp)
+    reference.renderFrame(converged, std::min(render::PathTracer::kMaxSamplesPerFrame,
+                                              o.referenceSpp - reference.accumulatedSamples()));
+  const image::Image truth = reference.readback();
+  fmt::print("last frame of the pan against a {} spp reference, relative MSE raw / denoised:\n",
+             o.referenceSpp);
+  const struct {
+    const char* label;
+    float lo, hi;
+  } buckets[] = {{"just disoccluded (history 1)", 0.0f, 1.5f},
+                 {"history 2-4 frames", 1.5f, 4.5f},
+                 {"history 5+ frames", 4.5f, 1e30f}};
+  for (const auto& b : buckets) {
+    const MaskedError raw = relativeMseByHistory(previousRaw, truth, moments, b.lo, b.hi);
+    const MaskedError denoised = relativeMseByHistory(previousDenoised, truth, moments, b.lo, b.hi);
+    fmt::print("  {:<30} {:>8} pixels: {:.4g} / {:.4g}\n", b.label, raw.pixels, raw.relativeMse,
+               denoised.relativeMse);
+  }
 }
 
 int runBench(const BenchOptions& o) {
@@ -164,7 +270,8 @@ int runBench(const BenchOptions& o) {
   fmt::print("images: max |difference| {:.3g}, mean {:.3g}, rays traced {} vs {}\n",
              stats.maxAbsoluteDifference, stats.meanAbsoluteDifference, tSpecialized.rays,
              tFull.rays);
-  if (o.denoise != render::DenoiseMode::Off) benchDenoiser(*device, specialized, settings, o);
+  if (o.denoise != render::DenoiseMode::Off)
+    benchDenoiser(*device, scene, specialized, settings, o);
   return 0;
 }
 
@@ -196,7 +303,21 @@ Command addBenchCommand(CLI::App& app) {
       cmd, o->denoise,
       "Also time the denoiser on the specialized pipeline's frames (each frame alone): off | "
       "atrous | svgf");
+  cmd->add_option("--camera-pan", o->cameraPan,
+                  "With --denoise: move the camera this far (scene units) along its right vector "
+                  "every frame, and report the flicker of what stays in view and, for svgf, the "
+                  "last frame's error where it was just disoccluded (0: a still camera)")
+      ->capture_default_str();
+  cmd->add_option("--reference-spp", o->referenceSpp,
+                  "Samples per pixel of the converged render the panned camera's last frame is "
+                  "compared with")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
   return [o] {
+    if (o->cameraPan != 0 && o->denoise == render::DenoiseMode::Off)
+      throw Error("--camera-pan: the camera path measures the denoiser (--denoise atrous|svgf)");
+    if (!std::isfinite(o->cameraPan))
+      throw Error("--camera-pan: the step must be a finite number of scene units");
     if (o->denoise != render::DenoiseMode::Off && o->integrator != render::Integrator::Path)
       throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
     return runBench(*o);
