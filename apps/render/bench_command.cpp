@@ -37,14 +37,17 @@ struct BenchOptions {
   uint32_t referenceSpp = 256;  // of the converged reference the moving camera's last frame meets
 };
 
+// |luminance(p) - luminance(q)| of two RGB(A) pixels (Rec. 709).
+double luminanceDifference(const float* p, const float* q) {
+  return std::abs(0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]));
+}
+
 // Mean over pixels of |luminance(a) - luminance(b)|.
 double meanLuminanceChange(const image::Image& a, const image::Image& b) {
   double sum = 0;
   const size_t pixels = a.rgba.size() / 4;
   for (size_t i = 0; i < pixels; ++i) {
-    const float* p = &a.rgba[i * 4];
-    const float* q = &b.rgba[i * 4];
-    sum += std::abs(0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]));
+    sum += luminanceDifference(&a.rgba[i * 4], &b.rgba[i * 4]);
   }
   return pixels ? sum / double(pixels) : 0.0;
 }
@@ -65,39 +68,23 @@ double meanReprojectedChange(const image::Image& now, const image::Image& before
       const float* m = motion.pixel(x, y);
       const double px = std::floor(x + 0.5 + m[0]), py = std::floor(y + 0.5 + m[1]);
       if (!(px >= 0 && py >= 0 && px < now.width && py < now.height)) continue;
-      const float* p = now.pixel(x, y);
-      const float* q = before.pixel(uint32_t(px), uint32_t(py));
-      sum += std::abs(0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]));
+      sum += luminanceDifference(now.pixel(x, y), before.pixel(uint32_t(px), uint32_t(py)));
       ++count;
     }
   return count ? sum / double(count) : 0.0;
 }
 
-// Relative MSE (as image::compareImages: (a - b)^2 / (b^2 + 1e-2) over RGB)
-// of `a` against the reference `b`, over the pixels whose denoiser history
-// length lies in [lo, hi) (a mean over the reprojection's taps: fractional)
-// and that show a surface (depth guide > 0; pixels that see nothing have no
-// history, and nothing to get wrong).
-struct MaskedError {
-  double relativeMse = 0;
-  size_t pixels = 0;
-};
-MaskedError relativeMseByHistory(const image::Image& a, const image::Image& b,
-                                 const image::Image& moments, const image::Image& normalDepth,
-                                 float lo, float hi) {
-  MaskedError e;
-  double sum = 0;
-  for (uint32_t y = 0; y < a.height; ++y)
-    for (uint32_t x = 0; x < a.width; ++x) {
-      const float history = moments.pixel(x, y)[2];
-      if (history < lo || history >= hi || !(normalDepth.pixel(x, y)[3] > 0.0f)) continue;
-      const float* p = a.pixel(x, y);
-      const float* q = b.pixel(x, y);
-      for (int c = 0; c < 3; ++c) sum += double(p[c] - q[c]) * (p[c] - q[c]) / (q[c] * q[c] + 1e-2);
-      ++e.pixels;
-    }
-  e.relativeMse = e.pixels ? sum / (3.0 * e.pixels) : 0.0;
-  return e;
+// Which pixels show a surface (depth guide > 0) and have a denoiser history
+// length in [lo, hi) (a mean over the reprojection's taps: fractional).
+// Pixels that see nothing have no history, and nothing to get wrong.
+std::vector<bool> historyMask(const image::Image& moments, const image::Image& normalDepth,
+                              float lo, float hi) {
+  std::vector<bool> mask(size_t(moments.width) * moments.height);
+  for (size_t i = 0; i < mask.size(); ++i) {
+    const float history = moments.rgba[i * 4 + 2];
+    mask[i] = history >= lo && history < hi && normalDepth.rgba[i * 4 + 3] > 0.0f;
+  }
+  return mask;
 }
 
 struct Timings {
@@ -219,12 +206,11 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
                  {"history 2-4 frames", 1.5f, 4.5f},
                  {"history 5+ frames", 4.5f, 1e30f}};
   for (const auto& b : buckets) {
-    const MaskedError raw =
-        relativeMseByHistory(previousRaw, truth, moments, normalDepth, b.lo, b.hi);
-    const MaskedError denoised =
-        relativeMseByHistory(previousDenoised, truth, moments, normalDepth, b.lo, b.hi);
-    fmt::print("  {:<30} {:>8} pixels: {:.4g} / {:.4g}\n", b.label, raw.pixels, raw.relativeMse,
-               denoised.relativeMse);
+    const std::vector<bool> mask = historyMask(moments, normalDepth, b.lo, b.hi);
+    fmt::print("  {:<30} {:>8} pixels: {:.4g} / {:.4g}\n", b.label,
+               std::count(mask.begin(), mask.end(), true),
+               image::maskedRelativeMse(previousRaw, truth, mask),
+               image::maskedRelativeMse(previousDenoised, truth, mask));
   }
 }
 

@@ -43,6 +43,24 @@ ComparisonStats compareImages(const Image& a, const Image& b, double relativeTol
   return s;
 }
 
+double maskedRelativeMse(const Image& a, const Image& b, const std::vector<bool>& mask) {
+  const size_t pixels = size_t(a.width) * a.height;
+  if (a.width != b.width || a.height != b.height || mask.size() != pixels)
+    throw Error(fmt::format("maskedRelativeMse: sizes differ ({}x{}, {}x{}, mask of {})", a.width,
+                            a.height, b.width, b.height, mask.size()));
+  double sum = 0;
+  size_t count = 0;
+  for (size_t i = 0; i < pixels; ++i) {
+    if (!mask[i]) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(a.rgba[i * 4 + c]) - b.rgba[i * 4 + c];
+      sum += d * d / (double(b.rgba[i * 4 + c]) * b.rgba[i * 4 + c] + 1e-2);
+    }
+    ++count;
+  }
+  return count ? sum / (3.0 * count) : 0.0;
+}
+
 double ssim(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
     throw Error(fmt::format("ssim: image sizes differ ({}x{} vs {}x{})", a.width, a.height, b.width,

@@ -2,6 +2,7 @@
 // Per-pixel comparison of two linear images (backend vs backend, device vs
 // device, render vs reference).
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
@@ -23,6 +24,11 @@ struct ComparisonStats {
 
 // Throws penumbra::Error if the sizes differ.
 ComparisonStats compareImages(const Image& a, const Image& b, double relativeTolerance);
+
+// ComparisonStats::relativeMse of `a` against the reference `b` over the
+// pixels whose `mask` entry (row-major, width x height) is true; 0 for none.
+// Throws penumbra::Error if the sizes differ.
+double maskedRelativeMse(const Image& a, const Image& b, const std::vector<bool>& mask);
 
 // Structural similarity (Wang et al. 2004) of the two images' display
 // luminance: Rec. 709 luminance clamped to [0, 1] and encoded with gamma

@@ -50,20 +50,6 @@ double relMse(const image::Image& a, const image::Image& reference) {
 }
 
 // compareImages' relative MSE over the pixels of a mask.
-double maskedRelMse(const image::Image& a, const image::Image& b, const std::vector<bool>& mask) {
-  double sum = 0;
-  size_t count = 0;
-  for (size_t i = 0; i < mask.size(); ++i) {
-    if (!mask[i]) continue;
-    for (int c = 0; c < 3; ++c) {
-      const double d = a.rgba[i * 4 + c] - b.rgba[i * 4 + c];
-      sum += d * d / (double(b.rgba[i * 4 + c]) * b.rgba[i * 4 + c] + 1e-2);
-    }
-    ++count;
-  }
-  return count ? sum / (3.0 * count) : 0.0;
-}
-
 glm::vec3 unit(const float* v) {
   return glm::normalize(glm::vec3(v[0], v[1], v[2]));
 }
@@ -192,9 +178,9 @@ TEST_CASE(
   blind.normalExponent = 0.0f;
   blind.luminanceSigma = 0.0f;
   const image::Image blurred1 = denoise(*device, one, blind);
-  const double edgeRaw = maskedRelMse(one.raw, reference.raw, edges);
-  const double edgeDenoised = maskedRelMse(denoised1, reference.raw, edges);
-  const double edgeBlind = maskedRelMse(blurred1, reference.raw, edges);
+  const double edgeRaw = image::maskedRelativeMse(one.raw, reference.raw, edges);
+  const double edgeDenoised = image::maskedRelativeMse(denoised1, reference.raw, edges);
+  const double edgeBlind = image::maskedRelativeMse(blurred1, reference.raw, edges);
   INFO("edge relMSE at 1 spp: raw " << edgeRaw << ", denoised " << edgeDenoised
                                     << ", without edge stopping " << edgeBlind);
   CHECK(edgeDenoised <= edgeRaw);
@@ -392,8 +378,8 @@ TEST_CASE(
             awayFromLight[size_t(qy) * kSize + size_t(qx)] = false;
         }
     }
-  const double errorWith = maskedRelMse(withHistory, reference, awayFromLight);
-  const double errorWithout = maskedRelMse(withoutHistory, reference, awayFromLight);
+  const double errorWith = image::maskedRelativeMse(withHistory, reference, awayFromLight);
+  const double errorWithout = image::maskedRelativeMse(withoutHistory, reference, awayFromLight);
   INFO("relMSE after the move, away from the light: with history " << errorWith << ", without "
                                                                    << errorWithout);
   CHECK(errorWith < errorWithout);
