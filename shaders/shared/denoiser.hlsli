@@ -128,8 +128,9 @@ void denoiseTemporal(int2 p, uint flags) {
       float3 sumMoments = zero3();
       float sumWeight = 0.0;
       int2 spot = int2(floor(previous.xy));
-      bool still = dot(motion, motion) < 0.25;
+      bool still = dot(motion, motion) < 1e-4;
       float spotAlbedo = insideImage(f, spot) ? luminance(loadHistoryAlbedo(spot).xyz) : 0.0;
+      float spotEmission = insideImage(f, spot) ? luminance(loadHistoryEmission(spot).xyz) : 0.0;
       // The four bilinear taps; where none is this surface (1 spp guides
       // flip between the two sides of an edge from frame to frame), the 3x3
       // history pixels around the spot that are, with equal weights, as
@@ -144,16 +145,25 @@ void denoiseTemporal(int2 p, uint flags) {
           if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * previous.z) continue;
           if (dot(normal, unitOrZero(hnd.xyz)) < 0.9) continue;
           // A light 0.1 mm below a ceiling passes both tests: the albedo
-          // must match as well (luminance within a factor of 2), or the
-          // light's emission would smear onto the ceiling. Compared with
-          // this frame's albedo, except for a camera that has not moved by
-          // half a pixel: its bilinear taps are compared with the history
-          // at the spot itself, so an edge pixel keeps its own history
-          // whichever side its 1 spp sample hit this frame.
+          // and the emission must match as well (luminance within a factor
+          // of 2), or the light's emission would smear onto the ceiling. The
+          // albedo alone lets a pixel half light, half ceiling (half the
+          // ceiling's albedo) through to the ceiling beside it as the camera
+          // moves; its emission does not. Compared with this frame's guides,
+          // except for a camera that has not moved (by 0.01 pixel): its
+          // bilinear taps are compared with the history at the spot itself,
+          // so an edge pixel keeps its own history whichever side its 1 spp
+          // sample hit this frame. Only a still camera: history compared with
+          // history confirms itself, so a camera panning by less than half a
+          // pixel a frame (the bound this once had) dragged the light's
+          // emission along behind its edge.
           float4 historyAlbedo = loadHistoryAlbedo(q);
           float4 historyEmission = loadHistoryEmission(q);
-          float la = luminance(historyAlbedo.xyz), lb = still && pass == 0 ? spotAlbedo : luminance(currentAlbedo);
+          bool atSpot = still && pass == 0;
+          float la = luminance(historyAlbedo.xyz), lb = atSpot ? spotAlbedo : luminance(currentAlbedo);
           if (abs(la - lb) > 0.5 * max(la, lb)) continue;
+          float le = luminance(historyEmission.xyz), lf = atSpot ? spotEmission : luminance(currentEmission);
+          if (abs(le - lf) > 0.5 * max(le, lf)) continue;
           float w = pass == 0 ? (offset.x == 1 ? t.x : 1.0 - t.x) * (offset.y == 1 ? t.y : 1.0 - t.y) : 1.0;
           sumIllumination += w * loadHistoryIllumination(q).xyz;
           sumAlbedo += w * historyAlbedo.xyz;

@@ -67,6 +67,12 @@ covered=$(sed -nE 's/^  (just disoccluded|history [0-9+-]+ frames).* ([0-9]+) pi
   awk '{ n += $1 } END { print n }')
 surface=$(sed -nE 's/^last frame of the pan against a 32 spp reference, the ([0-9]+) pixels with a surface.*/\1/p' "$work/pan")
 [ "$covered" -eq "$surface" ] && [ "$surface" -gt 512 ]
+# Settled pixels: the denoised frame is at least twice as close to the
+# reference as the raw one. A pan slower than half a pixel per frame once
+# dragged the light's emission along behind its edge (denoised 3x worse
+# than raw here).
+settled=$(sed -nE 's/^  history 5\+ frames +[0-9]+ pixels: ([0-9.e+-]+) \/ ([0-9.e+-]+)$/\1 \2/p' "$work/pan")
+awk -v r="${settled% *}" -v d="${settled#* }" 'BEGIN { exit !(d < 0.5 * r) }'
 if "$penumbra" bench --size 16x16 --frames 1 --camera-pan 0.01 2> "$work/pan-err"; then exit 1; fi
 grep -q "^error: --camera-pan: the camera path measures the denoiser" "$work/pan-err"
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
