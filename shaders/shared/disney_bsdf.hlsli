@@ -335,8 +335,13 @@ BsdfSample disneyNoSample() {
   return s;
 }
 
-// Samples wi for wo with three uniform numbers.
-BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float u2) {
+// The first half of disneySample: the lobe and direction that three
+// uniform numbers choose. A delta lobe's sample is complete (isDelta, its
+// weight); otherwise s.wi is set and disneyFinishSample completes it with
+// disneyEval(m, woIn, s.wi). The split lets the path tracer evaluate this
+// direction and its light sample's at one call site of disneyEval (every
+// call site is a copy of it in the compiled kernel).
+BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float u1, float u2) {
   BsdfSample s = disneyNoSample();
   float side = woIn.z < 0.0 ? -1.0 : 1.0;
   float3 wo = float3(woIn.x, woIn.y, woIn.z * side);
@@ -419,13 +424,24 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
   }
 
   if (wi.z == 0.0) return disneyNoSample();
-  float3 wiOut = float3(wi.x, wi.y, wi.z * side);
-  BsdfEval e = disneyEval(m, woIn, wiOut);
-  if (e.pdf <= 0.0 || !(e.pdf < 1e30)) return disneyNoSample();
-  s.wi = wiOut;
-  s.pdf = e.pdf;
-  s.weight = e.f * (abs(wi.z) / e.pdf);
+  s.wi = float3(wi.x, wi.y, wi.z * side);
   return s;
+}
+
+// A non-delta sample of disneySampleDirection completed with `e`, the
+// BSDF's value and density at its direction.
+BsdfSample disneyFinishSample(BsdfSample s, BsdfEval e) {
+  if (e.pdf <= 0.0 || !(e.pdf < 1e30)) return disneyNoSample();
+  s.pdf = e.pdf;
+  s.weight = e.f * (abs(s.wi.z) / e.pdf);
+  return s;
+}
+
+// Samples wi for wo with three uniform numbers.
+BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float u2) {
+  BsdfSample s = disneySampleDirection(m, woIn, u0, u1, u2);
+  if (s.lobe == BSDF_LOBE_NONE || s.isDelta) return s;
+  return disneyFinishSample(s, disneyEval(m, woIn, s.wi));
 }
 
 // Whether the material has a perfectly specular lobe that sampling can pick.

@@ -120,43 +120,65 @@ ShadowRay pointLightShadowRay(PointLight light, DisneyMaterial material, Frame f
 }
 
 // The next direction at a path vertex by the strategy in `flags` (BSDF
-// sampling, or uniform / cosine directions for study), with the throughput
-// update and Russian roulette; false ends the path.
-bool scatter(FrameConstants c, DisneyMaterial material, Frame frame, float3 ng, float3 direction,
-             float3 wo, uint depth, inout Rng rng, inout float3 throughput, inout float previousPdf,
-             inout bool previousDelta, out float3 wiWorld) {
-  uint flags = c.sampling.w;
-  uint directions = (flags >> PT_DIRECTIONS_SHIFT) & 3u;
-  wiWorld = direction;
+// sampling, or uniform / cosine directions for study), before its BSDF
+// value: `bsdf.wi` waits for disneyEval unless the sample is delta or
+// none (lobe BSDF_LOBE_NONE). `fromBsdf`: its density is the BSDF's (from
+// the evaluation), else `bsdf.pdf` is the strategy's.
+struct ScatterDirection {
+  BsdfSample bsdf;
+  bool fromBsdf;
+};
+
+bool scatterNeedsEval(ScatterDirection d) { return d.bsdf.lobe != BSDF_LOBE_NONE && !d.bsdf.isDelta; }
+
+ScatterDirection scatterDirection(FrameConstants c, DisneyMaterial material, float3 wo, inout Rng rng) {
+  uint directions = (c.sampling.w >> PT_DIRECTIONS_SHIFT) & 3u;
   float u0 = rngNext(rng);
   float u1 = rngNext(rng);
   float u2 = rngNext(rng);
-  BsdfSample s;
-  if (directions == PT_DIRECTIONS_BSDF || disneyHasDeltaLobe(material)) {
-    s = disneySample(material, wo, u0, u1, u2);
-  } else {
-    s = disneyNoSample();
-    float3 wiLocal;
-    float pdf;
-    if (directions == PT_DIRECTIONS_UNIFORM) {
-      // The hemisphere of wo, or the whole sphere if the material transmits.
-      wiLocal = sampleUniformSphere(u1, u2);
-      pdf = 0.25 * kInvPi;
-      if (material.specTrans <= 0.0 || material.metallic >= 1.0) {
-        wiLocal.z = wo.z > 0.0 ? abs(wiLocal.z) : -abs(wiLocal.z);
-        pdf = 0.5 * kInvPi;
-      }
-    } else {
-      wiLocal = sampleCosineHemisphere(u1, u2);
-      wiLocal.z = wo.z > 0.0 ? wiLocal.z : -wiLocal.z;
-      pdf = cosineHemispherePdf(abs(wiLocal.z));
+  ScatterDirection d;
+  d.fromBsdf = directions == PT_DIRECTIONS_BSDF || disneyHasDeltaLobe(material);
+  if (d.fromBsdf) {
+    d.bsdf = disneySampleDirection(material, wo, u0, u1, u2);
+    return d;
+  }
+  d.bsdf = disneyNoSample();
+  float3 wiLocal;
+  float pdf;
+  if (directions == PT_DIRECTIONS_UNIFORM) {
+    // The hemisphere of wo, or the whole sphere if the material transmits.
+    wiLocal = sampleUniformSphere(u1, u2);
+    pdf = 0.25 * kInvPi;
+    if (material.specTrans <= 0.0 || material.metallic >= 1.0) {
+      wiLocal.z = wo.z > 0.0 ? abs(wiLocal.z) : -abs(wiLocal.z);
+      pdf = 0.5 * kInvPi;
     }
-    if (pdf > 0.0 && wiLocal.z != 0.0) {
-      BsdfEval e = disneyEval(material, wo, wiLocal);
-      s.wi = wiLocal;
-      s.pdf = pdf;
-      s.weight = e.f * (abs(wiLocal.z) / pdf);
-      s.lobe = BSDF_LOBE_DIFFUSE;
+  } else {
+    wiLocal = sampleCosineHemisphere(u1, u2);
+    wiLocal.z = wo.z > 0.0 ? wiLocal.z : -wiLocal.z;
+    pdf = cosineHemispherePdf(abs(wiLocal.z));
+  }
+  if (pdf > 0.0 && wiLocal.z != 0.0) {
+    d.bsdf.wi = wiLocal;
+    d.bsdf.pdf = pdf;
+    d.bsdf.lobe = BSDF_LOBE_DIFFUSE;
+  }
+  return d;
+}
+
+// The scatter completed (`e`: the BSDF at d.bsdf.wi, if it needed one),
+// with the throughput update and Russian roulette; false ends the path.
+bool scatter(FrameConstants c, ScatterDirection d, BsdfEval e, Frame frame, float3 ng, float3 direction,
+             float3 wo, uint depth, inout Rng rng, inout float3 throughput, inout float previousPdf,
+             inout bool previousDelta, out float3 wiWorld) {
+  uint flags = c.sampling.w;
+  wiWorld = direction;
+  BsdfSample s = d.bsdf;
+  if (scatterNeedsEval(d)) {
+    if (d.fromBsdf) {
+      s = disneyFinishSample(s, e);
+    } else {
+      s.weight = e.f * (abs(s.wi.z) / s.pdf);
     }
   }
   if (s.lobe == BSDF_LOBE_NONE || !(maxComponent(s.weight) > 0.0)) return false;
@@ -350,36 +372,62 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     return false;
   }
 
+  // The area light's sample and the bounce's direction are drawn first (in
+  // that order), then the BSDF is evaluated for both at one call site.
+  bool lightSampled = false;
+  float3 lightWi = float3(0.0, 0.0, 1.0);  // world
+  float3 lightWiLocal = float3(0.0, 0.0, 1.0);
+  float lightDistance = 0.0;
+  float cosAtLight = 0.0;
+  LightSample light;
+  light.position = zero3();
+  light.normal = float3(0.0, 0.0, 1.0);
+  light.radiance = zero3();
+  light.pdfArea = 0.0;
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
   if (useNee && c.lights.x > 0u) {
     float u0 = rngNext(p.rng);
     float u1 = rngNext(p.rng);
     float u2 = rngNext(p.rng);
-    LightSample light = sampleEmissiveTriangles(c.lights.x, u0, u1, u2);
+    light = sampleEmissiveTriangles(c.lights.x, u0, u1, u2);
     float3 toLight = light.position - hit.position;
-    float distance = length(toLight);
-    float3 wi = toLight / max(distance, 1e-30);
-    float cosAtLight = -dot(light.normal, wi);
-    float3 wiLocal = frameToLocal(frame, wi);
-    if (cosAtLight > 0.0 && distance > 0.0 && wiLocal.z != 0.0 &&
-        shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z)) {
-      BsdfEval e = disneyEval(material, wo, wiLocal);
-      if (maxComponent(e.f) > 0.0) {
-        float3 spawn = offsetRayOrigin(hit.position, dot(wi, ng) > 0.0 ? ng : -ng);
-        // End the shadow ray just off the light's surface, on the lit side.
-        float3 target = offsetRayOrigin(light.position, light.normal);
-        float3 shadowDir = target - spawn;
-        float shadowLength = length(shadowDir);
-        if (shadowLength > 0.0) {
-          float lightPdf = areaToSolidAnglePdf(light.pdfArea, distance, cosAtLight);
-          float weight = useMis ? misWeight(flags, lightPdf, e.pdf) : 1.0;
-          shadow.origin = spawn;
-          shadow.direction = shadowDir / shadowLength;
-          shadow.tMax = shadowLength;
-          shadow.contribution = clampContribution(
-              p.throughput * e.f * light.radiance * (abs(wiLocal.z) * weight / lightPdf), clampLimit);
-        }
-      }
+    lightDistance = length(toLight);
+    lightWi = toLight / max(lightDistance, 1e-30);
+    cosAtLight = -dot(light.normal, lightWi);
+    lightWiLocal = frameToLocal(frame, lightWi);
+    lightSampled = cosAtLight > 0.0 && lightDistance > 0.0 && lightWiLocal.z != 0.0 &&
+                   shadingConsistent(ng, -direction, lightWi, wo.z, lightWiLocal.z);
+  }
+#endif
+  ScatterDirection scatterDir = scatterDirection(c, material, wo, p.rng);
+  BsdfEval lightEval;
+  lightEval.f = zero3();
+  lightEval.pdf = 0.0;
+  BsdfEval scatterEval = lightEval;
+  uint lastEval = scatterNeedsEval(scatterDir) ? 2u : 1u;
+  for (uint k = lightSampled ? 0u : 1u; k < lastEval; k += 1u) {
+    BsdfEval e = disneyEval(material, wo, k == 0u ? lightWiLocal : scatterDir.bsdf.wi);
+    if (k == 0u) {
+      lightEval = e;
+    } else {
+      scatterEval = e;
+    }
+  }
+#if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
+  if (lightSampled && maxComponent(lightEval.f) > 0.0) {
+    float3 spawn = offsetRayOrigin(hit.position, dot(lightWi, ng) > 0.0 ? ng : -ng);
+    // End the shadow ray just off the light's surface, on the lit side.
+    float3 target = offsetRayOrigin(light.position, light.normal);
+    float3 shadowDir = target - spawn;
+    float shadowLength = length(shadowDir);
+    if (shadowLength > 0.0) {
+      float lightPdf = areaToSolidAnglePdf(light.pdfArea, lightDistance, cosAtLight);
+      float weight = useMis ? misWeight(flags, lightPdf, lightEval.pdf) : 1.0;
+      shadow.origin = spawn;
+      shadow.direction = shadowDir / shadowLength;
+      shadow.tMax = shadowLength;
+      shadow.contribution = clampContribution(
+          p.throughput * lightEval.f * light.radiance * (abs(lightWiLocal.z) * weight / lightPdf), clampLimit);
     }
   }
 #endif
@@ -391,8 +439,8 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
 #endif
 
   float3 wiWorld;
-  bool continues = scatter(c, material, frame, ng, direction, wo, p.depth, p.rng, p.throughput, p.previousPdf,
-                           p.previousDelta, wiWorld);
+  bool continues = scatter(c, scatterDir, scatterEval, frame, ng, direction, wo, p.depth, p.rng, p.throughput,
+                           p.previousPdf, p.previousDelta, wiWorld);
   bounce.origin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
   bounce.direction = wiWorld;
   if (p.guidesOpen && !(continues && p.previousDelta)) guides = closeGuides(p, guideAlbedo, guideNormal);
