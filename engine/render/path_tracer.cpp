@@ -37,11 +37,8 @@ rhi::rt::AffineTransform toAffine(const Matrix& m) {
 
 // InstanceData for a mesh instance: the TLAS transform and its inverse (in
 // double, so the inverse is as exact as float storage allows), as rows.
-gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
-                               uint32_t firstEmissiveTriangle, const glm::dmat4& objectToWorld) {
+void placeInstance(gpu::InstanceData& d, const glm::dmat4& objectToWorld) {
   const glm::dmat4 inverse = glm::inverse(objectToWorld);
-  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {}, {},
-                      {},         {},          {}};
   gpu::float4* forward[3] = {&d.objectToWorld0, &d.objectToWorld1, &d.objectToWorld2};
   gpu::float4* backward[3] = {&d.worldToObject0, &d.worldToObject1, &d.worldToObject2};
   for (int row = 0; row < 3; ++row) {  // glm is column-major: m[column][row]
@@ -50,6 +47,13 @@ gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32
     *backward[row] = {float(inverse[0][row]), float(inverse[1][row]), float(inverse[2][row]),
                       float(inverse[3][row])};
   }
+}
+
+gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
+                               uint32_t firstEmissiveTriangle, const glm::dmat4& objectToWorld) {
+  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {}, {},
+                      {},         {},          {}};
+  placeInstance(d, objectToWorld);
   return d;
 }
 
@@ -136,10 +140,16 @@ rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& 
 // 100 um under its ceiling); on a grid, cameras that move a little keep the
 // origin and render exactly what they rendered, and a scene near the world's
 // origin renders in world space.
+constexpr double kRenderOriginGrid = 64.0;
 glm::dvec3 renderOriginNear(const glm::dvec3& position) {
-  constexpr double kGrid = 64.0;
-  return glm::round(position / kGrid) * kGrid;
+  return glm::round(position / kRenderOriginGrid) * kRenderOriginGrid;
 }
+
+// How far the camera may move from render space's origin before the origin
+// follows it (PathTracer::setCamera): within 64 m floats still resolve 4 um,
+// and the new origin, the grid point nearest the camera, is at most 55 m
+// from it, so a camera has to travel at least 9 m before it moves again.
+constexpr double kRebaseDistance = 64.0;
 
 gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
   gpu::PointLight p;
@@ -150,6 +160,76 @@ gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& ren
   p.spot = toFloat4(glm::normalize(l.direction),
                     spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
   return p;
+}
+
+// An instance of an emissive mesh, as the emissive-triangle table needs it:
+// kept in world space so that the table can be placed again about another
+// render origin (PathTracer::rebase).
+struct EmitterSource {
+  glm::dmat4 objectToWorld{1.0};
+  bool mirrored = false;             // the transform reverses the winding
+  std::vector<glm::vec3> positions;  // object space, three per triangle
+  std::vector<glm::vec2> uvs;        // the emission texture's, three per triangle
+  glm::vec3 emission{0.0f};
+  float emissionTextureBits = 0.0f;  // PT_NO_TEXTURE or the texture's index, as float bits
+  double luminance = 0.0;            // of the mean emission: power = area x luminance
+};
+
+// The emissive triangles of every source in render space (toRenderSpace),
+// chosen for NEE in proportion to power (area x luminance); `sampledCount`
+// becomes the number NEE samples (0 when no triangle has power).
+std::vector<gpu::EmissiveTriangle> placeEmitters(const std::vector<EmitterSource>& sources,
+                                                 const glm::dmat4& toRenderSpace,
+                                                 uint32_t& sampledCount) {
+  std::vector<gpu::EmissiveTriangle> emissive;
+  std::vector<double> power;
+  for (const EmitterSource& source : sources) {
+    const glm::dmat4 objectToRender = toRenderSpace * source.objectToWorld;
+    for (size_t t = 0; t < source.positions.size(); t += 3) {
+      glm::vec3 p[3];
+      glm::vec2 uv[3];
+      for (size_t k = 0; k < 3; ++k) {
+        p[k] = glm::vec3(objectToRender * glm::dvec4(glm::dvec3(source.positions[t + k]), 1.0));
+        uv[k] = source.uvs[t + k];
+      }
+      // A mirroring transform reverses the winding of the placed corners;
+      // swapping two keeps the emitting side the mesh's front.
+      if (source.mirrored) {
+        std::swap(p[1], p[2]);
+        std::swap(uv[1], uv[2]);
+      }
+      const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+      emissive.push_back({toFloat4(p[0]),
+                          toFloat4(p[1], area),
+                          toFloat4(p[2], source.emissionTextureBits),
+                          toFloat4(source.emission),
+                          {uv[0].x, uv[0].y, uv[1].x, uv[1].y},
+                          {uv[2].x, uv[2].y, 0.0f, 0.0f}});
+      power.push_back(area > 0.0f ? area * source.luminance : 0.0);
+    }
+  }
+  double totalPower = 0;
+  for (double p : power) totalPower += p;
+  double cumulative = 0;
+  for (size_t i = 0; i < emissive.size(); ++i) {
+    const double pmf = totalPower > 0 ? power[i] / totalPower : 0.0;
+    cumulative += pmf;
+    emissive[i].p0.w = float(pmf);
+    emissive[i].radiance.w = float(cumulative);
+  }
+  // Degenerate (zero-area) emitters get probability 0 and are never chosen;
+  // the last cumulative value is exactly 1 so the search always ends in range.
+  if (!emissive.empty() && totalPower > 0) {
+    for (size_t i = emissive.size(); i-- > 0;) {
+      if (emissive[i].p0.w > 0) {
+        emissive[i].radiance.w = 1.0f;
+        for (size_t j = i + 1; j < emissive.size(); ++j) emissive[j].radiance.w = 1.0f;
+        break;
+      }
+    }
+  }
+  sampledCount = totalPower > 0 ? uint32_t(emissive.size()) : 0;
+  return emissive;
 }
 
 }  // namespace
@@ -189,6 +269,24 @@ struct PathTracer::SceneBuffers {
   rhi::BufferHandle implicits, implicitAabbs;
   std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
   std::vector<ImplicitFamily> implicitFamilies;                  // hit group 1 + i is family i's
+};
+
+// What of the scene depends on where render space's origin is, kept in world
+// space (double) so that rebase() can place it again about another origin
+// without the scene: everything but the meshes' BLASes, which are in object
+// space (or about their merge group's centre).
+struct PathTracer::WorldPlacement {
+  std::vector<gpu::InstanceData> instances;  // as uploaded: mesh instances, then implicit objects
+  std::vector<glm::dmat4> meshInstanceToWorld;  // object to world of instances[i], i < their count
+  std::vector<EmitterSource> emitters;
+  std::vector<scene::PointLight> pointLights;
+  std::vector<scene::ImplicitObject> implicits;
+  uint32_t firstImplicitInstance = 0;
+  // The TLAS: the meshes' instances first (placed by meshTlasInstanceToWorld),
+  // then one per implicit family (identity: their objects carry their own
+  // transforms, and their AABBs are in render space).
+  std::vector<rhi::rt::InstanceDesc> tlasInstances;
+  std::vector<glm::dmat4> meshTlasInstanceToWorld;
 };
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
@@ -262,6 +360,7 @@ glm::dmat4 PathTracer::worldToRenderSpace() const {
 
 void PathTracer::uploadScene(const scene::Scene& scene) {
   scene_ = std::make_unique<SceneBuffers>();
+  placement_ = std::make_unique<WorldPlacement>();
   std::vector<gpu::float4> vertices;
   std::vector<uint32_t> indices;
   std::vector<uint32_t> firstVertex, firstIndex;
@@ -289,6 +388,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   for (const auto& inst : scene.instances)
     drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
   for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
+  placement_->pointLights = scene.pointLights;
   std::vector<gpu::PointLight> pointLights;
   for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
   pointLightCount_ = uint32_t(pointLights.size());
@@ -301,8 +401,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   // Emitters: render-space triangles of every instance of an emissive mesh,
   // chosen for NEE in proportion to power (area x luminance).
   std::vector<gpu::InstanceData> instances;
-  std::vector<gpu::EmissiveTriangle> emissive;
-  std::vector<double> power;
+  uint32_t emissiveTriangles = 0;
   const MeshInstanceOrder order = meshInstanceOrder(scene);
   gpuToSceneInstance_ = order.sceneInstance;
   for (uint32_t sceneIndex : order.sceneInstance) {
@@ -316,10 +415,11 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
                               (mesh.tangents.empty() ? 0u : PT_VERTEX_TANGENTS) |
                               (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS);
     if (material.isEmissive()) {
-      data.firstEmissiveTriangle = uint32_t(emissive.size());
-      // A mirroring transform reverses the winding of the world-space corners;
-      // swapping two keeps the emitting side the mesh's front.
-      const bool mirrored = glm::determinant(glm::dmat3(inst.transform)) < 0.0;
+      data.firstEmissiveTriangle = emissiveTriangles;
+      emissiveTriangles += uint32_t(mesh.indices.size() / 3);
+      EmitterSource source;
+      source.objectToWorld = inst.transform;
+      source.mirrored = glm::determinant(glm::dmat3(inst.transform)) < 0.0;
       // A textured emitter is chosen by its mean radiance; the shader
       // multiplies the texture in where it samples.
       const bool textured = material.emissiveTexture != scene::Material::kNoTexture;
@@ -328,35 +428,19 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
       const glm::vec3 meanEmission =
           textured ? material.emission * meanLinearColor(scene.textures[emissionRef->texture])
                    : material.emission;
-      const double lum =
+      source.luminance =
           0.2126 * meanEmission.x + 0.7152 * meanEmission.y + 0.0722 * meanEmission.z;
+      source.emission = material.emission;
+      const uint32_t emissionTexture = textured ? material.emissiveTexture : PT_NO_TEXTURE;
+      std::memcpy(&source.emissionTextureBits, &emissionTexture, sizeof(float));
       const auto& uvSet = emissionRef && emissionRef->texCoord == 1 ? mesh.uv1 : mesh.uv0;
-      uint32_t emissionTexture = textured ? material.emissiveTexture : PT_NO_TEXTURE;
-      float emissionTextureBits;
-      std::memcpy(&emissionTextureBits, &emissionTexture, sizeof(float));
-      for (size_t t = 0; t < mesh.indices.size(); t += 3) {
-        glm::vec3 p[3];
-        glm::vec2 uv[3];
-        for (int k = 0; k < 3; ++k) {
-          const uint32_t vertex = mesh.indices[t + k];
-          p[k] = glm::vec3(objectToRender * glm::dvec4(glm::dvec3(mesh.positions[vertex]), 1.0));
-          uv[k] = uvSet.empty() ? glm::vec2(0.0f) : uvSet[vertex];
-        }
-        if (mirrored) {
-          std::swap(p[1], p[2]);
-          std::swap(uv[1], uv[2]);
-        }
-        const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-        gpu::EmissiveTriangle tri{toFloat4(p[0]),
-                                  toFloat4(p[1], area),
-                                  toFloat4(p[2], emissionTextureBits),
-                                  toFloat4(material.emission),
-                                  {uv[0].x, uv[0].y, uv[1].x, uv[1].y},
-                                  {uv[2].x, uv[2].y, 0.0f, 0.0f}};
-        emissive.push_back(tri);
-        power.push_back(area > 0.0f ? area * lum : 0.0);
+      for (uint32_t vertex : mesh.indices) {
+        source.positions.push_back(mesh.positions[vertex]);
+        source.uvs.push_back(uvSet.empty() ? glm::vec2(0.0f) : uvSet[vertex]);
       }
+      placement_->emitters.push_back(std::move(source));
     }
+    placement_->meshInstanceToWorld.push_back(inst.transform);
     instances.push_back(data);
   }
   for (const auto& object : scene.implicits) {
@@ -364,27 +448,9 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     instances.push_back(instanceData(
         0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION, glm::dmat4(1.0)));
   }
-  double totalPower = 0;
-  for (double p : power) totalPower += p;
-  double cumulative = 0;
-  for (size_t i = 0; i < emissive.size(); ++i) {
-    const double pmf = totalPower > 0 ? power[i] / totalPower : 0.0;
-    cumulative += pmf;
-    emissive[i].p0.w = float(pmf);
-    emissive[i].radiance.w = float(cumulative);
-  }
-  // Degenerate (zero-area) emitters get probability 0 and are never chosen;
-  // the last cumulative value is exactly 1 so the search always ends in range.
-  if (!emissive.empty() && totalPower > 0) {
-    for (size_t i = emissive.size(); i-- > 0;) {
-      if (emissive[i].p0.w > 0) {
-        emissive[i].radiance.w = 1.0f;
-        for (size_t j = i + 1; j < emissive.size(); ++j) emissive[j].radiance.w = 1.0f;
-        break;
-      }
-    }
-  }
-  emissiveTriangleCount_ = totalPower > 0 ? uint32_t(emissive.size()) : 0;
+  placement_->instances = instances;
+  const std::vector<gpu::EmissiveTriangle> emissive =
+      placeEmitters(placement_->emitters, toRenderSpace, emissiveTriangleCount_);
 
   using rhi::BufferUsage;
   auto& s = *scene_;
@@ -474,7 +540,8 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     s.mergedBottomLevels.push_back(device_.createAccelStruct(blas));
     cmd->buildBottomLevelAccelStruct(s.mergedBottomLevels.back().get());
     rhi::rt::InstanceDesc d;
-    d.transform = toAffine(glm::translate(glm::dmat4(1.0), group.centre - renderOrigin_));
+    placement_->meshTlasInstanceToWorld.push_back(glm::translate(glm::dmat4(1.0), group.centre));
+    d.transform = toAffine(toRenderSpace * placement_->meshTlasInstanceToWorld.back());
     d.instanceID = group.first;  // + geometry index: the GPU instance (triangle.rchit)
     d.flags = rhi::rt::InstanceTriangleCullDisable;
     d.bottomLevelAddress = s.mergedBottomLevels.back()->deviceAddress();
@@ -492,6 +559,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
       cmd->buildBottomLevelAccelStruct(bottomLevel.get());
     }
     rhi::rt::InstanceDesc d;
+    placement_->meshTlasInstanceToWorld.push_back(inst.transform);
     d.transform = toAffine(toRenderSpace * inst.transform);
     d.instanceID = gpuIndex;
     d.flags = rhi::rt::InstanceTriangleCullDisable;
@@ -499,6 +567,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     tlasInstances.push_back(d);
   }
   uploadImplicits(scene, tlasInstances);
+  placement_->tlasInstances = tlasInstances;
   cmd->endTimerQuery(bottomLevelTimer.get());
   rhi::rt::AccelStructDesc tlas;
   tlas.isTopLevel = true;
@@ -521,10 +590,9 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
 void PathTracer::uploadImplicits(const scene::Scene& scene,
                                  std::vector<rhi::rt::InstanceDesc>& tlasInstances) {
   auto& s = *scene_;
-  // In render space, as the meshes (uploadScene).
-  std::vector<scene::ImplicitObject> objects = scene.implicits;
-  for (auto& object : objects) object.transform = worldToRenderSpace() * object.transform;
-  const ImplicitLayout layout = layoutImplicits(objects, uint32_t(scene.instances.size()));
+  placement_->implicits = scene.implicits;
+  placement_->firstImplicitInstance = uint32_t(scene.instances.size());
+  const ImplicitLayout layout = implicitLayoutInRenderSpace();
   s.implicits = makeStorageBuffer(device_, layout.data, rhi::BufferUsage::None, "implicit objects");
   s.implicitAabbs = makeStorageBuffer(device_, layout.aabbs,
                                       rhi::BufferUsage::AccelStructBuildInput, "implicit AABBs");
@@ -660,7 +728,63 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
 
 void PathTracer::setCamera(const scene::Camera& camera) {
   camera_ = camera;
+  if (glm::length(camera.position - renderOrigin_) > kRebaseDistance)
+    rebase(renderOriginNear(camera.position));
   resetAccumulation();
+}
+
+ImplicitLayout PathTracer::implicitLayoutInRenderSpace() const {
+  std::vector<scene::ImplicitObject> objects = placement_->implicits;
+  for (auto& object : objects) object.transform = worldToRenderSpace() * object.transform;
+  return layoutImplicits(objects, placement_->firstImplicitInstance);
+}
+
+void PathTracer::rebase(const glm::dvec3& origin) {
+  // Frames in flight still read the buffers and the TLAS rewritten here.
+  device_.waitForIdle();
+  renderOrigin_ = origin;
+  const glm::dmat4 toRenderSpace = worldToRenderSpace();
+  WorldPlacement& w = *placement_;
+  // The same computations as uploadScene's, so a rebased tracer renders
+  // exactly what one built with its camera here would.
+  std::vector<gpu::InstanceData> instances = w.instances;
+  for (size_t i = 0; i < w.meshInstanceToWorld.size(); ++i)
+    placeInstance(instances[i], toRenderSpace * w.meshInstanceToWorld[i]);
+  const std::vector<gpu::EmissiveTriangle> emissive =
+      placeEmitters(w.emitters, toRenderSpace, emissiveTriangleCount_);
+  std::vector<gpu::PointLight> pointLights;
+  for (const auto& l : w.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
+  const ImplicitLayout implicits = implicitLayoutInRenderSpace();
+  for (size_t i = 0; i < w.meshTlasInstanceToWorld.size(); ++i)
+    w.tlasInstances[i].transform = toAffine(toRenderSpace * w.meshTlasInstanceToWorld[i]);
+
+  auto& s = *scene_;
+  auto* cmd = commandList_.get();
+  cmd->open();
+  cmd->writeBuffer(s.instances.get(), instances.data(),
+                   instances.size() * sizeof(gpu::InstanceData));
+  if (!emissive.empty())
+    cmd->writeBuffer(s.emissive.get(), emissive.data(),
+                     emissive.size() * sizeof(gpu::EmissiveTriangle));
+  if (!pointLights.empty())
+    cmd->writeBuffer(s.pointLights.get(), pointLights.data(),
+                     pointLights.size() * sizeof(gpu::PointLight));
+  if (!implicits.data.empty()) {
+    cmd->writeBuffer(s.implicits.get(), implicits.data.data(),
+                     implicits.data.size() * sizeof(gpu::ImplicitData));
+    cmd->writeBuffer(s.implicitAabbs.get(), implicits.aabbs.data(),
+                     implicits.aabbs.size() * sizeof(implicits.aabbs[0]));
+  }
+  // In place: the binding sets keep pointing at the same TLAS, and the
+  // meshes' BLASes are not touched.
+  for (auto& bottomLevel : s.implicitBottomLevels)
+    cmd->buildBottomLevelAccelStruct(bottomLevel.get());
+  cmd->buildTopLevelAccelStruct(s.topLevel.get(), w.tlasInstances.data(),
+                                uint32_t(w.tlasInstances.size()));
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  ++rebaseCount_;
 }
 
 bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) {

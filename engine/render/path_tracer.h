@@ -15,6 +15,8 @@
 
 namespace penumbra::render {
 
+struct ImplicitLayout;  // render/implicit_geometry.h
+
 enum class Integrator { Path, Whitted };
 
 // How the path tracer finds light (for study and comparison; `Mis` is the
@@ -154,7 +156,13 @@ class PathTracer {
   // that the image started over since it last looked.
   uint64_t accumulationGeneration() const { return accumulationGeneration_; }
   // Moves the camera (the scene's until then) and resets the accumulation.
+  // A camera more than 64 m from renderOrigin() takes the origin with it
+  // (the grid point nearest it): the instances, emitters, point lights and
+  // implicit objects are placed again and the TLAS rebuilt, the meshes'
+  // BLASes kept; the image is the one a tracer built with this camera makes.
   void setCamera(const scene::Camera& camera);
+  // How often setCamera moved the origin.
+  uint32_t rebaseCount() const { return rebaseCount_; }
   const scene::Camera& camera() const { return camera_; }
   // Replaces the materials (same count and order as the scene's) and resets
   // the accumulation. Rebuilds the pipelines when the effects they call for
@@ -201,7 +209,10 @@ class PathTracer {
 
  private:
   struct SceneBuffers;
+  struct WorldPlacement;
   void uploadScene(const scene::Scene& scene);
+  void rebase(const glm::dvec3& origin);
+  ImplicitLayout implicitLayoutInRenderSpace() const;
   void uploadImplicits(const scene::Scene& scene,
                        std::vector<rhi::rt::InstanceDesc>& tlasInstances);
   void createAccumulation();
@@ -242,6 +253,8 @@ class PathTracer {
   AccelStructBuildTimes accelStructBuildTimes_;
   glm::vec3 ambient_{0.0f};
   std::unique_ptr<SceneBuffers> scene_;
+  std::unique_ptr<WorldPlacement> placement_;
+  uint32_t rebaseCount_ = 0;
   rhi::TextureHandle accumulation_;
   GuideBuffers guides_;
   rhi::BufferHandle rayCounter_;

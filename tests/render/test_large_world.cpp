@@ -239,3 +239,63 @@ TEST_CASE(
   checkOffsets(scene::loadScene(test::dataPath("scenes/textured-room.json")), 32, 16,
                {{1e4, 1e4, 1e4}, {-1e6, 2e5, 1e6}});
 }
+
+TEST_CASE(
+    "large worlds: a normal-mapped, textured glTF mesh renders the same image 1e4 and 1e6 m away",
+    "[render][gpu][precision]") {
+  checkOffsets(scene::loadScene(test::dataPath("gltf/textures.gltf")), 32, 16,
+               {{1e4, 1e4, 1e4}, {-1e6, 2e5, 1e6}});
+}
+
+namespace {
+
+image::Image renderWith(render::PathTracer& tracer, uint32_t spp) {
+  render::PathTracerSettings settings;
+  settings.seed = 1;
+  tracer.resetAccumulation();
+  tracer.renderFrame(settings, spp);
+  return tracer.readback();
+}
+
+bool sameImage(const image::Image& a, const image::Image& b) {
+  return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
+}
+
+}  // namespace
+
+// The viewer's camera flies: the render origin must follow it (the scene
+// placed again about the new origin, the meshes' BLASes kept), or a scene
+// 14 km from where the flight started renders as it would without
+// camera-relative rendering (the Cornell box loses its light from 1e3 m on).
+TEST_CASE(
+    "large worlds: a camera that flies 14 km takes the render origin along and renders what a "
+    "tracer built there renders",
+    "[render][gpu][precision]") {
+  auto device = test::makeTestDevice();
+  const glm::dvec3 away(1e4, -2e3, 1e4);
+  for (const char* name : {"cornell-box", "implicit-surfaces"}) {
+    INFO(name);
+    const scene::Scene here = translated(scene::loadScene(name), away);
+    scene::Scene start = here;
+    start.camera.position -= away;  // near the world's origin, 14 km from the scene
+    render::PathTracer flown(*device, start, 24, 24);
+    REQUIRE(glm::length(flown.renderOrigin()) < 64.0);
+    flown.setCamera(here.camera);
+    CHECK(flown.rebaseCount() == 1u);
+    CHECK(glm::length(flown.renderOrigin() - here.camera.position) < 64.0);
+
+    render::PathTracer builtHere(*device, here, 24, 24);
+    CHECK(flown.renderOrigin() == builtHere.renderOrigin());
+    const image::Image expected = renderWith(builtHere, 4);
+    CHECK(image::countNonFinite(expected) == 0);
+    CHECK(meanLuminance(expected) > 0.0);
+    CHECK(sameImage(renderWith(flown, 4), expected));
+
+    // A few metres keep the origin: nothing is placed again.
+    scene::Camera nudged = here.camera;
+    nudged.position += glm::dvec3(3.0, 0.5, -2.0);
+    flown.setCamera(nudged);
+    CHECK(flown.rebaseCount() == 1u);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
