@@ -14,6 +14,7 @@ Command addRenderCommand(CLI::App& app);
 Command addDevicesCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addStudyCommand(CLI::App& app);
 // "512x512" -> (512, 512); penumbra::Error with the flag's name otherwise.
 std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text);
 

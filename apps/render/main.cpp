@@ -1,4 +1,4 @@
-// `penumbra`: the headless renderer (render, devices, compare, bench).
+// `penumbra`: the headless renderer (render, devices, compare, bench, study).
 #include <cstdio>
 #include <map>
 
@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   add(&app::addDevicesCommand);
   add(&app::addCompareCommand);
   add(&app::addBenchCommand);
+  add(&app::addStudyCommand);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -15,6 +15,7 @@
 #include "render/effect_set.h"
 #include "render/path_tracer.h"
 #include "render/render_job.h"
+#include "render/render_loop.h"
 #include "render/tonemapper.h"
 #include "scene/material_row.h"
 #include "scene/scene_loader.h"
@@ -217,28 +218,14 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   denoise.fireflyClamp = !o.noFireflyClamp;
   if (o.denoise != render::DenoiseMode::Off)
     denoiser = std::make_unique<render::Denoiser>(*device, width, height);
-  const scene::Camera camera = tracer.camera();
 
   Progress progress(job.spp);
-  double gpuSeconds = 0, denoiseSeconds = 0;
-  uint64_t rays = 0;
-  uint32_t done = 0;
-  while (done < job.spp) {
-    const uint32_t n = std::min(job.sppPerFrame, job.spp - done);
-    // The temporal denoiser integrates frames itself: each frame holds only
-    // its own samples (the same samples as without it).
-    if (o.denoise == render::DenoiseMode::Svgf) tracer.startNewMean(tracer.nextSampleIndex());
-    auto stats = tracer.renderFrame(settings, n);
-    gpuSeconds += stats.gpuSeconds;
-    rays += stats.rays;
-    done += n;
-    if (o.denoise == render::DenoiseMode::Svgf)
-      denoiseSeconds += denoiser->run(tracer, camera, n, denoise);
-    progress.update(done);
-  }
+  const render::RenderLoopResult loop =
+      render::renderSamples(tracer, denoiser.get(), settings, denoise, job.spp, job.sppPerFrame,
+                            [&](uint32_t done) { progress.update(done); });
   progress.finish();
-  if (o.denoise == render::DenoiseMode::Atrous)
-    denoiseSeconds += denoiser->run(tracer, camera, tracer.accumulatedSamples(), denoise);
+  const double gpuSeconds = loop.gpuSeconds, denoiseSeconds = loop.denoiseSeconds;
+  const uint64_t rays = loop.rays;
   const rhi::TextureHandle& result = denoiser ? denoiser->output() : tracer.accumulation();
 
   if (image::formatFromPath(o.out) == image::FileFormat::Exr) {

@@ -1,0 +1,417 @@
+// `penumbra study`: what accuracy costs in time, for one scene on one
+// device (engine/study, docs/ARCHITECTURE.md "Studies").
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "backend_factory.h"
+#include "commands.h"
+#include "image/image_io.h"
+#include "penumbra_commit.h"
+#include "progress.h"
+#include "render/render_job.h"
+#include "scene/scene_loader.h"
+#include "study/study_analysis.h"
+#include "study/study_results.h"
+#include "study/study_runner.h"
+#include "util/error.h"
+
+namespace penumbra::app {
+namespace {
+
+struct StudyOptions {
+  std::string scene = "cornell-box";
+  std::string size = "64x64";
+  std::string spp = "1,4,16,64";
+  std::string integrators = "path";
+  std::string strategies = "mis";
+  std::string heuristics = "power";
+  std::string maxDepths = "8";
+  std::string roulette = "on";
+  std::string clamps = "0";
+  std::string denoise = "off";
+  std::string pipelines = "specialized";
+  uint32_t seeds = 3;
+  uint32_t firstSeed = 1;
+  std::string reference;
+  uint32_t referenceSpp = 1024;
+  uint32_t referenceSeed = 1000003;
+  uint32_t referenceMaxDepth = 64;
+  double budgetMs = 33.3;
+  double targetRelMse = 0.0;
+  std::string out;
+  std::string analyze;
+  std::string backend = "vulkan";
+  int device = -1;
+  bool validation = false;
+};
+
+// A comma-separated list, each item through `parse`; one line naming the
+// flag and the item otherwise.
+template <class T, class Parse>
+std::vector<T> parseList(const std::string& flag, const std::string& text, Parse parse,
+                         const char* expected) {
+  std::vector<T> values;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    std::optional<T> v = parse(item);
+    if (!v) throw Error(fmt::format("{} '{}': '{}' is not {}", flag, text, item, expected));
+    values.push_back(*v);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
+
+std::optional<double> parseNumber(const std::string& s) {
+  size_t used = 0;
+  try {
+    const double v = std::stod(s, &used);
+    if (used == s.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+std::optional<uint32_t> parseCount(const std::string& s, uint32_t lo, uint32_t hi) {
+  const auto v = parseNumber(s);
+  if (!v || *v != std::floor(*v) || *v < lo || *v > hi) return std::nullopt;
+  return uint32_t(*v);
+}
+
+study::StudySpec makeSpec(const StudyOptions& o) {
+  study::StudySpec spec;
+  spec.spp = parseList<uint32_t>(
+      "--spp", o.spp, [](const std::string& s) { return parseCount(s, 1, 1u << 20); },
+      "a sample count 1..1048576");
+  spec.integrators = parseList<render::Integrator>(
+      "--integrator", o.integrators,
+      [](const std::string& s) { return render::parseIntegrator(s); },
+      "an integrator (path, whitted)");
+  spec.strategies = parseList<render::SamplingStrategy>(
+      "--strategy", o.strategies, [](const std::string& s) { return render::parseStrategy(s); },
+      "a strategy (uniform, cosine, bsdf, nee, mis)");
+  spec.heuristics = parseList<render::MisHeuristic>(
+      "--mis-heuristic", o.heuristics,
+      [](const std::string& s) { return render::parseMisHeuristic(s); },
+      "a MIS heuristic (power, balance)");
+  spec.maxDepths = parseList<uint32_t>(
+      "--max-depth", o.maxDepths, [](const std::string& s) { return parseCount(s, 0, 1024); },
+      "a depth 0..1024");
+  spec.russianRoulette = parseList<bool>(
+      "--russian-roulette", o.roulette,
+      [](const std::string& s) -> std::optional<bool> {
+        if (s == "on") return true;
+        if (s == "off") return false;
+        return std::nullopt;
+      },
+      "on or off");
+  spec.clamps = parseList<float>(
+      "--clamp", o.clamps,
+      [](const std::string& s) -> std::optional<float> {
+        const auto v = parseNumber(s);
+        if (!v || *v < 0) return std::nullopt;
+        return float(*v);
+      },
+      "a clamp >= 0 (0 = off)");
+  spec.denoise = parseList<render::DenoiseMode>(
+      "--denoise", o.denoise, [](const std::string& s) { return render::parseDenoiseMode(s); },
+      "a denoiser (off, atrous, svgf)");
+  spec.allEffects = parseList<bool>(
+      "--pipeline", o.pipelines,
+      [](const std::string& s) -> std::optional<bool> {
+        if (s == "specialized") return false;
+        if (s == "full") return true;
+        return std::nullopt;
+      },
+      "a pipeline (specialized, full)");
+  spec.seeds = o.seeds;
+  spec.firstSeed = o.firstSeed;
+  return spec;
+}
+
+// "mean +- half-width", scaled by `scale` (100 for percent); the mean alone
+// with one seed.
+std::string ci(const study::Estimate& e, const char* format, double scale = 1.0,
+               const char* unit = "") {
+  const std::string mean = fmt::format(fmt::runtime(format), e.mean * scale) + unit;
+  if (!std::isfinite(e.halfWidth)) return mean;
+  return mean + " +- " + fmt::format(fmt::runtime(format), std::abs(e.halfWidth * scale)) + unit;
+}
+
+// The answers, printed: the summaries, the Pareto front, the budget and
+// target-error answers, the convergence slopes and the biases.
+void printAnswers(const std::vector<study::PointSummary>& points, double budgetMs,
+                  double targetRelMse) {
+  fmt::print("{:<28} {:>6} {:>10} {:>24} {:>22} {:>7} {:>12}\n", "technique", "spp", "GPU ms",
+             "relMSE (95% CI)", "bias (95% CI)", "SSIM", "1/(relMSE ms)");
+  for (const auto& p : points)
+    fmt::print("{:<28} {:>6} {:>10.3f} {:>24} {:>22} {:>7.4f} {:>12.4g}\n", p.technique, p.spp,
+               p.gpuMs.mean, ci(p.relMse, "{:.3e}"), ci(p.bias, "{:.2f}", 100.0, "%"), p.ssim.mean,
+               p.efficiency());
+  auto name = [&](size_t i) {
+    return fmt::format("{} at {} spp ({:.3f} ms, relMSE {:.3e})", points[i].technique,
+                       points[i].spp, points[i].gpuMs.mean, points[i].relMse.mean);
+  };
+  fmt::print("Pareto front (no other point both faster and lower in error):\n");
+  for (size_t i : study::paretoFront(points)) fmt::print("  {}\n", name(i));
+  if (auto best = study::bestWithinBudget(points, budgetMs))
+    fmt::print("within {:g} ms: the lowest error is {}\n", budgetMs, name(*best));
+  else
+    fmt::print("within {:g} ms: no point of the study fits\n", budgetMs);
+  if (targetRelMse > 0) {
+    if (auto fastest = study::fastestForError(points, targetRelMse))
+      fmt::print("relMSE <= {:g}: the fastest is {}\n", targetRelMse, name(*fastest));
+    else
+      fmt::print("relMSE <= {:g}: no point of the study reaches it\n", targetRelMse);
+  }
+  fmt::print("convergence, relMSE ~ spp^slope (-1: unbiased Monte Carlo; flatter: bias left):\n");
+  for (const auto& s : study::convergenceSlopes(points))
+    fmt::print("  {:<28} slope {:+.3f} over {} spp values\n", s.technique, s.slope, s.points);
+  // The bias at each technique's largest spp, where noise hides it least.
+  for (const auto& p : points) {
+    bool largest = true;
+    for (const auto& q : points)
+      if (q.technique == p.technique && q.spp > p.spp) largest = false;
+    if (largest && p.bias.excludesZero())
+      fmt::print("biased: {} at {} spp: mean {:+.3f}% +- {:.3f}% (95% CI excludes 0)\n",
+                 p.technique, p.spp, 100.0 * p.bias.mean, 100.0 * p.bias.halfWidth);
+  }
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(fmt::format("{}: cannot read", path));
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Removes what a study wrote if it fails before its results are complete:
+// no partial output is left behind.
+class OutputGuard {
+ public:
+  void add(const std::filesystem::path& p) { written_.push_back(p); }
+  void keep() { written_.clear(); }
+  ~OutputGuard() {
+    std::error_code ignored;
+    for (const auto& p : written_) std::filesystem::remove(p, ignored);
+  }
+
+ private:
+  std::vector<std::filesystem::path> written_;
+};
+
+std::string fileSlug(const std::string& label, uint32_t spp) {
+  std::string slug;
+  for (char c : label) slug += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '_';
+  return fmt::format("{}-spp{}", slug, spp);
+}
+
+int runStudy(const StudyOptions& o, const CLI::App& cmd) {
+  if (!o.analyze.empty()) {
+    const auto rows = study::parseResultsCsv(readFile(o.analyze), o.analyze);
+    printAnswers(study::summarize(rows), o.budgetMs, o.targetRelMse);
+    return 0;
+  }
+  if (o.out.empty()) throw Error("study: --out DIR is required (where the results go)");
+  if (!(o.budgetMs > 0)) throw Error("--budget-ms: must be > 0");
+  if (cmd.count("--reference") && cmd.count("--reference-spp"))
+    throw Error("study: --reference and --reference-spp exclude each other");
+  // Everything that can fail on bad input fails before any rendering starts.
+  const study::StudySpec spec = makeSpec(o);
+  const std::vector<study::StudyPoint> points = study::expandStudy(spec);
+  const auto [width, height] = parseImageSize(o.size);
+  const scene::Scene scene = scene::loadScene(o.scene);
+  study::Reference reference;
+  if (!o.reference.empty()) {
+    reference.image = image::loadExr(o.reference);
+    reference.source = o.reference;
+    if (reference.image.width != width || reference.image.height != height)
+      throw Error(fmt::format("--reference '{}': {}x{}, the study renders {}x{}", o.reference,
+                              reference.image.width, reference.image.height, width, height));
+  } else {
+    study::checkReferenceIndependence(spec, o.referenceSeed);
+  }
+  const std::filesystem::path dir(o.out);
+  std::error_code ec;
+  std::filesystem::create_directories(dir / "images", ec);
+  if (ec) throw Error(fmt::format("--out '{}': cannot create it ({})", o.out, ec.message()));
+  OutputGuard written;
+
+  rhi::DeviceCreateInfo info;
+  info.adapterIndex = o.device;
+  info.validation = o.validation;
+  auto device = backends::createDevice(o.backend, info);
+  const auto& adapter = device->adapter();
+  fmt::print("device: {} ({}) via {}; commit {}\n", adapter.name, adapter.apiVersion,
+             device->backendName(), PENUMBRA_COMMIT);
+  fmt::print("scene: {}, {}x{}; {} points ({} techniques x {} spp values x {} seeds)\n", scene.name,
+             width, height, points.size(), points.size() / spec.spp.size() / spec.seeds,
+             spec.spp.size(), spec.seeds);
+  std::fflush(stdout);
+
+  study::StudyRunner runner(*device, scene, width, height);
+  uint64_t total = 0;
+  for (const auto& p : points) total += p.spp;
+  study::Technique referenceTechnique;
+  referenceTechnique.maxDepth = o.referenceMaxDepth;
+  const bool renderReference = o.reference.empty();
+  const uint32_t referenceSpp = (o.referenceSpp + 1) / 2 * 2;
+  if (renderReference) total += referenceSpp;
+  // The progress bar counts samples of every render, in millions if need be.
+  Progress progress(uint32_t(std::min<uint64_t>(total, 0xffffffffu)));
+  uint64_t done = 0;
+  auto report = [&](uint64_t base) {
+    return [&, base](uint32_t samples) { progress.update(uint32_t(base + samples)); };
+  };
+
+  if (renderReference) {
+    // Cached beside the results: the same scene, size, samples and seed
+    // render the same reference.
+    const std::string key = fmt::format("{} {}x{} {} spp seed {} depth {}", o.scene, width, height,
+                                        referenceSpp, o.referenceSeed, o.referenceMaxDepth);
+    const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
+    std::string cached;
+    if (std::filesystem::exists(cachedImage) && std::filesystem::exists(cachedKey))
+      cached = readFile(cachedKey.string());
+    if (cached.rfind(key + "\n", 0) == 0) {
+      reference.image = image::loadExr(cachedImage.string());
+      reference.source = cachedImage.string() + " (cached)";
+      reference.spp = referenceSpp;
+      reference.seed = o.referenceSeed;
+      reference.noiseRelMse = std::stod(cached.substr(key.size() + 1));
+    } else {
+      reference =
+          runner.renderReference(referenceTechnique, referenceSpp, o.referenceSeed, report(0));
+      image::saveExr(cachedImage.string(), reference.image);
+      std::ofstream(cachedKey) << key << "\n"
+                               << fmt::format("{:.17g}", reference.noiseRelMse) << "\n";
+    }
+    done += referenceSpp;
+  }
+  std::vector<study::StudyRow> rows;
+  for (const auto& point : points) {
+    rows.push_back(runner.run(point, reference, report(done)));
+    done += point.spp;
+    if (point.seed == spec.firstSeed) {
+      const auto path = dir / "images" / (fileSlug(point.technique.label(), point.spp) + ".exr");
+      image::saveExr(path.string(), runner.lastImage());
+      written.add(path);
+    }
+  }
+  progress.finish();
+
+  study::StudyContext context;
+  context.scene = o.scene;
+  context.width = width;
+  context.height = height;
+  context.device = adapter.name;
+  context.api = adapter.apiVersion;
+  context.backend = device->backendName();
+  context.commit = PENUMBRA_COMMIT;
+  context.referenceSource = reference.source;
+  context.referenceSpp = reference.spp;
+  context.referenceSeed = reference.seed;
+  context.referenceNoiseRelMse = reference.noiseRelMse;
+  context.budgetMs = o.budgetMs;
+  std::vector<study::Measurement> measurements;
+  for (const auto& r : rows) measurements.push_back(study::measurement(r));
+  const auto summaries = study::summarize(measurements);
+  const auto csvPath = dir / "results.csv", jsonPath = dir / "results.json";
+  std::ofstream(csvPath) << study::resultsCsv(rows);
+  written.add(csvPath);
+  std::ofstream(jsonPath) << study::resultsJson(context, rows, summaries);
+  written.add(jsonPath);
+
+  if (reference.noiseRelMse >= 0)
+    fmt::print(
+        "reference: {}, {} spp (seeds {} and {}), its own relMSE about {:.3e}: errors "
+        "below twice that are not claimed (below_reference_noise)\n",
+        reference.source, reference.spp, reference.seed, reference.seed + 1, reference.noiseRelMse);
+  else
+    fmt::print("reference: {} (its own noise unknown)\n", reference.source);
+  printAnswers(summaries, o.budgetMs, o.targetRelMse);
+  if (o.validation && device->validationMessageCount() > 0) {
+    fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
+    return 1;
+  }
+  written.keep();
+  fmt::print("wrote {} and {} ({} rows), images in {}\n", csvPath.string(), jsonPath.string(),
+             rows.size(), (dir / "images").string());
+  return 0;
+}
+
+}  // namespace
+
+Command addStudyCommand(CLI::App& app) {
+  auto o = std::make_shared<StudyOptions>();
+  auto* cmd = app.add_subcommand(
+      "study",
+      "What accuracy costs in time: render a sweep of techniques and sample counts, each timed "
+      "on the GPU and compared with a reference; write results.csv/json and print the answers");
+  cmd->add_option("--scene", o->scene, "Built-in scene name, scene file or glTF file")
+      ->capture_default_str();
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--spp", o->spp, "Samples per pixel, comma separated")->capture_default_str();
+  cmd->add_option("--integrator", o->integrators, "path, whitted (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--strategy", o->strategies, "uniform, cosine, bsdf, nee, mis (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--mis-heuristic", o->heuristics, "power, balance (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--max-depth", o->maxDepths, "Maximum bounces (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--russian-roulette", o->roulette, "on, off (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--clamp", o->clamps, "Per-sample radiance clamps, 0 = off (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--denoise", o->denoise, "off, atrous, svgf (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--pipeline", o->pipelines, "specialized, full (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--seeds", o->seeds, "Seeds per point (for confidence intervals)")
+      ->check(CLI::Range(1u, 1000u))
+      ->capture_default_str();
+  cmd->add_option("--first-seed", o->firstSeed, "The first of the points' seeds")
+      ->capture_default_str();
+  cmd->add_option("--reference", o->reference,
+                  "Reference image (.exr, the study's size), e.g. another renderer's; default: "
+                  "rendered by Penumbra (--reference-spp)");
+  cmd->add_option("--reference-spp", o->referenceSpp,
+                  "Samples of the rendered reference (two independent halves)")
+      ->check(CLI::Range(2u, 1u << 24))
+      ->capture_default_str();
+  cmd->add_option("--reference-seed", o->referenceSeed,
+                  "Seed of the rendered reference's first half (the second: +1); must not be a "
+                  "point's seed")
+      ->capture_default_str();
+  cmd->add_option("--reference-max-depth", o->referenceMaxDepth,
+                  "Maximum bounces of the rendered reference (MIS)")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd->add_option("--budget-ms", o->budgetMs, "Time budget for the 'lowest error' answer")
+      ->capture_default_str();
+  cmd->add_option("--target-relmse", o->targetRelMse,
+                  "Target error for the 'fastest technique' answer (0 = not asked)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--out", o->out, "Folder for results.csv, results.json, images/, reference");
+  cmd->add_option("--analyze", o->analyze,
+                  "Print the answers of an existing results.csv instead of rendering");
+  cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
+  cmd->add_option("--device", o->device, "Device index from 'penumbra devices'");
+  cmd->add_flag("--validation", o->validation,
+                "Enable the API validation layer; fail on any message");
+  return [o, cmd] { return runStudy(*o, *cmd); };
+}
+
+}  // namespace penumbra::app

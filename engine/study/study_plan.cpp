@@ -1,0 +1,108 @@
+#include "study/study_plan.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "render/render_job.h"
+#include "util/error.h"
+
+namespace penumbra::study {
+
+render::PathTracerSettings Technique::settings(uint32_t seed) const {
+  render::PathTracerSettings s;
+  s.integrator = integrator;
+  s.strategy = strategy;
+  s.misHeuristic = heuristic;
+  s.maxDepth = maxDepth;
+  s.russianRoulette = russianRoulette;
+  s.radianceClamp = clamp;
+  s.seed = seed;
+  s.writeGuides = denoise != render::DenoiseMode::Off;
+  return s;
+}
+
+std::string Technique::label() const {
+  const Technique defaults;
+  std::string name =
+      integrator == render::Integrator::Whitted ? "whitted" : render::strategyName(strategy);
+  if (integrator == render::Integrator::Path && heuristic != defaults.heuristic)
+    name += fmt::format(" {}", render::misHeuristicName(heuristic));
+  if (maxDepth != defaults.maxDepth) name += fmt::format(" depth={}", maxDepth);
+  if (integrator == render::Integrator::Path) {
+    if (!russianRoulette) name += " rr=off";
+    if (clamp > 0.0f) name += fmt::format(" clamp={:g}", clamp);
+    if (denoise != render::DenoiseMode::Off)
+      name += fmt::format(" denoise={}", render::denoiseModeName(denoise));
+  }
+  if (allEffects) name += " full";
+  return name;
+}
+
+bool Technique::operator==(const Technique& o) const {
+  return integrator == o.integrator && strategy == o.strategy && heuristic == o.heuristic &&
+         maxDepth == o.maxDepth && russianRoulette == o.russianRoulette && clamp == o.clamp &&
+         denoise == o.denoise && allEffects == o.allEffects;
+}
+
+namespace {
+
+template <class T>
+void requireValues(const std::vector<T>& list, const char* what) {
+  if (list.empty()) throw Error(fmt::format("study: no {} given", what));
+}
+
+}  // namespace
+
+std::vector<Technique> studyTechniques(const StudySpec& spec) {
+  requireValues(spec.integrators, "integrator");
+  requireValues(spec.strategies, "strategy");
+  requireValues(spec.heuristics, "MIS heuristic");
+  requireValues(spec.maxDepths, "max depth");
+  requireValues(spec.russianRoulette, "Russian roulette setting");
+  requireValues(spec.clamps, "clamp");
+  requireValues(spec.denoise, "denoiser");
+  requireValues(spec.allEffects, "pipeline");
+  std::vector<Technique> techniques;
+  for (auto integrator : spec.integrators)
+    for (auto strategy : spec.strategies)
+      for (auto heuristic : spec.heuristics)
+        for (uint32_t depth : spec.maxDepths)
+          for (bool roulette : spec.russianRoulette)
+            for (float clamp : spec.clamps)
+              for (auto denoise : spec.denoise)
+                for (bool all : spec.allEffects) {
+                  Technique t;
+                  t.integrator = integrator;
+                  t.maxDepth = depth;
+                  t.allEffects = all;
+                  if (integrator == render::Integrator::Path) {
+                    t.strategy = strategy;
+                    t.heuristic = heuristic;
+                    t.russianRoulette = roulette;
+                    t.clamp = clamp;
+                    t.denoise = denoise;
+                  } else if (denoise != render::DenoiseMode::Off) {
+                    continue;
+                  }
+                  if (std::find(techniques.begin(), techniques.end(), t) == techniques.end())
+                    techniques.push_back(t);
+                }
+  if (techniques.empty())
+    throw Error("study: no technique left (the denoiser filters only --integrator path)");
+  return techniques;
+}
+
+std::vector<StudyPoint> expandStudy(const StudySpec& spec) {
+  requireValues(spec.spp, "spp");
+  for (uint32_t spp : spec.spp)
+    if (spp == 0) throw Error("study: spp 0 (every point needs at least one sample)");
+  if (spec.seeds == 0) throw Error("study: --seeds 0 (every point needs a seed)");
+  std::vector<StudyPoint> points;
+  for (const Technique& t : studyTechniques(spec))
+    for (uint32_t spp : spec.spp)
+      for (uint32_t k = 0; k < spec.seeds; ++k) points.push_back({t, spp, spec.firstSeed + k});
+  return points;
+}
+
+}  // namespace penumbra::study

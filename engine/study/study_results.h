@@ -1,0 +1,36 @@
+#pragma once
+// A study's results on disk: results.csv (one row per technique x spp x
+// seed, a header row first; the columns scripts rely on are documented in
+// docs/ARCHITECTURE.md "Studies") and results.json (the same rows with the
+// study's context, the summaries and the answers).
+#include <string>
+#include <vector>
+
+#include "study/study_analysis.h"
+#include "study/study_runner.h"
+
+namespace penumbra::study {
+
+// Where and how the study ran, written with every results file.
+struct StudyContext {
+  std::string scene;
+  uint32_t width = 0, height = 0;
+  std::string device, api, backend, commit;
+  std::string referenceSource;
+  uint32_t referenceSpp = 0, referenceSeed = 0;
+  double referenceNoiseRelMse = -1.0;
+  double budgetMs = 33.3;
+};
+
+extern const char* const kResultsCsvHeader;
+
+Measurement measurement(const StudyRow& row);
+std::string resultsCsv(const std::vector<StudyRow>& rows);
+// The rows of a results.csv (its header must hold at least the columns
+// technique, spp, seed, gpu_ms, relmse, mape, ssim, bias, in any order).
+// Throws penumbra::Error naming `source` and the line on anything malformed.
+std::vector<Measurement> parseResultsCsv(const std::string& text, const std::string& source);
+std::string resultsJson(const StudyContext& context, const std::vector<StudyRow>& rows,
+                        const std::vector<PointSummary>& summaries);
+
+}  // namespace penumbra::study
