@@ -32,6 +32,9 @@ BASE_PACKAGES=(
   # The Windows cross build (scripts/build-windows-cross.sh): compiler, and
   # zlib for tinyexr; DirectX-Headers come from backports below.
   g++-mingw-w64-x86-64-posix libz-mingw-w64-dev
+  # penumbra study's report: its plots, and the headless browser that
+  # tests the page.
+  python3-matplotlib chromium
 )
 BACKPORT_PACKAGES=(mesa-vulkan-drivers catch2 directx-headers-dev)
 

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -211,10 +212,31 @@ class OutputGuard {
   std::vector<std::filesystem::path> written_;
 };
 
-std::string fileSlug(const std::string& label, uint32_t spp) {
-  std::string slug;
-  for (char c : label) slug += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '_';
-  return fmt::format("{}-spp{}", slug, spp);
+// The plots and report.html (scripts/study_report.py), when Python with
+// matplotlib is there; otherwise how to make them.
+void makeReport(const std::string& dir) {
+  const std::string script = PENUMBRA_SOURCE_DIR "/scripts/study_report.py";
+  const std::string how = fmt::format(
+      "report: python3 {} {} makes the plots and report.html (needs python3-matplotlib)", script,
+      dir);
+#ifdef _WIN32
+  fmt::print("{}\n", how);
+#else
+  if (!std::filesystem::exists(script)) {
+    fmt::print("report: {} is not here (run it from a Penumbra checkout on {})\n", script, dir);
+    return;
+  }
+  // Debian's interpreter has python3-matplotlib; one earlier on PATH may not.
+  for (const char* python : {"python3", "/usr/bin/python3"}) {
+    const std::string probe = fmt::format("{} -c 'import matplotlib' >/dev/null 2>&1", python);
+    if (std::system(probe.c_str()) != 0) continue;
+    const std::string run = fmt::format("{} '{}' '{}'", python, script, dir);
+    std::fflush(stdout);
+    if (std::system(run.c_str()) != 0) fmt::print("report: {} failed\n", run);
+    return;
+  }
+  fmt::print("{}\n", how);
+#endif
 }
 
 int runStudy(const StudyOptions& o, const CLI::App& cmd) {
@@ -299,14 +321,21 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
     }
     done += referenceSpp;
   }
+  const auto referencePreview = dir / "reference.png";
+  image::savePng(referencePreview.string(), image::encodeSrgb8(reference.image));
+  written.add(referencePreview);
   std::vector<study::StudyRow> rows;
   for (const auto& point : points) {
     rows.push_back(runner.run(point, reference, report(done)));
     done += point.spp;
     if (point.seed == spec.firstSeed) {
-      const auto path = dir / "images" / (fileSlug(point.technique.label(), point.spp) + ".exr");
-      image::saveExr(path.string(), runner.lastImage());
-      written.add(path);
+      // The linear image, and its preview for the report.
+      const std::string name = study::imageName(point.technique.label(), point.spp);
+      const auto exr = dir / "images" / (name + ".exr"), png = dir / "images" / (name + ".png");
+      image::saveExr(exr.string(), runner.lastImage());
+      written.add(exr);
+      image::savePng(png.string(), image::encodeSrgb8(runner.lastImage()));
+      written.add(png);
     }
   }
   progress.finish();
@@ -348,6 +377,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   written.keep();
   fmt::print("wrote {} and {} ({} rows), images in {}\n", csvPath.string(), jsonPath.string(),
              rows.size(), (dir / "images").string());
+  makeReport(o.out);
   return 0;
 }
 

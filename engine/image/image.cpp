@@ -1,8 +1,28 @@
 #include "image/image.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace penumbra::image {
+
+Image8 encodeSrgb8(const Image& image) {
+  Image8 out;
+  out.width = image.width;
+  out.height = image.height;
+  out.rgba.resize(image.rgba.size());
+  for (size_t i = 0; i < image.rgba.size(); ++i) {
+    if (i % 4 == 3) {
+      out.rgba[i] = 255;
+      continue;
+    }
+    // NaN clips to 0 like the shader's saturate; the sRGB transfer function.
+    const float x =
+        std::isnan(image.rgba[i]) ? 0.0f : std::min(std::max(image.rgba[i], 0.0f), 1.0f);
+    const float e = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+    out.rgba[i] = uint8_t(std::lround(e * 255.0f));
+  }
+  return out;
+}
 
 uint64_t countNonFinite(const Image& image) {
   uint64_t count = 0;
@@ -32,6 +52,8 @@ Rgb meanRgb(const Image& image, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t 
   return sum;
 }
 
-Rgb meanRgb(const Image& image) { return meanRgb(image, 0, 0, image.width, image.height); }
+Rgb meanRgb(const Image& image) {
+  return meanRgb(image, 0, 0, image.width, image.height);
+}
 
 }  // namespace penumbra::image

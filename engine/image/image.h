@@ -24,6 +24,11 @@ struct Image8 {
   std::vector<uint8_t> rgba;
 };
 
+// A linear image as 8-bit sRGB, values above 1 clipped: the display transform
+// of the default PNG output (ToneMapOperator::Clamp at exposure 1) on the
+// CPU, for previews of images that live on the host (a study's report).
+Image8 encodeSrgb8(const Image& image);
+
 // Pixels with a NaN or infinite channel.
 uint64_t countNonFinite(const Image& image);
 // Mean of each RGB channel over the rectangle [x0, x1) x [y0, y1).

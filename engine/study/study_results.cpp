@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -16,6 +17,13 @@ const char* const kResultsCsvHeader =
     "technique,integrator,strategy,mis_heuristic,max_depth,russian_roulette,clamp,denoise,"
     "pipeline,spp,seed,gpu_ms,denoise_ms,rays,relmse,mape,ssim,bias,efficiency,"
     "below_reference_noise";
+
+std::string imageName(const std::string& technique, uint32_t spp) {
+  std::string name;
+  for (char c : technique)
+    name += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '_';
+  return fmt::format("{}-spp{}", name, spp);
+}
 
 Measurement measurement(const StudyRow& row) {
   Measurement m;
@@ -202,6 +210,7 @@ std::string resultsJson(const StudyContext& c, const std::vector<StudyRow>& rows
     j["ssim"] = estimateJson(p.ssim);
     j["bias"] = estimateJson(p.bias);
     j["efficiency"] = p.efficiency();
+    j["image"] = "images/" + imageName(p.technique, p.spp) + ".png";
     points.push_back(j);
   }
   doc["summaries"] = points;

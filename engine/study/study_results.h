@@ -24,12 +24,18 @@ struct StudyContext {
 
 extern const char* const kResultsCsvHeader;
 
+// The file name (no extension) of a point's image under images/: the
+// technique's label with anything but letters, digits and dots as '_',
+// then "-spp" and the count, e.g. "mis_clamp_10-spp16".
+std::string imageName(const std::string& technique, uint32_t spp);
+
 Measurement measurement(const StudyRow& row);
 std::string resultsCsv(const std::vector<StudyRow>& rows);
 // The rows of a results.csv (its header must hold at least the columns
 // technique, spp, seed, gpu_ms, relmse, mape, ssim, bias, in any order).
 // Throws penumbra::Error naming `source` and the line on anything malformed.
 std::vector<Measurement> parseResultsCsv(const std::string& text, const std::string& source);
+// Each summary names its preview, images/<imageName>.png.
 std::string resultsJson(const StudyContext& context, const std::vector<StudyRow>& rows,
                         const std::vector<PointSummary>& summaries);
 

@@ -57,3 +57,8 @@ fails "no such file\|cannot read" study --analyze "$work/missing.csv"
 printf 'technique,spp\nmis,4\n' >"$work/short.csv"
 fails "header has no 'seed' column" study --analyze "$work/short.csv"
 [ ! -e "$work/bad" ]
+# With matplotlib present (scripts/setup.sh installs it), the study made its
+# report too.
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  [ -s "$work/s/report.html" ] && [ -s "$work/s/error_vs_time.png" ] && [ -s "$work/s/error_vs_spp.png" ]
+fi
