@@ -6,21 +6,19 @@
 namespace penumbra::image {
 
 Image8 encodeSrgb8(const Image& image) {
+  std::vector<uint8_t> bytes(image.rgba.size(), 255);
+  for (size_t i = 0; i < image.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;  // opaque
+    // NaN clips to 0 like the shader's saturate; the sRGB transfer function.
+    const float v = image.rgba[i];
+    const float x = std::isnan(v) ? 0.0f : std::min(std::max(v, 0.0f), 1.0f);
+    const float e = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+    bytes[i] = uint8_t(std::lround(e * 255.0f));
+  }
   Image8 out;
   out.width = image.width;
   out.height = image.height;
-  out.rgba.resize(image.rgba.size());
-  for (size_t i = 0; i < image.rgba.size(); ++i) {
-    if (i % 4 == 3) {
-      out.rgba[i] = 255;
-      continue;
-    }
-    // NaN clips to 0 like the shader's saturate; the sRGB transfer function.
-    const float x =
-        std::isnan(image.rgba[i]) ? 0.0f : std::min(std::max(image.rgba[i], 0.0f), 1.0f);
-    const float e = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
-    out.rgba[i] = uint8_t(std::lround(e * 255.0f));
-  }
+  out.rgba = std::move(bytes);
   return out;
 }
 

@@ -58,7 +58,9 @@ class StudyRunner {
   // difference estimates its noise.
   Reference renderReference(const Technique& technique, uint32_t spp, uint32_t seed,
                             const std::function<void(uint32_t)>& progress = {});
-  // One point, measured against `reference` (same size as the study).
+  // One point, measured against `reference` (same size as the study). Its
+  // timed frames follow untimed ones of the same settings (at least 100 ms
+  // of GPU time), so the GPU runs at its working clocks when they start.
   StudyRow run(const StudyPoint& point, const Reference& reference,
                const std::function<void(uint32_t)>& progress = {});
   // The image of the last run (its denoised image where it had a denoiser).
