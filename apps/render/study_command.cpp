@@ -40,6 +40,7 @@ struct StudyOptions {
   std::string pipelines = "specialized";
   uint32_t seeds = 3;
   uint32_t firstSeed = 1;
+  uint32_t repeats = 3;
   std::string reference;
   uint32_t referenceSpp = 1024;
   uint32_t referenceSeed = 1000003;
@@ -283,6 +284,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   std::fflush(stdout);
 
   study::StudyRunner runner(*device, scene, width, height);
+  runner.setTimingRepeats(o.repeats);
   uint64_t total = 0;
   for (const auto& p : points) total += p.spp;
   study::Technique referenceTechnique;
@@ -413,6 +415,10 @@ Command addStudyCommand(CLI::App& app) {
       ->check(CLI::Range(1u, 1000u))
       ->capture_default_str();
   cmd->add_option("--first-seed", o->firstSeed, "The first of the points' seeds")
+      ->capture_default_str();
+  cmd->add_option("--repeats", o->repeats,
+                  "Timed renders per point; the median time counts (a shared GPU's times vary)")
+      ->check(CLI::Range(1u, 100u))
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
                   "Reference image (.exr, the study's size), e.g. another renderer's; default: "

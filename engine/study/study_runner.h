@@ -1,6 +1,7 @@
 #pragma once
 // Renders a study's points on one device and measures each against the
 // reference: GPU time (timestamps), rays, and the error metrics.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -60,9 +61,13 @@ class StudyRunner {
                             const std::function<void(uint32_t)>& progress = {});
   // One point, measured against `reference` (same size as the study). Its
   // timed frames follow untimed ones of the same settings (at least 100 ms
-  // of GPU time), so the GPU runs at its working clocks when they start.
+  // of GPU time), so the GPU runs at its working clocks when they start,
+  // and its time is the median of setTimingRepeats renders.
   StudyRow run(const StudyPoint& point, const Reference& reference,
                const std::function<void(uint32_t)>& progress = {});
+  // How many times each point's timed render runs (its median time counts);
+  // 3 unless set. At least 1.
+  void setTimingRepeats(uint32_t repeats) { timingRepeats_ = std::max(repeats, 1u); }
   // The image of the last run (its denoised image where it had a denoiser).
   const image::Image& lastImage() const { return lastImage_; }
 
@@ -76,6 +81,7 @@ class StudyRunner {
   std::map<bool, std::unique_ptr<render::PathTracer>> tracers_;  // by allEffects
   std::unique_ptr<render::Denoiser> denoiser_;
   image::Image lastImage_;
+  uint32_t timingRepeats_ = 3;
 };
 
 // The seeds a study's points use must differ from a rendered reference's
