@@ -232,6 +232,13 @@ std::vector<gpu::EmissiveTriangle> placeEmitters(const std::vector<EmitterSource
   return emissive;
 }
 
+// The whole of `values` into `buffer`; nothing for an empty list.
+template <class T>
+void writeAll(rhi::ICommandList& cmd, const rhi::BufferHandle& buffer,
+              const std::vector<T>& values) {
+  if (!values.empty()) cmd.writeBuffer(buffer.get(), values.data(), values.size() * sizeof(T));
+}
+
 }  // namespace
 
 gpu::MaterialData packMaterial(const scene::Material& m) {
@@ -474,16 +481,10 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   }
   if (!indices.empty())
     cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
-  cmd->writeBuffer(s.instances.get(), instances.data(),
-                   instances.size() * sizeof(gpu::InstanceData));
-  cmd->writeBuffer(s.materials.get(), materials.data(),
-                   materials.size() * sizeof(gpu::MaterialData));
-  if (!emissive.empty())
-    cmd->writeBuffer(s.emissive.get(), emissive.data(),
-                     emissive.size() * sizeof(gpu::EmissiveTriangle));
-  if (!pointLights.empty())
-    cmd->writeBuffer(s.pointLights.get(), pointLights.data(),
-                     pointLights.size() * sizeof(gpu::PointLight));
+  writeAll(*cmd, s.instances, instances);
+  writeAll(*cmd, s.materials, materials);
+  writeAll(*cmd, s.emissive, emissive);
+  writeAll(*cmd, s.pointLights, pointLights);
   s.textures = uploadSceneTextures(device_, *cmd, scene);
   s.textureRefs = makeStorageBuffer(device_, s.textures.refs, BufferUsage::None, "texture refs");
   cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
@@ -761,20 +762,11 @@ void PathTracer::rebase(const glm::dvec3& origin) {
   auto& s = *scene_;
   auto* cmd = commandList_.get();
   cmd->open();
-  cmd->writeBuffer(s.instances.get(), instances.data(),
-                   instances.size() * sizeof(gpu::InstanceData));
-  if (!emissive.empty())
-    cmd->writeBuffer(s.emissive.get(), emissive.data(),
-                     emissive.size() * sizeof(gpu::EmissiveTriangle));
-  if (!pointLights.empty())
-    cmd->writeBuffer(s.pointLights.get(), pointLights.data(),
-                     pointLights.size() * sizeof(gpu::PointLight));
-  if (!implicits.data.empty()) {
-    cmd->writeBuffer(s.implicits.get(), implicits.data.data(),
-                     implicits.data.size() * sizeof(gpu::ImplicitData));
-    cmd->writeBuffer(s.implicitAabbs.get(), implicits.aabbs.data(),
-                     implicits.aabbs.size() * sizeof(implicits.aabbs[0]));
-  }
+  writeAll(*cmd, s.instances, instances);
+  writeAll(*cmd, s.emissive, emissive);
+  writeAll(*cmd, s.pointLights, pointLights);
+  writeAll(*cmd, s.implicits, implicits.data);
+  writeAll(*cmd, s.implicitAabbs, implicits.aabbs);
   // In place: the binding sets keep pointing at the same TLAS, and the
   // meshes' BLASes are not touched.
   for (auto& bottomLevel : s.implicitBottomLevels)
