@@ -38,6 +38,7 @@ struct RenderOptions {
   render::Integrator integrator = render::Integrator::Path;
   render::SamplingStrategy strategy = render::SamplingStrategy::Mis;
   render::MisHeuristic heuristic = render::MisHeuristic::Power;
+  render::Sampler sampler = render::Sampler::Random;
   float clamp = 0.0f;
   bool noRoulette = false;
   bool validation = false;
@@ -155,6 +156,7 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   if (given("--integrator")) s.integrator = o.integrator;
   if (given("--strategy")) s.strategy = o.strategy;
   if (given("--mis-heuristic")) s.misHeuristic = o.heuristic;
+  if (given("--sampler")) s.sampler = o.sampler;
   if (given("--clamp")) s.radianceClamp = o.clamp;
   if (given("--no-russian-roulette")) s.russianRoulette = !o.noRoulette;
   if (given("--exposure")) job.toneMapping.exposure = o.exposure;
@@ -312,6 +314,12 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--mis-heuristic", o->heuristic, "MIS weights: power | balance")
       ->transform(CLI::CheckedTransformer(heuristics))
       ->default_str("power");
+  const std::map<std::string, render::Sampler> samplers{{"random", render::Sampler::Random},
+                                                        {"sobol", render::Sampler::Sobol}};
+  cmd->add_option("--sampler", o->sampler,
+                  "Random numbers: random (hashed) | sobol (Owen-scrambled Sobol)")
+      ->transform(CLI::CheckedTransformer(samplers))
+      ->default_str("random");
   cmd->add_option("--clamp", o->clamp, "Clamp each sample's radiance to this value (0 = off)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

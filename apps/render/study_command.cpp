@@ -33,6 +33,7 @@ struct StudyOptions {
   std::string integrators = "path";
   std::string strategies = "mis";
   std::string heuristics = "power";
+  std::string samplers = "random";
   std::string maxDepths = "8";
   std::string roulette = "on";
   std::string clamps = "0";
@@ -106,6 +107,9 @@ study::StudySpec makeSpec(const StudyOptions& o) {
       "--mis-heuristic", o.heuristics,
       [](const std::string& s) { return render::parseMisHeuristic(s); },
       "a MIS heuristic (power, balance)");
+  spec.samplers = parseList<render::Sampler>(
+      "--sampler", o.samplers, [](const std::string& s) { return render::parseSampler(s); },
+      "a sampler (random, sobol)");
   spec.maxDepths = parseList<uint32_t>(
       "--max-depth", o.maxDepths, [](const std::string& s) { return parseCount(s, 0, 1024); },
       "a depth 0..1024");
@@ -400,6 +404,8 @@ Command addStudyCommand(CLI::App& app) {
   cmd->add_option("--strategy", o->strategies, "uniform, cosine, bsdf, nee, mis (comma separated)")
       ->capture_default_str();
   cmd->add_option("--mis-heuristic", o->heuristics, "power, balance (comma separated)")
+      ->capture_default_str();
+  cmd->add_option("--sampler", o->samplers, "random, sobol (comma separated)")
       ->capture_default_str();
   cmd->add_option("--max-depth", o->maxDepths, "Maximum bounces (comma separated)")
       ->capture_default_str();

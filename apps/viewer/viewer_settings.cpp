@@ -78,6 +78,11 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
     if (!v) badValue(name, value, "power or balance");
     return assign(t.misHeuristic, *v, E::ResetAccumulation);
   }
+  if (name == "sampler") {
+    auto v = render::parseSampler(value);
+    if (!v) badValue(name, value, "random or sobol");
+    return assign(t.sampler, *v, E::ResetAccumulation);
+  }
   if (name == "russian-roulette")
     return assign(t.russianRoulette, parseBool(name, value), E::ResetAccumulation);
   if (name == "clamp")

@@ -48,7 +48,7 @@ enum class SettingEffect {
 };
 
 // Sets one setting by its script name ("spp-per-frame", "max-depth",
-// "integrator", "strategy", "mis-heuristic", "russian-roulette", "clamp",
+// "integrator", "strategy", "mis-heuristic", "sampler", "russian-roulette", "clamp",
 // "seed", "exposure", "tonemap", "all-effects", "render-scale", "auto-scale",
 // "vsync", "max-samples", "ui", "denoise", "firefly-clamp", "view"). Throws penumbra::Error naming
 // the setting on a bad name or value.

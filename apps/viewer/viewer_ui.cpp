@@ -122,6 +122,8 @@ void Viewer::drawAlgorithmMenu() {
     reset |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
     reset |= ImGui::DragFloat("clamp (0 = off)", &t.radianceClamp, 0.1f, 0.0f, 1e4f);
   }
+  reset |= enumCombo("sampler", t.sampler, {render::Sampler::Random, render::Sampler::Sobol},
+                     &render::samplerName);
   int seed = int(t.seed);
   if (ImGui::InputInt("seed", &seed) && seed >= 0) {
     t.seed = uint32_t(seed);

@@ -845,6 +845,7 @@ uint32_t frameFlags(const PathTracerSettings& s) {
   }
   if (s.misHeuristic == MisHeuristic::Balance) flags |= PT_FLAG_BALANCE_HEURISTIC;
   if (s.russianRoulette) flags |= PT_FLAG_RUSSIAN_ROULETTE;
+  if (s.sampler == Sampler::Sobol) flags |= PT_FLAG_SOBOL;
   return flags | (directions << PT_DIRECTIONS_SHIFT);
 }
 

@@ -29,11 +29,17 @@ enum class SamplingStrategy {
   Mis,      // NEE and BSDF sampling combined by multiple importance sampling
 };
 enum class MisHeuristic { Power, Balance };
+// Where a path's random numbers come from (shaders/shared/rng.hlsli).
+enum class Sampler {
+  Random,  // hashed PCG streams, the pixel position stratified per frame
+  Sobol,   // Owen-scrambled Sobol points in every dimension, padded by pairs
+};
 
 struct PathTracerSettings {
   Integrator integrator = Integrator::Path;
   SamplingStrategy strategy = SamplingStrategy::Mis;
   MisHeuristic misHeuristic = MisHeuristic::Power;
+  Sampler sampler = Sampler::Random;
   uint32_t maxDepth = 8;            // bounces after the camera ray (Whitted: recursion depth)
   uint32_t rouletteStartDepth = 3;  // Russian roulette from this bounce on
   bool russianRoulette = true;

@@ -33,6 +33,7 @@ constexpr Named<SamplingStrategy> kStrategies[] = {{SamplingStrategy::Uniform, "
                                                    {SamplingStrategy::Mis, "mis"}};
 constexpr Named<MisHeuristic> kHeuristics[] = {{MisHeuristic::Power, "power"},
                                                {MisHeuristic::Balance, "balance"}};
+constexpr Named<Sampler> kSamplers[] = {{Sampler::Random, "random"}, {Sampler::Sobol, "sobol"}};
 constexpr Named<scene::MaterialModel> kModels[] = {{scene::MaterialModel::Disney, "disney"},
                                                    {scene::MaterialModel::Lambert, "lambert"},
                                                    {scene::MaterialModel::Phong, "phong"}};
@@ -165,7 +166,8 @@ MaterialOverride overrideFromJson(const json& j, const std::string& key, const R
   if (!parsed) r.fail(key + ".model", "must be one of disney, lambert, phong");
   m.model = *parsed;
   const json& color = field("baseColor");
-  if (!color.is_array() || color.size() != 3) r.fail(key + ".baseColor", "must be an array of 3 numbers");
+  if (!color.is_array() || color.size() != 3)
+    r.fail(key + ".baseColor", "must be an array of 3 numbers");
   for (int c = 0; c < 3; ++c) m.baseColor[c] = r.finite(color[size_t(c)], key + ".baseColor");
   for (const auto& f : kFloatFields) m.*f.field = r.finite(field(f.name), key + "." + f.name);
   if (!field("thin").is_boolean()) r.fail(key + ".thin", "must be true or false");
@@ -184,6 +186,9 @@ const char* strategyName(SamplingStrategy strategy) {
 const char* misHeuristicName(MisHeuristic heuristic) {
   return nameOf(kHeuristics, heuristic);
 }
+const char* samplerName(Sampler sampler) {
+  return nameOf(kSamplers, sampler);
+}
 std::optional<Integrator> parseIntegrator(std::string_view name) {
   return parseName(kIntegrators, name);
 }
@@ -192,6 +197,9 @@ std::optional<SamplingStrategy> parseStrategy(std::string_view name) {
 }
 std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
   return parseName(kHeuristics, name);
+}
+std::optional<Sampler> parseSampler(std::string_view name) {
+  return parseName(kSamplers, name);
 }
 
 const char* materialModelName(scene::MaterialModel model) {
@@ -234,7 +242,8 @@ std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Materia
                                                 const std::vector<scene::Material>& edited) {
   std::vector<MaterialOverride> overrides;
   for (size_t i = 0; i < edited.size() && i < loaded.size(); ++i)
-    if (!sameEditableParameters(loaded[i], edited[i])) overrides.push_back({uint32_t(i), edited[i]});
+    if (!sameEditableParameters(loaded[i], edited[i]))
+      overrides.push_back({uint32_t(i), edited[i]});
   return overrides;
 }
 
@@ -243,8 +252,9 @@ void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverr
   for (size_t i = 0; i < overrides.size(); ++i) {
     const MaterialOverride& o = overrides[i];
     if (o.index >= scene.materials.size())
-      throw Error(fmt::format("{}: \"materials[{}].index\" {} is out of range: scene '{}' has {} materials",
-                              source, i, o.index, scene.name, scene.materials.size()));
+      throw Error(
+          fmt::format("{}: \"materials[{}].index\" {} is out of range: scene '{}' has {} materials",
+                      source, i, o.index, scene.name, scene.materials.size()));
     scene::Material& target = scene.materials[o.index];
     if (target.name != o.material.name)
       throw Error(fmt::format(
@@ -275,6 +285,7 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["integrator"] = integratorName(s.integrator);
   doc["strategy"] = strategyName(s.strategy);
   doc["misHeuristic"] = misHeuristicName(s.misHeuristic);
+  doc["sampler"] = samplerName(s.sampler);
   doc["maxDepth"] = s.maxDepth;
   doc["russianRoulette"] = s.russianRoulette;
   doc["rouletteStartDepth"] = s.rouletteStartDepth;
@@ -333,6 +344,7 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
   r.readEnum("integrator", s.integrator, &parseIntegrator);
   r.readEnum("strategy", s.strategy, &parseStrategy);
   r.readEnum("misHeuristic", s.misHeuristic, &parseMisHeuristic);
+  r.readEnum("sampler", s.sampler, &parseSampler);
   r.read("maxDepth", s.maxDepth);
   r.read("russianRoulette", s.russianRoulette);
   r.read("rouletteStartDepth", s.rouletteStartDepth);

@@ -8,7 +8,7 @@
 //     "scene": "cornell-box", "vary": "", "set": "",
 //     "camera": { "position": [x,y,z], "forward": [..], "up": [..], "verticalFovDegrees": 39.3 },
 //     "width": 512, "height": 512, "spp": 64, "sppPerFrame": 4,
-//     "integrator": "path", "strategy": "mis", "misHeuristic": "power",
+//     "integrator": "path", "strategy": "mis", "misHeuristic": "power", "sampler": "random",
 //     "maxDepth": 8, "russianRoulette": true, "rouletteStartDepth": 3,
 //     "radianceClamp": 0, "seed": 0,
 //     "exposure": 1, "toneMapping": "clamp", "allEffects": false,
@@ -63,9 +63,11 @@ struct RenderJob {
 const char* integratorName(Integrator integrator);
 const char* strategyName(SamplingStrategy strategy);
 const char* misHeuristicName(MisHeuristic heuristic);
+const char* samplerName(Sampler sampler);
 std::optional<Integrator> parseIntegrator(std::string_view name);
 std::optional<SamplingStrategy> parseStrategy(std::string_view name);
 std::optional<MisHeuristic> parseMisHeuristic(std::string_view name);
+std::optional<Sampler> parseSampler(std::string_view name);
 
 const char* materialModelName(scene::MaterialModel model);
 std::optional<scene::MaterialModel> parseMaterialModel(std::string_view name);

@@ -14,6 +14,7 @@ render::PathTracerSettings Technique::settings(uint32_t seed) const {
   s.integrator = integrator;
   s.strategy = strategy;
   s.misHeuristic = heuristic;
+  s.sampler = sampler;
   s.maxDepth = maxDepth;
   s.russianRoulette = russianRoulette;
   s.radianceClamp = clamp;
@@ -28,6 +29,7 @@ std::string Technique::label() const {
       integrator == render::Integrator::Whitted ? "whitted" : render::strategyName(strategy);
   if (integrator == render::Integrator::Path && heuristic != defaults.heuristic)
     name += fmt::format(" {}", render::misHeuristicName(heuristic));
+  if (sampler != defaults.sampler) name += fmt::format(" {}", render::samplerName(sampler));
   if (maxDepth != defaults.maxDepth) name += fmt::format(" depth={}", maxDepth);
   if (integrator == render::Integrator::Path) {
     if (!russianRoulette) name += " rr=off";
@@ -41,8 +43,8 @@ std::string Technique::label() const {
 
 bool Technique::operator==(const Technique& o) const {
   return integrator == o.integrator && strategy == o.strategy && heuristic == o.heuristic &&
-         maxDepth == o.maxDepth && russianRoulette == o.russianRoulette && clamp == o.clamp &&
-         denoise == o.denoise && allEffects == o.allEffects;
+         sampler == o.sampler && maxDepth == o.maxDepth && russianRoulette == o.russianRoulette &&
+         clamp == o.clamp && denoise == o.denoise && allEffects == o.allEffects;
 }
 
 namespace {
@@ -58,6 +60,7 @@ std::vector<Technique> studyTechniques(const StudySpec& spec) {
   requireValues(spec.integrators, "integrator");
   requireValues(spec.strategies, "strategy");
   requireValues(spec.heuristics, "MIS heuristic");
+  requireValues(spec.samplers, "sampler");
   requireValues(spec.maxDepths, "max depth");
   requireValues(spec.russianRoulette, "Russian roulette setting");
   requireValues(spec.clamps, "clamp");
@@ -67,27 +70,29 @@ std::vector<Technique> studyTechniques(const StudySpec& spec) {
   for (auto integrator : spec.integrators)
     for (auto strategy : spec.strategies)
       for (auto heuristic : spec.heuristics)
-        for (uint32_t depth : spec.maxDepths)
-          for (bool roulette : spec.russianRoulette)
-            for (float clamp : spec.clamps)
-              for (auto denoise : spec.denoise)
-                for (bool all : spec.allEffects) {
-                  Technique t;
-                  t.integrator = integrator;
-                  t.maxDepth = depth;
-                  t.allEffects = all;
-                  if (integrator == render::Integrator::Path) {
-                    t.strategy = strategy;
-                    t.heuristic = heuristic;
-                    t.russianRoulette = roulette;
-                    t.clamp = clamp;
-                    t.denoise = denoise;
-                  } else if (denoise != render::DenoiseMode::Off) {
-                    continue;
+        for (auto sampler : spec.samplers)
+          for (uint32_t depth : spec.maxDepths)
+            for (bool roulette : spec.russianRoulette)
+              for (float clamp : spec.clamps)
+                for (auto denoise : spec.denoise)
+                  for (bool all : spec.allEffects) {
+                    Technique t;
+                    t.integrator = integrator;
+                    t.sampler = sampler;
+                    t.maxDepth = depth;
+                    t.allEffects = all;
+                    if (integrator == render::Integrator::Path) {
+                      t.strategy = strategy;
+                      t.heuristic = heuristic;
+                      t.russianRoulette = roulette;
+                      t.clamp = clamp;
+                      t.denoise = denoise;
+                    } else if (denoise != render::DenoiseMode::Off) {
+                      continue;
+                    }
+                    if (std::find(techniques.begin(), techniques.end(), t) == techniques.end())
+                      techniques.push_back(t);
                   }
-                  if (std::find(techniques.begin(), techniques.end(), t) == techniques.end())
-                    techniques.push_back(t);
-                }
   if (techniques.empty())
     throw Error("study: no technique left (the denoiser filters only --integrator path)");
   return techniques;

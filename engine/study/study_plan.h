@@ -17,6 +17,7 @@ struct Technique {
   render::Integrator integrator = render::Integrator::Path;
   render::SamplingStrategy strategy = render::SamplingStrategy::Mis;
   render::MisHeuristic heuristic = render::MisHeuristic::Power;
+  render::Sampler sampler = render::Sampler::Random;
   uint32_t maxDepth = 8;
   bool russianRoulette = true;
   float clamp = 0.0f;  // per-sample radiance clamp; 0 = off
@@ -26,7 +27,7 @@ struct Technique {
   // The path tracer's settings for one seed (guides written for a denoiser).
   render::PathTracerSettings settings(uint32_t seed) const;
   // A short name: the strategy (or "whitted"), then whatever differs from
-  // the defaults, e.g. "mis", "bsdf depth=4 clamp=10", "mis denoise=svgf".
+  // the defaults, e.g. "mis", "bsdf depth=4 clamp=10", "mis sobol denoise=svgf".
   std::string label() const;
   bool operator==(const Technique& other) const;
 };
@@ -36,6 +37,7 @@ struct StudySpec {
   std::vector<render::Integrator> integrators{render::Integrator::Path};
   std::vector<render::SamplingStrategy> strategies{render::SamplingStrategy::Mis};
   std::vector<render::MisHeuristic> heuristics{render::MisHeuristic::Power};
+  std::vector<render::Sampler> samplers{render::Sampler::Random};
   std::vector<uint32_t> maxDepths{8};
   std::vector<bool> russianRoulette{true};
   std::vector<float> clamps{0.0f};

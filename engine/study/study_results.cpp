@@ -14,7 +14,7 @@
 namespace penumbra::study {
 
 const char* const kResultsCsvHeader =
-    "technique,integrator,strategy,mis_heuristic,max_depth,russian_roulette,clamp,denoise,"
+    "technique,integrator,strategy,mis_heuristic,sampler,max_depth,russian_roulette,clamp,denoise,"
     "pipeline,spp,seed,gpu_ms,denoise_ms,rays,relmse,mape,ssim,bias,efficiency,"
     "below_reference_noise";
 
@@ -52,14 +52,15 @@ std::string resultsCsv(const std::vector<StudyRow>& rows) {
   for (const StudyRow& r : rows) {
     const Technique& t = r.point.technique;
     // Technique labels hold no comma or quote: no quoting needed.
-    out += fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", t.label(),
-        render::integratorName(t.integrator), render::strategyName(t.strategy),
-        render::misHeuristicName(t.heuristic), t.maxDepth, t.russianRoulette ? "on" : "off",
-        number(t.clamp), render::denoiseModeName(t.denoise), t.allEffects ? "full" : "specialized",
-        r.point.spp, r.point.seed, number(r.gpuMs), number(r.denoiseMs), r.rays,
-        number(r.error.relMse), number(r.error.mape), number(r.error.ssim), number(r.error.bias),
-        number(1.0 / (r.error.relMse * r.gpuMs)), r.belowReferenceNoise ? 1 : 0);
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                       t.label(), render::integratorName(t.integrator),
+                       render::strategyName(t.strategy), render::misHeuristicName(t.heuristic),
+                       render::samplerName(t.sampler), t.maxDepth, t.russianRoulette ? "on" : "off",
+                       number(t.clamp), render::denoiseModeName(t.denoise),
+                       t.allEffects ? "full" : "specialized", r.point.spp, r.point.seed,
+                       number(r.gpuMs), number(r.denoiseMs), r.rays, number(r.error.relMse),
+                       number(r.error.mape), number(r.error.ssim), number(r.error.bias),
+                       number(1.0 / (r.error.relMse * r.gpuMs)), r.belowReferenceNoise ? 1 : 0);
   }
   return out;
 }
@@ -180,6 +181,7 @@ std::string resultsJson(const StudyContext& c, const std::vector<StudyRow>& rows
     j["integrator"] = render::integratorName(t.integrator);
     j["strategy"] = render::strategyName(t.strategy);
     j["misHeuristic"] = render::misHeuristicName(t.heuristic);
+    j["sampler"] = render::samplerName(t.sampler);
     j["maxDepth"] = t.maxDepth;
     j["russianRoulette"] = t.russianRoulette;
     j["clamp"] = t.clamp;

@@ -17,6 +17,7 @@
 #define rsqrt inversesqrt
 #define atan2 atan
 #define asuint floatBitsToUint
+#define reversebits bitfieldReverse
 #define asint floatBitsToInt
 float asfloat(uint x) { return uintBitsToFloat(x); }
 float asfloat(int x) { return intBitsToFloat(x); }

@@ -11,8 +11,8 @@ void main() {
   uint before = frame.image.w;
   float3 sum = zero3();
   for (uint s = 0u; s < samples; s += 1u) {
-    Rng rng = rngCreate(pixel, frame.lights.z + before + s, frame.sampling.x);
-    float2 jitter = jitteredPixelSample(s, samples, rngNext(rng), rngNext(rng));
+    Rng rng = sampleRng(frame, pixel, frame.lights.z + before + s);
+    float2 jitter = pixelSample(rng, s, samples);
     float3 direction = cameraRayDirection(frame, float2(pixel) + jitter);
     sum += traceWhitted(frame, frame.cameraPosition.xyz, direction);
   }

@@ -2,6 +2,8 @@
 #ifndef PENUMBRA_CAMERA_HLSLI
 #define PENUMBRA_CAMERA_HLSLI
 
+#include "rng.hlsli"
+
 // `filmPosition` is in pixels, (0,0) the top-left corner of the image.
 float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
   float tanHalfFov = c.cameraPosition.w;
@@ -23,6 +25,23 @@ float2 jitteredPixelSample(uint index, uint count, float u0, float u1) {
     return float2((float(index % m) + u0) * cell, (float(index / m) + u1) * cell);
   }
   return float2(u0, u1);
+}
+
+// The random stream of the pixel's sample `sampleIndex` (counted over the
+// whole accumulation), from the sampler FrameConstants.sampling.w names.
+Rng sampleRng(FrameConstants c, uint2 pixel, uint sampleIndex) {
+  uint kind = (c.sampling.w & PT_FLAG_SOBOL) != 0u ? RNG_SAMPLER_SOBOL : RNG_SAMPLER_RANDOM;
+  return rngCreate(pixel, sampleIndex, c.sampling.x, kind);
+}
+
+// Position in the pixel of sample `index` of the `count` this frame takes:
+// the Sobol sampler's first two dimensions are stratified already (over the
+// whole accumulation, not only this frame); random numbers are jittered.
+float2 pixelSample(inout Rng rng, uint index, uint count) {
+  float u0 = rngNext(rng);
+  float u1 = rngNext(rng);
+  if (rng.kind == RNG_SAMPLER_SOBOL) return float2(u0, u1);
+  return jitteredPixelSample(index, count, u0, u1);
 }
 
 #endif

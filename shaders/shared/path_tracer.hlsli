@@ -471,8 +471,8 @@ bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, out Sha
 // Sample `s` of this frame at launchPixel(): its random stream (numbered
 // over the whole accumulation), its camera ray and its fresh path.
 PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 direction) {
-  Rng rng = rngCreate(launchPixel(), c.lights.z + c.image.w + s, c.sampling.x);
-  float2 jitter = jitteredPixelSample(s, c.image.z, rngNext(rng), rngNext(rng));
+  Rng rng = sampleRng(c, launchPixel(), c.lights.z + c.image.w + s);
+  float2 jitter = pixelSample(rng, s, c.image.z);
   origin = c.cameraPosition.xyz;
   direction = cameraRayDirection(c, float2(launchPixel()) + jitter);
   return startPath(rng, dot(direction, c.cameraForward.xyz));

@@ -79,6 +79,11 @@ namespace penumbra::gpu {
 #define PT_FLAG_MIS 2u               // MIS between NEE and BSDF sampling (area lights only)
 #define PT_FLAG_RUSSIAN_ROULETTE 4u
 #define PT_FLAG_BALANCE_HEURISTIC 8u // balance instead of power heuristic
+#define PT_FLAG_SOBOL 16u            // Owen-scrambled Sobol samples instead of hashed random ones
+
+// Rng.sampler (shaders/shared/rng.hlsli).
+#define RNG_SAMPLER_RANDOM 0u
+#define RNG_SAMPLER_SOBOL 1u
 // Bits 8-9 of sampling.w: how non-delta directions are sampled.
 #define PT_DIRECTIONS_BSDF 0u        // importance-sample the BSDF
 #define PT_DIRECTIONS_UNIFORM 1u     // uniform over the hemisphere (sphere if transmissive)

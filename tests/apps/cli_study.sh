@@ -10,20 +10,20 @@ trap 'rm -rf "$work"' EXIT
 "$penumbra" study --scene cornell-box --size 32x32 --strategy bsdf,nee,mis --spp 1,4,16,64 \
   --seeds 3 --reference-spp 1024 --target-relmse 0.05 --validation --out "$work/s" | tee "$work/log"
 csv="$work/s/results.csv"
-head -1 "$csv" | grep -q "^technique,integrator,strategy,mis_heuristic,max_depth,russian_roulette,clamp,denoise,pipeline,spp,seed,gpu_ms,denoise_ms,rays,relmse,mape,ssim,bias,efficiency,below_reference_noise$"
+head -1 "$csv" | grep -q "^technique,integrator,strategy,mis_heuristic,sampler,max_depth,russian_roulette,clamp,denoise,pipeline,spp,seed,gpu_ms,denoise_ms,rays,relmse,mape,ssim,bias,efficiency,below_reference_noise$"
 # Every point present: 3 strategies x 4 spp x 3 seeds, each once.
 [ "$(tail -n +2 "$csv" | wc -l)" = 36 ]
-[ "$(tail -n +2 "$csv" | cut -d, -f1,10,11 | sort -u | wc -l)" = 36 ]
+[ "$(tail -n +2 "$csv" | cut -d, -f1,11,12 | sort -u | wc -l)" = 36 ]
 for t in bsdf nee mis; do
   for spp in 1 4 16 64; do
-    [ "$(tail -n +2 "$csv" | awk -F, -v t=$t -v s=$spp '$1 == t && $10 == s' | wc -l)" = 3 ]
+    [ "$(tail -n +2 "$csv" | awk -F, -v t=$t -v s=$spp '$1 == t && $11 == s' | wc -l)" = 3 ]
   done
 done
 # Times and rays positive, errors finite and in range.
 tail -n +2 "$csv" | awk -F, '{
-  if (!($12 > 0) || !($14 > 0)) { print "bad time or rays: " $0; exit 1 }
-  for (c = 15; c <= 18; ++c) if ($c == "nan" || $c == "inf" || $c == "-inf" || $c == "") { print "bad metric: " $0; exit 1 }
-  if (!($15 >= 0) || !($17 <= 1)) { print "bad relmse or ssim: " $0; exit 1 }
+  if (!($13 > 0) || !($15 > 0)) { print "bad time or rays: " $0; exit 1 }
+  for (c = 16; c <= 19; ++c) if ($c == "nan" || $c == "inf" || $c == "-inf" || $c == "") { print "bad metric: " $0; exit 1 }
+  if (!($16 >= 0) || !($18 <= 1)) { print "bad relmse or ssim: " $0; exit 1 }
 }'
 grep -q '"format": "penumbra-study"' "$work/s/results.json"
 [ "$(grep -c '"technique": ' "$work/s/results.json")" -ge 48 ]  # 36 rows, 12 summaries, answers

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The study report (scripts/study_report.py) from a fixed study
-# (tests/data/study: a 24x24 Cornell box study's results and previews),
+# (tests/data/study: a 24x24 Cornell box study's results and previews, bsdf
+# and mis with both samplers),
 # opened in a real headless browser: the page loads, every image resolves,
 # the techniques table has one row per technique of the CSV and the points
 # table one per (technique, spp).
@@ -21,8 +22,14 @@ images=$(sed -nE 's/.*<body data-images="([0-9]+)" data-images-loaded="([0-9]+)"
 echo "images (in the page, loaded): $images"
 set -- $images
 [ "${1:-0}" -ge 3 ] && [ "$1" = "$2" ]
-techniques=$(tail -n +2 "$work/s/results.csv" | cut -d, -f1 | sort -u | wc -l)
-points=$(tail -n +2 "$work/s/results.csv" | cut -d, -f1,10 | sort -u | wc -l)
+# Columns by their header names, so a new column does not shift them.
+csv_columns() {
+  awk -F, -v names="$1" 'NR == 1 { n = split(names, want, ","); for (i = 1; i <= NF; i++) col[$i] = i; next }
+    { line = $col[want[1]]; for (k = 2; k <= n; k++) line = line "," $col[want[k]]; print line }' \
+    "$work/s/results.csv" | sort -u | wc -l
+}
+techniques=$(csv_columns technique)
+points=$(csv_columns technique,spp)
 table_rows() {  # rows of the table with this id, the header row excluded
   sed -n "/<table id=\"$1\"/,/<\/table>/p" "$work/dom.html" | grep -c "<tr><td>"
 }

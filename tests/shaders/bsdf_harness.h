@@ -1,9 +1,10 @@
 #pragma once
 // Runs the shading core's Disney BSDF on the test device through the compute
-// harness shaders/harness/bsdf_harness.comp.
+// harness shaders/harness/bsdf_harness.comp (compute_harness.h).
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "compute_harness.h"
 #include "path_tracer_shared.h"
 #include "rhi/rhi.h"
 #include "scene/scene.h"
@@ -39,11 +40,9 @@ class BsdfHarness {
 
  private:
   std::vector<glm::vec4> run(uint32_t mode, uint32_t count, uint32_t seed, glm::vec3 wo,
-                             const gpu::MaterialData& material, const std::vector<glm::vec4>& directions,
-                             uint32_t resultsPerItem);
-  rhi::IDevice& device_;
-  rhi::ComputePipelineHandle pipeline_;
-  rhi::CommandListHandle commandList_;
+                             const gpu::MaterialData& material,
+                             const std::vector<glm::vec4>& directions, uint32_t resultsPerItem);
+  ComputeHarness harness_;
 };
 
 gpu::MaterialData packForGpu(const scene::Material& m);

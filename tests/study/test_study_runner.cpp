@@ -96,5 +96,32 @@ TEST_CASE("study: unbiased strategies converge as 1/spp and a clamp's bias is fo
       CHECK(p.bias.mean < -0.1);
     }
   }
+
+  // The Sobol sampler (same reference): unbiased, and at 64 spp below the
+  // random sampler's error. Its slope may be steeper than -1 (stratified
+  // edges converge faster) but not flatter.
+  study::StudySpec sobolSpec = spec;
+  sobolSpec.strategies = {render::SamplingStrategy::Mis};
+  sobolSpec.clamps = {0.0f};
+  sobolSpec.samplers = {render::Sampler::Sobol};
+  std::vector<study::Measurement> sobolRows;
+  for (const auto& point : study::expandStudy(sobolSpec))
+    sobolRows.push_back(study::measurement(runner.run(point, reference)));
+  const auto sobolPoints = study::summarize(sobolRows);
+  const auto sobolSlopes = study::convergenceSlopes(sobolPoints);
+  REQUIRE(sobolSlopes.size() == 1u);
+  INFO("mis sobol slope " << sobolSlopes[0].slope);
+  CHECK(sobolSlopes[0].slope < -0.85);
+  double randomAt64 = 0;
+  for (const auto& p : points)
+    if (p.technique == "mis" && p.spp == 64) randomAt64 = p.relMse.mean;
+  for (const auto& p : sobolPoints) {
+    if (p.spp != 64) continue;
+    INFO("mis sobol at 64 spp: relMSE " << p.relMse.mean << " (random " << randomAt64 << "), bias "
+                                        << p.bias.mean << " +- " << p.bias.halfWidth);
+    CHECK(p.technique == "mis sobol");
+    CHECK(p.relMse.mean < randomAt64);
+    CHECK(!p.bias.excludesZero());
+  }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

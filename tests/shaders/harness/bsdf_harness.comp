@@ -57,7 +57,7 @@ void main() {
   if (i >= gCount) return;
   if (gMode == MODE_SAMPLE) {
     DisneyMaterial m = unpackDisney(gMaterial[0]);
-    Rng rng = rngCreate(uint2(i, 0u), 0u, gSeed);
+    Rng rng = rngCreate(uint2(i, 0u), 0u, gSeed, RNG_SAMPLER_RANDOM);
     uint k = pcgHash(gSeed);
     float u0 = float(pcgHash(pcgHash(3u * i + 0u) ^ k) >> 8u) * (1.0 / 16777216.0);
     float u1 = float(pcgHash(pcgHash(3u * i + 1u) ^ k) >> 8u) * (1.0 / 16777216.0);
@@ -73,7 +73,7 @@ void main() {
     gResults[2u * i] = float4(forward.f, forward.pdf);
     gResults[2u * i + 1u] = float4(backward.f, backward.pdf);
   } else if (gMode == MODE_SWEEP) {
-    Rng rng = rngCreate(uint2(i, 1u), 0u, gSeed);
+    Rng rng = rngCreate(uint2(i, 1u), 0u, gSeed, RNG_SAMPLER_RANDOM);
     MaterialData d;
     d.baseColor = float4(pick(rng), pick(rng), pick(rng), 0.0);
     d.emission = float4(0.0, 0.0, 0.0, 0.0);
@@ -97,7 +97,7 @@ void main() {
     float badDirection = (s.lobe != BSDF_LOBE_NONE && abs(length(s.wi) - 1.0) > 1e-3) ? 1.0 : 0.0;
     gResults[i] = float4(badEval, badSample, badDirection, 0.0);
   } else {
-    Rng rng = rngCreate(uint2(i, 2u), 0u, gSeed);
+    Rng rng = rngCreate(uint2(i, 2u), 0u, gSeed, RNG_SAMPLER_RANDOM);
     float3 n = pickDirection(rng);
     float tiny = rngNext(rng) < 0.5 ? 1e-20 : 0.0;
     n = normalize(n + float3(tiny, -tiny, 0.0));
