@@ -67,17 +67,20 @@ uint nestedUniformScramble(uint x, uint seed) {
   return reversebits(laineKarrasPermutation(reversebits(x), seed));
 }
 
-// Second Sobol dimension (generator matrix: Pascal's triangle mod 2); the
-// first is reversebits(index).
-uint sobolSecondDimension(uint index) {
-  uint result = 0u;
-  uint column = 0x80000000u;
-  while (index != 0u) {
-    if ((index & 1u) != 0u) result ^= column;
-    index >>= 1u;
-    column ^= column >> 1u;
-  }
-  return result;
+// The first two Sobol dimensions of `index`, bits reversed (least
+// significant bit = first binary digit), the form an Owen scramble works on.
+// The first dimension is the van der Corput sequence: reversed, the index
+// itself. The second's generator matrix is Pascal's triangle mod 2: digit i
+// is the parity of the index bits j with (i & j) == i (Lucas), a superset
+// sum that five masked shifts compute (rather than a loop over 32 columns).
+uint sobolReversed(uint index, uint dimension) {
+  if (dimension == 0u) return index;
+  index ^= (index >> 1u) & 0x55555555u;
+  index ^= (index >> 2u) & 0x33333333u;
+  index ^= (index >> 4u) & 0x0f0f0f0fu;
+  index ^= (index >> 8u) & 0x00ff00ffu;
+  index ^= (index >> 16u) & 0x0000ffffu;
+  return index;
 }
 
 // 24 bits of a 32-bit fraction, so 1.0 is never returned.
@@ -89,8 +92,10 @@ float rngNext(inout Rng r) {
     uint pair = r.dimension >> 1u;
     uint pairSeed = pcgHash(r.state ^ (pair * 0x68bc21ebu));
     uint shuffled = nestedUniformScramble(r.index, pairSeed);
-    uint bits = (r.dimension & 1u) == 0u ? reversebits(shuffled) : sobolSecondDimension(shuffled);
-    bits = nestedUniformScramble(bits, pcgHash(pairSeed + 1u + (r.dimension & 1u)));
+    // The coordinate's Owen scramble, nestedUniformScramble without the
+    // reversal sobolReversed saves.
+    uint bits = reversebits(laineKarrasPermutation(sobolReversed(shuffled, r.dimension & 1u),
+                                                   pcgHash(pairSeed + 1u + (r.dimension & 1u))));
     r.dimension += 1u;
     return rngToUnitFloat(bits);
   }
