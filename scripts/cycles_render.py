@@ -8,8 +8,10 @@ The settings match Penumbra's path tracer: a 1-pixel box filter (Penumbra
 jitters uniformly in the pixel), no clamping, no denoising, no adaptive
 sampling, `--max-depth` bounces of every kind, emitters that emit from their
 front face only (the quad's winding gives its normal, as in Penumbra). It
-writes a linear RGBA EXR and prints one line, `cycles: render_s=S spp=N`,
-the wall time of the render alone (scene setup excluded).
+writes a linear RGBA EXR and prints one line, `cycles: render_s=S spp=N
+pattern=P`: the wall time of the render alone (scene setup excluded) and
+Cycles' sampling pattern (its default; Blender 3.4: progressive
+multi-jittered).
 """
 
 import argparse
@@ -158,7 +160,7 @@ def main():
     start = time.perf_counter()
     bpy.ops.render.render(write_still=True)
     seconds = time.perf_counter() - start
-    print(f"cycles: render_s={seconds:.4f} spp={args.spp}", flush=True)
+    print(f"cycles: render_s={seconds:.4f} spp={args.spp} pattern={cy.sampling_pattern}", flush=True)
 
 
 main()
