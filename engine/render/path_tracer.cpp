@@ -153,12 +153,14 @@ constexpr double kRebaseDistance = 64.0;
 
 gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
   gpu::PointLight p;
-  const bool spot = l.outerConeDegrees < 180.0f;
-  p.position = toFloat4(glm::vec3(l.position - renderOrigin),
+  const bool directional = l.type == scene::LightType::Directional;
+  p.position = toFloat4(directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin),
                         std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
-  p.intensity = toFloat4(l.intensity);
-  p.spot = toFloat4(glm::normalize(l.direction),
-                    spot ? std::cos(glm::radians(l.outerConeDegrees)) : -2.0f);
+  p.intensity = toFloat4(l.intensity, directional ? 0.0f : l.range);
+  float marker = float(PT_LIGHT_POINT);
+  if (l.type == scene::LightType::Spot) marker = std::cos(glm::radians(l.outerConeDegrees));
+  if (directional) marker = float(PT_LIGHT_DIRECTIONAL);
+  p.spot = toFloat4(glm::normalize(l.direction), marker);
   return p;
 }
 

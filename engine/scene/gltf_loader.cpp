@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 
+#include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_primitives.h"
 #include "scene/gltf_textures.h"
@@ -306,6 +307,8 @@ class Importer {
         for (uint32_t mesh : meshesOf(node.mesh, where))
           out_.scene.instances.push_back({mesh, world});
       if (node.camera >= 0) addCamera(index, world);
+      if (auto light = gltf::nodeLight(model_, node, world, where))
+        out_.scene.pointLights.push_back(*light);
       if (node.skin >= 0 && !warnedSkin_) {
         warn(fmt::format("{}: skins are ignored (bind pose only)", at()));
         warnedSkin_ = true;

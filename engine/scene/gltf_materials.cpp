@@ -84,7 +84,8 @@ const std::vector<std::string_view>& supportedExtensions() {
                                                    "KHR_materials_clearcoat",
                                                    "KHR_materials_specular",
                                                    "KHR_materials_sheen",
-                                                   "KHR_texture_transform"};
+                                                   "KHR_texture_transform",
+                                                   "KHR_lights_punctual"};  // gltf_lights.h
   return names;
 }
 

@@ -103,14 +103,18 @@ struct Material {
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));
 };
 
-// A delta light for NEE and Whitted: a point light, or a spot light when
-// outerConeDegrees < 180.
+enum class LightType { Point, Spot, Directional };
+
+// A delta light for NEE and Whitted: a point, spot or directional light
+// (scene files' "lights", glTF's KHR_lights_punctual).
 struct PointLight {
-  glm::dvec3 position{0.0};   // double, as every world placement (Instance)
-  glm::vec3 intensity{1.0f};  // radiant intensity, W/sr per channel
-  glm::vec3 direction{0.0f, -1.0f, 0.0f};
-  float innerConeDegrees = 180.0f;
+  LightType type = LightType::Point;
+  glm::dvec3 position{0.0};   // double, as every world placement (Instance); not directional
+  glm::vec3 intensity{1.0f};  // radiant intensity, W/sr per channel; directional: irradiance, W/m^2
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way a spot faces, a directional light travels
+  float innerConeDegrees = 180.0f;         // spot: full intensity within, falling off to outer
   float outerConeDegrees = 180.0f;
+  float range = 0.0f;  // point and spot: no light beyond this distance (0: unlimited)
 };
 
 struct Mesh {

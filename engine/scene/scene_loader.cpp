@@ -224,17 +224,41 @@ Scene parseScene(std::string_view text, const std::string& source,
     for (const auto& l : lights) {
       const std::string where = at + " light";
       const std::string type = require(l, "type", where).get<std::string>();
-      if (type != "point" && type != "spot")
-        throw Error(fmt::format("{}: unknown light type '{}' (point, spot)", where, type));
       PointLight light;
-      light.position =
-          readDVec3(require(l, "position", where), where + " position") * double(scale);
+      if (type == "point") {
+        light.type = LightType::Point;
+      } else if (type == "spot") {
+        light.type = LightType::Spot;
+      } else if (type == "directional") {
+        light.type = LightType::Directional;
+      } else {
+        throw Error(
+            fmt::format("{}: unknown light type '{}' (point, spot, directional)", where, type));
+      }
+      // A directional light's "intensity" is its irradiance.
       light.intensity = readVec3(require(l, "intensity", where), where + " intensity");
-      if (type == "spot") {
-        light.direction =
-            glm::normalize(readVec3(require(l, "direction", where), where + " direction"));
+      if (light.intensity.r < 0 || light.intensity.g < 0 || light.intensity.b < 0)
+        throw Error(where + " intensity: must be >= 0");
+      if (light.type != LightType::Directional)
+        light.position =
+            readDVec3(require(l, "position", where), where + " position") * double(scale);
+      if (light.type != LightType::Point) {
+        const glm::vec3 direction = readVec3(require(l, "direction", where), where + " direction");
+        if (!(glm::length(direction) > 0.0f)) throw Error(where + " direction: must not be zero");
+        light.direction = glm::normalize(direction);
+      }
+      if (light.type == LightType::Spot) {
         light.outerConeDegrees = require(l, "outerConeDegrees", where).get<float>();
         light.innerConeDegrees = l.value("innerConeDegrees", light.outerConeDegrees);
+        if (!(light.outerConeDegrees > 0.0f && light.outerConeDegrees < 180.0f))
+          throw Error(where + " outerConeDegrees: must be in (0, 180)");
+        if (!(light.innerConeDegrees >= 0.0f && light.innerConeDegrees <= light.outerConeDegrees))
+          throw Error(fmt::format("{}: innerConeDegrees {} must be in 0..outerConeDegrees ({})",
+                                  where, light.innerConeDegrees, light.outerConeDegrees));
+      }
+      if (light.type != LightType::Directional && l.contains("range")) {
+        light.range = l.at("range").get<float>() * scale;
+        if (!(light.range > 0.0f)) throw Error(where + " range: must be > 0");
       }
       scene.pointLights.push_back(light);
     }

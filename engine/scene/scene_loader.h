@@ -13,9 +13,12 @@
 //         specular, specularTint, sheen, sheenTint, clearcoat, clearcoatGloss,
 //         specTrans, ior, subsurface, thin; "lambert": albedo (= baseColor);
 //       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior
-//     "lights": [ { "type": "point", "position": [..], "intensity": [..] },
+//     "lights": [ { "type": "point", "position": [..], "intensity": [..],  // W/sr
+//                   "range": 10 },                       // optional: no light beyond
 //                 { "type": "spot", ..., "direction": [..], "outerConeDegrees": 30,
-//                   "innerConeDegrees": 25 } ],          // optional
+//                   "innerConeDegrees": 25 },            // falloff as KHR_lights_punctual
+//                 { "type": "directional", "direction": [..],  // the way the light travels
+//                   "intensity": [..] } ],               // irradiance, W/m^2; optional
 //     "ambient": [r,g,b],                               // optional, Whitted
 //     "meshes": [ { "name": "floor", "material": "white",
 //                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ],

@@ -47,10 +47,16 @@ float emissiveTrianglePdfArea(uint index) {
   return tri.p0.w / tri.p1.w;
 }
 
-// Radiance-scaled irradiance factor of a point or spot light at `position`:
-// intensity / distance^2 times the spot's smoothstep falloff between its inner
-// and outer cone. `toLight` returns the unit direction, `distance` the range.
+// Irradiance a delta light gives at `position` on a surface facing it: a
+// directional light's own, else intensity / distance^2 times the spot's
+// falloff and the range's window (both as KHR_lights_punctual recommends).
+// `toLight` returns the unit direction, `distance` the distance to the light.
 float3 pointLightIncident(PointLight light, float3 position, out float3 toLight, out float distance) {
+  if (light.spot.w < -2.5) {  // PT_LIGHT_DIRECTIONAL
+    toLight = -light.spot.xyz;
+    distance = PT_DIRECTIONAL_SHADOW_LENGTH;
+    return light.intensity.xyz;
+  }
   float3 d = light.position.xyz - position;
   distance = length(d);
   toLight = distance > 0.0 ? d / distance : float3(0.0, 0.0, 1.0);
@@ -58,12 +64,32 @@ float3 pointLightIncident(PointLight light, float3 position, out float3 toLight,
   float falloff = 1.0;
   float cosOuter = light.spot.w;
   if (cosOuter > -1.5) {
+    // (cos - cos outer) / (cos inner - cos outer), squared; a hard edge
+    // when the cones are equal.
     float cosInner = light.position.w;
     float cosAngle = dot(-toLight, light.spot.xyz);
-    falloff = cosInner > cosOuter ? smoothstep(cosOuter, cosInner, cosAngle)
+    float t = cosInner > cosOuter ? saturate((cosAngle - cosOuter) / (cosInner - cosOuter))
                                   : (cosAngle >= cosOuter ? 1.0 : 0.0);
+    falloff = t * t;
+  }
+  float range = light.intensity.w;
+  if (range > 0.0) {
+    float r = distance / range;
+    float window = saturate(1.0 - r * r * r * r);
+    falloff *= window * window;
   }
   return light.intensity.xyz * (falloff / (distance * distance));
+}
+
+// The segment a shadow ray from `spawn` to the light must find empty.
+float3 pointLightShadowSegment(PointLight light, float3 spawn, out float segmentLength) {
+  if (light.spot.w < -2.5) {
+    segmentLength = PT_DIRECTIONAL_SHADOW_LENGTH;
+    return -light.spot.xyz;
+  }
+  float3 toLight = light.position.xyz - spawn;
+  segmentLength = length(toLight);
+  return segmentLength > 0.0 ? toLight / segmentLength : float3(0.0, 0.0, 1.0);
 }
 
 // Converts an area density at a point seen at `distance` under `cosLight` to

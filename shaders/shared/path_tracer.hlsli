@@ -109,11 +109,11 @@ ShadowRay pointLightShadowRay(PointLight light, DisneyMaterial material, Frame f
   BsdfEval e = disneyEval(material, wo, wiLocal);
   if (maxComponent(e.f) <= 0.0) return r;
   float3 spawn = offsetRayOrigin(position, dot(wi, ng) > 0.0 ? ng : -ng);
-  float3 toLight = light.position.xyz - spawn;
-  float shadowLength = length(toLight);
+  float shadowLength;
+  float3 toLight = pointLightShadowSegment(light, spawn, shadowLength);
   if (!(shadowLength > 0.0)) return r;
   r.origin = spawn;
-  r.direction = toLight / shadowLength;
+  r.direction = toLight;
   r.tMax = shadowLength;
   r.contribution = clampContribution(throughput * e.f * incident * abs(wiLocal.z), clampLimit);
   return r;

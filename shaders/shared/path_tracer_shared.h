@@ -188,11 +188,18 @@ struct TextureRefData {
 };
 
 // A point or spot light: a delta light, sampled by next-event estimation only.
+// A delta light: point, spot or directional (scene::PointLight).
 struct PointLight {
-  float4 position;   // xyz; w cos(inner cone angle) of a spot light
-  float4 intensity;  // rgb radiant intensity (W/sr)
-  float4 spot;       // xyz direction a spot light faces; w cos(outer cone angle), -2 for a point light
+  float4 position;   // xyz (none for a directional light); w cos(inner cone angle) of a spot light
+  float4 intensity;  // rgb radiant intensity (W/sr), a directional light's irradiance (W/m^2);
+                     // w range (0: none), beyond which the light does not reach
+  float4 spot;       // xyz the direction the light faces (spot) or travels (directional);
+                     // w cos(outer cone angle) of a spot, else PT_LIGHT_POINT or PT_LIGHT_DIRECTIONAL
 };
+#define PT_LIGHT_POINT -2.0
+#define PT_LIGHT_DIRECTIONAL -3.0
+// A directional light's shadow rays end this far away (world units).
+#define PT_DIRECTIONAL_SHADOW_LENGTH 1e30
 
 // An emitting triangle in world space, for next-event estimation. A textured
 // emitter's radiance is the material's factor; the shader multiplies in the

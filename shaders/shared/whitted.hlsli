@@ -87,9 +87,9 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
       float3 incident = pointLightIncident(light, hit.position, toLight, distance);
       // Lights behind the geometric surface stay dark whatever the shading normal says.
       if (maxComponent(incident) <= 0.0 || dot(n, toLight) <= 0.0 || dot(ng, toLight) <= 0.0) continue;
-      float3 toLightFromSpawn = light.position.xyz - spawnOut;
-      float shadowLength = length(toLightFromSpawn);
-      if (traceVisibility(spawnOut, toLightFromSpawn / shadowLength, shadowLength))
+      float shadowLength;
+      float3 toLightFromSpawn = pointLightShadowSegment(light, spawnOut, shadowLength);
+      if (shadowLength > 0.0 && traceVisibility(spawnOut, toLightFromSpawn, shadowLength))
         local += phongTerm(p, n, toLight, toViewer, incident);
     }
     radiance += ray.weight * opaque * local;

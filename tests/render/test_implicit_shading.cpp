@@ -54,6 +54,7 @@ scene::Scene shadowRow() {
     light.position = glm::vec3(region < 4 ? regionLight(region) : kReceiverLight);
     light.intensity = glm::vec3(float(kIntensity));
     light.direction = {0, 0, -1};
+    light.type = scene::LightType::Spot;
     light.innerConeDegrees = light.outerConeDegrees = kConeDegrees;
     s.pointLights.push_back(light);
   }

@@ -217,7 +217,7 @@ TEST_CASE("whitted: a mirror shows the wall it faces, lit as the Phong model say
   // reflected ray lands (n.l / d^2), not just on which wall it is.
   auto s = emptyScene("whitted mirror", 40.0f);
   s.ambient = glm::vec3(0.1f);
-  s.pointLights.push_back({glm::vec3(0.2f, 1.2f, 1.5f), glm::vec3(3.0f)});
+  s.pointLights.push_back({scene::LightType::Point, glm::vec3(0.2f, 1.2f, 1.5f), glm::vec3(3.0f)});
   const uint32_t mirrorMaterial = addMaterial(s, mirror());
   const uint32_t red = addMaterial(s, phong("red", kRed));
   const uint32_t green = addMaterial(s, phong("green", kGreen));

@@ -59,8 +59,9 @@ TEST_CASE("bad scene input gives one clear error", "[scene]") {
     "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
     "materials":{"white":{"albedo":[0.5,0.5,0.5]}},
     "meshes":[{"name":"q","material":"blue","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
-  REQUIRE_THROWS_WITH(scene::parseScene(unknownMaterial, "t.json"),
-                      ContainsSubstring("mesh 'q'") && ContainsSubstring("unknown material 'blue'"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(unknownMaterial, "t.json"),
+      ContainsSubstring("mesh 'q'") && ContainsSubstring("unknown material 'blue'"));
   const char* badAlbedo = R"({"format":"penumbra-scene","version":1,
     "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
     "materials":{"white":{"albedo":[1.5,0.5,0.5]}},
@@ -104,4 +105,44 @@ TEST_CASE("glTF files in a scene file bring their textures, indices offset", "[s
   REQUIRE(s.textures[1].rgba8[4 + 3] == 0);
   REQUIRE(s.textures[0].rgba8[4 + 3] == 255);
   REQUIRE_NOTHROW(scene::validate(s));
+}
+
+TEST_CASE("scene-file lights: point with range, spot, directional; bad cones refused", "[scene]") {
+  auto withLights = [](const std::string& lights) {
+    return R"({"format":"penumbra-scene","version":1,"unitScale":0.5,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
+    "materials":{"white":{"albedo":[0.5,0.5,0.5]}},
+    "lights":[)" +
+           lights + R"(],
+    "meshes":[{"name":"q","material":"white","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+  };
+  const auto scene = scene::parseScene(
+      withLights(R"({"type":"point","position":[0,4,0],"intensity":[1,1,1],"range":6},
+                    {"type":"spot","position":[0,4,0],"intensity":[1,1,1],"direction":[0,-2,0],
+                     "outerConeDegrees":30,"innerConeDegrees":10},
+                    {"type":"directional","direction":[0,-1,0],"intensity":[2,2,2]})"),
+      "t.json");
+  REQUIRE(scene.pointLights.size() == 3u);
+  CHECK(scene.pointLights[0].type == scene::LightType::Point);
+  CHECK(scene.pointLights[0].position.y == 2.0);  // unit scale 0.5
+  CHECK(scene.pointLights[0].range == 3.0f);      // scaled as positions are
+  CHECK(scene.pointLights[1].type == scene::LightType::Spot);
+  CHECK(scene.pointLights[1].direction.y == -1.0f);
+  CHECK(scene.pointLights[1].innerConeDegrees == 10.0f);
+  CHECK(scene.pointLights[2].type == scene::LightType::Directional);
+  CHECK(scene.pointLights[2].intensity.r == 2.0f);
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(withLights(R"({"type":"spot","position":[0,4,0],"intensity":[1,1,1],
+        "direction":[0,-1,0],"outerConeDegrees":10,"innerConeDegrees":30})"),
+                        "t.json"),
+      ContainsSubstring("t.json' light") && ContainsSubstring("innerConeDegrees 30"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(withLights(R"({"type":"area","position":[0,4,0],"intensity":[1,1,1]})"),
+                        "t.json"),
+      ContainsSubstring("unknown light type 'area'"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(
+          withLights(R"({"type":"directional","direction":[0,0,0],"intensity":[1,1,1]})"),
+          "t.json"),
+      ContainsSubstring("direction: must not be zero"));
 }

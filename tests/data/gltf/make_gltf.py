@@ -765,6 +765,60 @@ def large_world():
     b.write_gltf("far_translation.gltf")
 
 
+def punctual_lights():
+    """KHR_lights_punctual over a grey floor (albedo 0.5, no specular layer,
+    40 m square at y = 0), seen by a camera 3 m above the origin looking
+    straight down (yfov 90 degrees; image right = +x, image down = +z):
+    a coloured point light 2 m up, the same with range 3, a spot facing down
+    (inner 20, outer 40 degrees), a directional light travelling down and
+    towards +z at 45 degrees; and two invalid files."""
+    def base():
+        b = Builder()
+        b.doc["materials"] = [
+            {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1],
+                                                       "metallicFactor": 0, "roughnessFactor": 1},
+             "extensions": {"KHR_materials_specular": {"specularFactor": 0}}}]
+        b.doc["extensionsUsed"] = ["KHR_materials_specular", "KHR_lights_punctual"]
+        floor = quad(b, [(-20, 0, 20), (20, 0, 20), (20, 0, -20), (-20, 0, -20)], (0, 1, 0))
+        floor["material"] = 0
+        b.add("meshes", {"name": "floor", "primitives": [floor]})
+        b.add("nodes", {"mesh": 0})
+        b.doc["cameras"] = [{"type": "perspective",
+                             "perspective": {"yfov": math.pi / 2, "znear": 0.01}}]
+        h = math.sqrt(0.5)
+        b.add("nodes", {"name": "view", "camera": 0, "translation": [0, 3, 0],
+                        "rotation": [-h, 0, 0, h]})
+        return b
+
+    def with_light(light, node):
+        b = base()
+        b.doc["extensions"] = {"KHR_lights_punctual": {"lights": [light]}}
+        node["extensions"] = {"KHR_lights_punctual": {"light": 0}}
+        b.add("nodes", node)
+        b.doc["scenes"] = [{"nodes": [0, 1, 2]}]
+        return b
+
+    h = math.sqrt(0.5)
+    down = [-h, 0, 0, h]  # the light's -z turned to -y
+    with_light({"type": "point", "color": [1, 0.5, 0.25], "intensity": 8},
+               {"translation": [0, 2, 0]}).write_gltf("lights_point.gltf")
+    with_light({"type": "point", "intensity": 8, "range": 3},
+               {"translation": [0, 2, 0]}).write_gltf("lights_point_range.gltf")
+    with_light({"type": "spot", "intensity": 8,
+                "spot": {"innerConeAngle": math.radians(20), "outerConeAngle": math.radians(40)}},
+               {"translation": [0, 2, 0], "rotation": down}).write_gltf("lights_spot.gltf")
+    # -z turned by -135 degrees about x: travelling along (0, -1, 1) / sqrt 2.
+    a = math.radians(-135) / 2
+    with_light({"type": "directional", "intensity": 3},
+               {"rotation": [math.sin(a), 0, 0, math.cos(a)]}).write_gltf("lights_directional.gltf")
+    with_light({"type": "spot", "intensity": 8,
+                "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.4}},
+               {"translation": [0, 2, 0], "rotation": down}).write_gltf("invalid_light_cone.gltf")
+    b = with_light({"type": "point", "intensity": 8}, {"translation": [0, 2, 0]})
+    b.doc["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 3
+    b.write_gltf("invalid_light_index.gltf")
+
+
 if __name__ == "__main__":
     transforms()
     sparse()
@@ -785,3 +839,4 @@ if __name__ == "__main__":
     render_quads()
     scene_files()
     large_world()
+    punctual_lights()
