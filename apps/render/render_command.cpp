@@ -39,6 +39,8 @@ struct RenderOptions {
   render::SamplingStrategy strategy = render::SamplingStrategy::Mis;
   render::MisHeuristic heuristic = render::MisHeuristic::Power;
   render::Sampler sampler = render::Sampler::Random;
+  float aperture = 0.0f;
+  float focusDistance = 1.0f;
   float clamp = 0.0f;
   bool noRoulette = false;
   bool validation = false;
@@ -169,10 +171,17 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
 
 int runRender(const RenderOptions& o, const CLI::App& cmd) {
   // Everything that can fail on bad input fails before any rendering starts.
-  const render::RenderJob job = makeJob(o, cmd);
+  render::RenderJob job = makeJob(o, cmd);
   const uint32_t width = job.width, height = job.height;
   scene::Scene scene = scene::loadScene(job.scene);
   if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
+  // The thin lens given on the command line, on whichever camera renders.
+  for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
+    if (!c) continue;
+    if (cmd.count("--aperture") > 0) c->apertureRadius = o.aperture;
+    if (cmd.count("--focus-distance") > 0) c->focusDistance = o.focusDistance;
+    scene::validateCamera(*c);
+  }
   if (!job.vary.empty() || !job.set.empty()) scene::changeMaterialRow(scene, job.vary, job.set);
   // The viewer's Material-menu edits, on top of the row as the viewer had it.
   render::applyMaterialOverrides(scene, job.materials, o.settingsFile);
@@ -278,6 +287,12 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--camera", o->camera,
                   "Render from the scene's camera of this name (glTF camera or node name; "
                   "default: the first camera in node order)");
+  cmd->add_option("--aperture", o->aperture,
+                  "Thin-lens aperture radius in metres (0: pinhole, everything sharp)")
+      ->check(CLI::Range(0.0f, 1000.0f));
+  cmd->add_option("--focus-distance", o->focusDistance,
+                  "Distance in metres along the view to the plane in focus (with --aperture)")
+      ->check(CLI::Range(1e-6f, 1e9f));
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--spp", o->spp, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 20))

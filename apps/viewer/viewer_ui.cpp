@@ -76,8 +76,17 @@ void Viewer::drawCameraMenu() {
     camera_->reset();
     tracer_->setCamera(camera_->camera());
   }
+  scene::Camera lens = c;
+  bool lensChanged =
+      ImGui::DragFloat("aperture radius (m)", &lens.apertureRadius, 0.0005f, 0.0f, 1.0f, "%.4f");
+  lensChanged |= ImGui::DragFloat("focus distance (m)", &lens.focusDistance, 0.01f, 0.001f, 1e5f,
+                                  "%.3f", ImGuiSliderFlags_Logarithmic);
+  if (lensChanged) {
+    camera_->setCamera(lens);
+    tracer_->setCamera(lens);
+  }
   ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel: speed");
-  ImGui::TextDisabled("double-click: look at that surface, select its material");
+  ImGui::TextDisabled("double-click: look at that surface, focus on it, select its material");
   ImGui::Separator();
   ImGui::InputText("##bookmark", bookmarkName_, sizeof(bookmarkName_));
   ImGui::SameLine();

@@ -730,6 +730,7 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
 }
 
 void PathTracer::setCamera(const scene::Camera& camera) {
+  scene::validateCamera(camera);
   camera_ = camera;
   if (glm::length(camera.position - renderOrigin_) > kRebaseDistance)
     rebase(renderOriginNear(camera.position));
@@ -823,7 +824,8 @@ CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t he
   const glm::vec3 up = glm::cross(right, forward);
   return {toFloat4(glm::vec3(camera.position - renderOrigin),
                    std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f)),
-          toFloat4(right, float(width) / float(height)), toFloat4(up), toFloat4(forward)};
+          toFloat4(right, float(width) / float(height)), toFloat4(up, camera.apertureRadius),
+          toFloat4(forward, camera.focusDistance)};
 }
 
 uint32_t frameFlags(const PathTracerSettings& s) {

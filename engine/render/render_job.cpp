@@ -275,7 +275,9 @@ std::string renderJobToJson(const RenderJob& job) {
     doc["camera"] = {{"position", toJson(job.camera->position)},
                      {"forward", toJson(job.camera->forward)},
                      {"up", toJson(job.camera->up)},
-                     {"verticalFovDegrees", job.camera->verticalFovDegrees}};
+                     {"verticalFovDegrees", job.camera->verticalFovDegrees},
+                     {"apertureRadius", job.camera->apertureRadius},
+                     {"focusDistance", job.camera->focusDistance}};
   }
   doc["width"] = job.width;
   doc["height"] = job.height;
@@ -333,6 +335,12 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
       if (!c["verticalFovDegrees"].is_number())
         r.fail("camera.verticalFovDegrees", "must be a number");
       camera.verticalFovDegrees = c["verticalFovDegrees"].get<float>();
+    }
+    for (auto [key, field] : {std::pair{"apertureRadius", &scene::Camera::apertureRadius},
+                              std::pair{"focusDistance", &scene::Camera::focusDistance}}) {
+      if (!c.contains(key)) continue;
+      if (!c[key].is_number()) r.fail(std::string("camera.") + key, "must be a number");
+      camera.*field = c[key].get<float>();
     }
     job.camera = camera;
   }

@@ -52,10 +52,21 @@ uint64_t Scene::triangleCount() const {
   return n;
 }
 
+void validateCamera(const Camera& camera) {
+  if (!(camera.apertureRadius >= 0.0f) || !std::isfinite(camera.apertureRadius))
+    throw Error(fmt::format("camera: aperture radius {} must be finite and >= 0 (0: pinhole)",
+                            camera.apertureRadius));
+  if (camera.apertureRadius > 0.0f &&
+      (!(camera.focusDistance > 0.0f) || !std::isfinite(camera.focusDistance)))
+    throw Error(
+        fmt::format("camera: focus distance {} must be finite and > 0", camera.focusDistance));
+}
+
 void validate(const Scene& scene) {
   auto fail = [&](const std::string& what) {
     throw Error(fmt::format("scene '{}': {}", scene.name, what));
   };
+  validateCamera(scene.camera);
   if (scene.meshes.empty() && scene.implicits.empty())
     fail("has no geometry (neither meshes nor implicit objects)");
   for (const auto& mesh : scene.meshes) {
@@ -96,9 +107,9 @@ void validate(const Scene& scene) {
       if (!unit(m.baseColor[i]) || !(m.emission[i] >= 0.0f))
         fail(fmt::format("material '{}': baseColor must lie in [0, 1] and emission be non-negative",
                          m.name));
-    for (float v : {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen,
-                    m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface,
-                    m.reflectivity, m.transparency})
+    for (float v :
+         {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen, m.sheenTint,
+          m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface, m.reflectivity, m.transparency})
       if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
     if (!(m.ior >= 1.0f && m.ior <= 4.0f))
       fail(fmt::format("material '{}': ior {} is outside [1, 4]", m.name, m.ior));

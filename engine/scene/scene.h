@@ -145,6 +145,11 @@ struct Camera {
   glm::vec3 forward{0.0f, 0.0f, 1.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float verticalFovDegrees = 45.0f;
+  // A thin lens: rays leave a disk of this radius (world units) about the
+  // position and meet again on the plane `focusDistance` ahead along
+  // forward, which is in focus. 0: a pinhole, everything sharp.
+  float apertureRadius = 0.0f;
+  float focusDistance = 1.0f;
 };
 
 // The material-test row (scene/material_row.h): which materials belong to
@@ -188,5 +193,8 @@ void selectCamera(Scene& scene, const std::string& name);
 // implicit objects are well-formed (validateImplicit); throws penumbra::Error
 // naming the scene and the part.
 void validate(const Scene& scene);
+// A usable camera: a finite aperture radius >= 0 and, with a lens, a focus
+// distance > 0. Throws penumbra::Error saying which.
+void validateCamera(const Camera& camera);
 
 }  // namespace penumbra::scene

@@ -206,6 +206,13 @@ Scene parseScene(std::string_view text, const std::string& source,
         glm::normalize(readVec3(require(cam, "up", at + " camera"), at + " camera.up"));
     scene.camera.verticalFovDegrees =
         require(cam, "verticalFovDegrees", at + " camera").get<float>();
+    scene.camera.apertureRadius = cam.value("apertureRadius", 0.0f) * scale;
+    scene.camera.focusDistance = cam.value("focusDistance", 1.0f / scale) * scale;
+    try {
+      validateCamera(scene.camera);
+    } catch (const Error& e) {
+      throw Error(at + " " + e.what());
+    }
   }
 
   std::map<std::string, uint32_t> materialIndex;

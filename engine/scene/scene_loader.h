@@ -19,6 +19,7 @@
 //                   "innerConeDegrees": 25 },            // falloff as KHR_lights_punctual
 //                 { "type": "directional", "direction": [..],  // the way the light travels
 //                   "intensity": [..] } ],               // irradiance, W/m^2; optional
+//     "camera": { ..., "apertureRadius": 0, "focusDistance": 1 },  // optional thin lens
 //     "ambient": [r,g,b],                               // optional, Whitted
 //     "meshes": [ { "name": "floor", "material": "white",
 //                   "quads": [ [[x,y,z],[x,y,z],[x,y,z],[x,y,z]], ... ] } ],

@@ -13,8 +13,10 @@ void main() {
   for (uint s = 0u; s < samples; s += 1u) {
     Rng rng = sampleRng(frame, pixel, frame.lights.z + before + s);
     float2 jitter = pixelSample(rng, s, samples);
-    float3 direction = cameraRayDirection(frame, float2(pixel) + jitter);
-    sum += traceWhitted(frame, frame.cameraPosition.xyz, direction);
+    float3 origin;
+    float3 direction;
+    cameraRay(frame, float2(pixel) + jitter, rng, origin, direction);
+    sum += traceWhitted(frame, origin, direction);
   }
   accumulate(pixel, sum, samples, before);
 }

@@ -3,6 +3,7 @@
 #define PENUMBRA_CAMERA_HLSLI
 
 #include "rng.hlsli"
+#include "sampling.hlsli"
 
 // `filmPosition` is in pixels, (0,0) the top-left corner of the image.
 float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
@@ -42,6 +43,26 @@ float2 pixelSample(inout Rng rng, uint index, uint count) {
   float u1 = rngNext(rng);
   if (rng.kind == RNG_SAMPLER_SOBOL) return float2(u0, u1);
   return jitteredPixelSample(index, count, u0, u1);
+}
+
+// The camera ray through `filmPosition`: the pinhole's, or with a thin lens
+// (cameraUp.w > 0) from a point of the aperture disk towards where the
+// pinhole ray meets the plane in focus, so that plane stays sharp and
+// everything nearer or farther blurs by its circle of confusion. A pinhole
+// draws no random numbers, so its images do not change with the lens code.
+void cameraRay(FrameConstants c, float2 filmPosition, inout Rng rng, out float3 origin,
+               out float3 direction) {
+  origin = c.cameraPosition.xyz;
+  direction = cameraRayDirection(c, filmPosition);
+  float lensRadius = c.cameraUp.w;
+  if (lensRadius > 0.0) {
+    float3 inFocus = origin + direction * (c.cameraForward.w / dot(direction, c.cameraForward.xyz));
+    float u0 = rngNext(rng);
+    float u1 = rngNext(rng);
+    float2 lens = sampleConcentricDisk(u0, u1) * lensRadius;
+    origin += lens.x * c.cameraRight.xyz + lens.y * c.cameraUp.xyz;
+    direction = normalize(inFocus - origin);
+  }
 }
 
 #endif

@@ -473,8 +473,7 @@ bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, out Sha
 PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 direction) {
   Rng rng = sampleRng(c, launchPixel(), c.lights.z + c.image.w + s);
   float2 jitter = pixelSample(rng, s, c.image.z);
-  origin = c.cameraPosition.xyz;
-  direction = cameraRayDirection(c, float2(launchPixel()) + jitter);
+  cameraRay(c, float2(launchPixel()) + jitter, rng, origin, direction);
   return startPath(rng, dot(direction, c.cameraForward.xyz));
 }
 

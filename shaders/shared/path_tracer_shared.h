@@ -124,8 +124,8 @@ namespace penumbra::gpu {
 struct FrameConstants {
   float4 cameraPosition;  // xyz; w = tan(vertical fov / 2)
   float4 cameraRight;     // xyz unit vector; w = aspect ratio (width / height)
-  float4 cameraUp;        // xyz unit vector
-  float4 cameraForward;   // xyz unit vector
+  float4 cameraUp;        // xyz unit vector; w thin-lens aperture radius (0: pinhole)
+  float4 cameraForward;   // xyz unit vector; w focus distance along it
   uint4 image;            // x width, y height, z samples this frame, w samples accumulated before
   uint4 sampling;         // x seed, y max depth (bounces), z Russian roulette start depth, w flags
   // x emissive triangle count, y point light count; z the sample index the

@@ -36,6 +36,9 @@ expect_error "malformed scene file" "broken.json" render --scene "$work/broken.j
 expect_error "unwritable output directory" "does not exist" render --size 8x8 --spp 1 --out "$work/missing/out.png"
 expect_error "unknown output type" "unknown image type" render --size 8x8 --spp 1 --out "$work/out.bmp"
 expect_error "bad size" "--size" render --size 12 --out "$work/out.png"
+expect_error "negative aperture" "--aperture" render --aperture -0.1 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "zero focus distance" "--focus-distance" render --aperture 0.1 --focus-distance 0 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "glTF spot with outer < inner" "spot cone angles" render --scene "$(dirname "$0")/../data/gltf/invalid_light_cone.gltf" --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "d3d12 on Linux" "Windows builds only" render --backend d3d12 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "device index out of range" "does not exist" render --device 99 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "unknown subcommand" "subcommand" bogus

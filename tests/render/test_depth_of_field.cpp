@@ -1,0 +1,128 @@
+// The thin-lens camera: a point-like emitter out of focus images to a disk
+// of the circle of confusion the thin-lens construction gives; in focus, to
+// a point; a bad lens is refused.
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+#include <cmath>
+
+#include "render_test_utils.h"
+#include "util/error.h"
+
+using namespace penumbra;
+using Catch::Matchers::ContainsSubstring;
+
+namespace {
+
+constexpr uint32_t kSize = 64;
+constexpr float kFovDegrees = 40.0f;
+constexpr double kEmitterDistance = 4.0;
+constexpr float kEmitterHalfSize = 0.025f;  // 1.1 px wide from 4 m: a point
+constexpr uint32_t kSpp = 1024;             // about 1200 samples land on the emitter
+
+// A camera at the origin looking along +z at a small square emitter 4 m
+// ahead (facing it), on black.
+scene::Scene pointEmitter(float apertureRadius, float focusDistance) {
+  scene::Scene s;
+  s.name = "point emitter";
+  s.camera.forward = glm::vec3(0, 0, 1);
+  s.camera.up = glm::vec3(0, 1, 0);
+  s.camera.verticalFovDegrees = kFovDegrees;
+  s.camera.apertureRadius = apertureRadius;
+  s.camera.focusDistance = focusDistance;
+  s.materials.push_back(scene::Material::lambert("light", glm::vec3(0.0f), glm::vec3(100.0f)));
+  scene::Mesh quad;
+  quad.name = "emitter";
+  const float h = kEmitterHalfSize, z = float(kEmitterDistance);
+  quad.positions = {{-h, -h, z}, {-h, h, z}, {h, h, z}, {h, -h, z}};  // facing -z
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  s.meshes.push_back(quad);
+  s.instances.push_back({0, glm::dmat4(1.0)});
+  return s;
+}
+
+struct Spot {
+  double flux = 0;        // sum of the pixels' red channel
+  double cx = 0, cy = 0;  // flux-weighted centroid (pixels)
+  double meanSquare = 0;  // flux-weighted mean squared distance from it (pixels^2)
+};
+
+Spot measure(const image::Image& img) {
+  Spot s;
+  for (uint32_t y = 0; y < img.height; ++y)
+    for (uint32_t x = 0; x < img.width; ++x) {
+      const double v = img.pixel(x, y)[0];
+      s.flux += v;
+      s.cx += v * (x + 0.5);
+      s.cy += v * (y + 0.5);
+    }
+  s.cx /= s.flux;
+  s.cy /= s.flux;
+  for (uint32_t y = 0; y < img.height; ++y)
+    for (uint32_t x = 0; x < img.width; ++x) {
+      const double dx = x + 0.5 - s.cx, dy = y + 0.5 - s.cy;
+      s.meanSquare += img.pixel(x, y)[0] * (dx * dx + dy * dy);
+    }
+  s.meanSquare /= s.flux;
+  return s;
+}
+
+}  // namespace
+
+// A lens of radius A focused at z_f sees a point at z_o as a disk on the
+// focal plane of radius A |z_o - z_f| / z_o, which is A |z_o - z_f| /
+// (z_o z_f tan(fov/2)) of the image's half height. The blurred image is the
+// pinhole image spread by a uniform disk of radius R, whose mean squared
+// radius R^2 / 2 adds to the pinhole image's own (the emitter's extent and
+// the pixels'), so R = sqrt(2 (mean square - the pinhole's)). Within half a
+// pixel: a lens of the wrong radius, or rays aimed at the wrong plane, moves
+// R by more (10 % of the 4.4 px radius is 0.44 px).
+TEST_CASE("depth of field: a point out of focus images to the circle of confusion",
+          "[render][gpu][camera]") {
+  auto device = test::makeTestDevice();
+  const double tanHalfFov = std::tan(kFovDegrees * 0.5 * 3.14159265358979323846 / 180.0);
+  render::PathTracerSettings settings;
+  settings.seed = 9;
+
+  const auto pinhole =
+      measure(test::renderScene(*device, pointEmitter(0.0f, 1.0f), kSize, kSize, kSpp, settings));
+  INFO("pinhole: centroid " << pinhole.cx << "," << pinhole.cy << ", mean square "
+                            << pinhole.meanSquare);
+  CHECK(pinhole.meanSquare < 0.6);  // within the 2 x 2 pixels about the centre
+
+  for (float focus : {2.0f, 8.0f}) {
+    const float aperture = 0.2f;
+    const double radius = aperture * std::abs(kEmitterDistance - focus) /
+                          (kEmitterDistance * focus * tanHalfFov) * (kSize / 2.0);
+    const auto img =
+        test::renderScene(*device, pointEmitter(aperture, focus), kSize, kSize, kSpp, settings);
+    REQUIRE(image::countNonFinite(img) == 0);
+    const auto blurred = measure(img);
+    const double measured = std::sqrt(2.0 * (blurred.meanSquare - pinhole.meanSquare));
+    INFO("focus " << focus << " m: disk radius " << measured << " px, thin lens says " << radius
+                  << "; flux " << blurred.flux << " vs pinhole " << pinhole.flux);
+    CHECK(std::abs(measured - radius) < 0.5);
+    // Blurring moves light, it does not make or lose it, nor move its centre.
+    // (Each image's flux is about 1200 samples' worth: 3 % noise.)
+    CHECK(std::abs(blurred.flux / pinhole.flux - 1.0) < 0.1);
+    CHECK(std::abs(blurred.cx - pinhole.cx) < 0.25);
+    CHECK(std::abs(blurred.cy - pinhole.cy) < 0.25);
+  }
+
+  // Focused on the emitter, the lens changes nothing but noise.
+  const auto focused = measure(test::renderScene(
+      *device, pointEmitter(0.2f, float(kEmitterDistance)), kSize, kSize, kSpp, settings));
+  INFO("in focus: mean square " << focused.meanSquare);
+  CHECK(std::abs(focused.meanSquare - pinhole.meanSquare) < 0.05);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("depth of field: a negative aperture or a lens without focus is refused", "[camera]") {
+  scene::Camera c;
+  c.apertureRadius = -0.1f;
+  REQUIRE_THROWS_WITH(scene::validateCamera(c), ContainsSubstring("aperture radius -0.1"));
+  c.apertureRadius = 0.1f;
+  c.focusDistance = 0.0f;
+  REQUIRE_THROWS_WITH(scene::validateCamera(c), ContainsSubstring("focus distance 0"));
+  c.apertureRadius = 0.0f;  // a pinhole needs no focus
+  REQUIRE_NOTHROW(scene::validateCamera(c));
+}
