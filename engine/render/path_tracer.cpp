@@ -262,6 +262,13 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
                                                                       : MATERIAL_ALPHA_OPAQUE;
   d.textures2 = {m.occlusionTexture, alphaMode, 0, 0};
   d.textureParams = {m.normalScale, m.occlusionStrength, m.alpha, m.alphaCutoff};
+  // sigma = -ln(colour) / distance, so exp(-sigma distance) = colour; a
+  // black colour absorbs everything within a millionth of the distance.
+  glm::vec3 sigma(0.0f);
+  if (std::isfinite(m.attenuationDistance) && !m.thin)
+    for (int k = 0; k < 3; ++k)
+      sigma[k] = -std::log(std::max(m.attenuationColor[k], 1e-6f)) / m.attenuationDistance;
+  d.absorption = toFloat4(sigma);
   return d;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "scene/tinygltf.h"
+#include "util/error.h"
 
 namespace penumbra::scene::gltf {
 namespace {
@@ -177,9 +178,16 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
   if (const auto* e = extension(src, "KHR_materials_volume")) {
     m.thin = !(number(*e, "thicknessFactor", 0.0) > 0.0);
     const double distance = number(*e, "attenuationDistance", INFINITY);
-    if (!m.thin && std::isfinite(distance))
+    if (!(distance > 0.0))
+      throw Error(fmt::format("{}: KHR_materials_volume attenuationDistance must be > 0", where));
+    m.attenuationDistance = float(distance);
+    if (const tinygltf::Value& c = e->Get("attenuationColor"); c.IsArray() && c.ArrayLen() == 3)
+      for (int k = 0; k < 3; ++k) m.attenuationColor[k] = clamp01(c.Get(k).GetNumberAsDouble());
+    if (m.thin && std::isfinite(distance))
       warnings.push_back(
-          fmt::format("{}: volume attenuation is not simulated (clear medium)", where));
+          fmt::format("{}: volume attenuation needs thicknessFactor > 0 (a thin surface has no "
+                      "inside); ignored",
+                      where));
   }
 
   if (const auto* e = extension(src, "KHR_materials_clearcoat")) {

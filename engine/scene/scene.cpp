@@ -114,6 +114,12 @@ void validate(const Scene& scene) {
     if (!(m.ior >= 1.0f && m.ior <= 4.0f))
       fail(fmt::format("material '{}': ior {} is outside [1, 4]", m.name, m.ior));
     if (!(m.exponent >= 0.0f)) fail(fmt::format("material '{}': negative Phong exponent", m.name));
+    for (int i = 0; i < 3; ++i)
+      if (!unit(m.attenuationColor[i]))
+        fail(fmt::format("material '{}': attenuationColor must lie in [0, 1]", m.name));
+    if (!(m.attenuationDistance > 0.0f))
+      fail(fmt::format("material '{}': attenuationDistance {} must be > 0", m.name,
+                       m.attenuationDistance));
     for (uint32_t ref : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
                          m.emissiveTexture, m.occlusionTexture})
       if (ref != Material::kNoTexture && ref >= scene.textureRefs.size())

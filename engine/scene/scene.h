@@ -2,6 +2,7 @@
 // The API-neutral scene: meshes with materials, instances, a camera. Units are
 // metres once loaded (scene files may state a unitScale).
 #include <glm/glm.hpp>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,6 +78,11 @@ struct Material {
   float ior = 1.5f;
   float subsurface = 0.0f;
   bool thin = false;
+  // The medium inside a transmissive solid (KHR_materials_volume): light
+  // that travels attenuationDistance through it keeps attenuationColor of
+  // itself (Beer-Lambert); an infinite distance is a clear medium.
+  glm::vec3 attenuationColor{1.0f};
+  float attenuationDistance = std::numeric_limits<float>::infinity();
   // Phong (Whitted): kd = baseColor.
   float ks = 0.0f;
   float exponent = 32.0f;

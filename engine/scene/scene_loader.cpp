@@ -25,7 +25,9 @@ namespace {
 
 using nlohmann::json;
 
-Material parseMaterial(const json& m, const std::string& name, const std::string& where) {
+// `scale`: the scene's unitScale (attenuationDistance is a length).
+Material parseMaterial(const json& m, const std::string& name, const std::string& where,
+                       float scale) {
   if (!m.is_object()) throw Error(where + ": must be an object");
   const std::string model = m.value("model", "disney");
   Material material;
@@ -54,6 +56,10 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
   material.ior = readFloat(m, "ior", material.ior, where);
   material.subsurface = readFloat(m, "subsurface", material.subsurface, where);
   material.thin = m.value("thin", false);
+  if (m.contains("attenuationColor"))
+    material.attenuationColor = readVec3(m.at("attenuationColor"), where + " attenuationColor");
+  material.attenuationDistance =
+      readFloat(m, "attenuationDistance", material.attenuationDistance / scale, where) * scale;
   material.ks = readFloat(m, "ks", material.ks, where);
   material.exponent = readFloat(m, "exponent", material.exponent, where);
   material.reflectivity = readFloat(m, "reflectivity", material.reflectivity, where);
@@ -221,7 +227,7 @@ Scene parseScene(std::string_view text, const std::string& source,
       hasGltf && !doc.contains("materials") ? kEmptyObject : require(doc, "materials", at);
   if (!materials.is_object()) throw Error(at + ": \"materials\" must be an object");
   for (const auto& [name, m] : materials.items()) {
-    scene.materials.push_back(parseMaterial(m, name, at + " material '" + name + "'"));
+    scene.materials.push_back(parseMaterial(m, name, at + " material '" + name + "'", scale));
     materialIndex[name] = uint32_t(scene.materials.size() - 1);
   }
 

@@ -328,6 +328,12 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   float3 radianceBefore = p.radiance;
   InstanceData instance = loadInstanceData(hit.instanceIndex);
   MaterialData data = hitMaterial(instance, hit);
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  // Beer-Lambert: a ray that meets a surface from behind travelled inside
+  // it (closed, non-nested solids) through the medium the material holds.
+  if (dot(direction, hit.geometricNormal) > 0.0)
+    p.throughput *= exp(-data.absorption.xyz * hit.hitT);
+#endif
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
   // Emission: one-sided, from the front face (counter-clockwise; outside

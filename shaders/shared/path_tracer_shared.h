@@ -177,6 +177,7 @@ struct MaterialData {
   uint4 textures;
   uint4 textures2;        // x occlusion texture, y MATERIAL_ALPHA_* mode
   float4 textureParams;   // x normal scale, y occlusion strength, z base-colour alpha, w alpha cutoff
+  float4 absorption;      // rgb absorption coefficient of the medium inside (per world unit); 0: clear
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -257,7 +258,7 @@ static_assert(sizeof(ProbeHit) == 48);
 static_assert(sizeof(FrameConstants) == 128);
 static_assert(sizeof(PointLight) == 48);
 static_assert(sizeof(InstanceData) == 128);
-static_assert(sizeof(MaterialData) == 160);
+static_assert(sizeof(MaterialData) == 176);
 static_assert(sizeof(TextureRefData) == 48);
 static_assert(sizeof(EmissiveTriangle) == 96);
 }  // namespace penumbra::gpu

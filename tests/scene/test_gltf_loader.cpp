@@ -254,11 +254,15 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   REQUIRE(glass.specular == Approx(0.0200593 / 0.08).epsilon(1e-4));
   REQUIRE(glass.thin);
 
-  // A volume with thickness > 0 refracts (not thin); attenuation is not simulated.
+  // A volume with thickness > 0 refracts (not thin) and absorbs as its
+  // attenuation says (simulated: no warning).
   const auto& volume = materialNamed(s, "volume");
   REQUIRE(volume.specTrans == 1.0f);
   REQUIRE_FALSE(volume.thin);
-  REQUIRE(hasWarning(r, "volume attenuation"));
+  REQUIRE(volume.attenuationDistance == 2.0f);
+  REQUIRE(volume.attenuationColor == glm::vec3(1.0f, 0.5f, 0.5f));
+  REQUIRE_FALSE(hasWarning(r, "volume attenuation"));
+  REQUIRE(std::isinf(glass.attenuationDistance));  // no volume: a clear medium
 
   // clearcoat 0.8; roughness 0.2 -> alpha 0.04 = lerp(0.1, 0.001, g): g = 0.06 / 0.099.
   const auto& coat = materialNamed(s, "coat");

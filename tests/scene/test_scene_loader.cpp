@@ -146,3 +146,24 @@ TEST_CASE("scene-file lights: point with range, spot, directional; bad cones ref
           "t.json"),
       ContainsSubstring("direction: must not be zero"));
 }
+
+TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused", "[scene]") {
+  auto withGlass = [](const std::string& glass) {
+    return R"({"format":"penumbra-scene","version":1,"unitScale":0.001,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
+    "materials":{"glass":)" +
+           glass + R"(},
+    "meshes":[{"name":"q","material":"glass","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+  };
+  const auto scene = scene::parseScene(
+      withGlass(R"({"specTrans":1,"attenuationColor":[0.5,0.8,1],"attenuationDistance":250})"),
+      "t.json");
+  CHECK(scene.materials[0].attenuationDistance == Catch::Approx(0.25f));  // millimetres
+  CHECK(scene.materials[0].attenuationColor.r == 0.5f);
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(withGlass(R"({"specTrans":1,"attenuationDistance":0})"), "t.json"),
+      ContainsSubstring("attenuationDistance 0 must be > 0"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(withGlass(R"({"specTrans":1,"attenuationColor":[2,1,1]})"), "t.json"),
+      ContainsSubstring("attenuationColor must lie in [0, 1]"));
+}
