@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iterator>
 
 #include "render/render_job.h"
 #include "util/error.h"
@@ -66,33 +67,42 @@ std::vector<Technique> studyTechniques(const StudySpec& spec) {
   requireValues(spec.clamps, "clamp");
   requireValues(spec.denoise, "denoiser");
   requireValues(spec.allEffects, "pipeline");
+  // The product of the lists, odometer order: the last list turns fastest.
+  const size_t sizes[] = {
+      spec.integrators.size(), spec.strategies.size(), spec.heuristics.size(),
+      spec.samplers.size(),    spec.maxDepths.size(),  spec.russianRoulette.size(),
+      spec.clamps.size(),      spec.denoise.size(),    spec.allEffects.size()};
+  constexpr size_t kLists = std::size(sizes);
+  size_t at[kLists] = {};
   std::vector<Technique> techniques;
-  for (auto integrator : spec.integrators)
-    for (auto strategy : spec.strategies)
-      for (auto heuristic : spec.heuristics)
-        for (auto sampler : spec.samplers)
-          for (uint32_t depth : spec.maxDepths)
-            for (bool roulette : spec.russianRoulette)
-              for (float clamp : spec.clamps)
-                for (auto denoise : spec.denoise)
-                  for (bool all : spec.allEffects) {
-                    Technique t;
-                    t.integrator = integrator;
-                    t.sampler = sampler;
-                    t.maxDepth = depth;
-                    t.allEffects = all;
-                    if (integrator == render::Integrator::Path) {
-                      t.strategy = strategy;
-                      t.heuristic = heuristic;
-                      t.russianRoulette = roulette;
-                      t.clamp = clamp;
-                      t.denoise = denoise;
-                    } else if (denoise != render::DenoiseMode::Off) {
-                      continue;
-                    }
-                    if (std::find(techniques.begin(), techniques.end(), t) == techniques.end())
-                      techniques.push_back(t);
-                  }
+  for (bool more = true; more;) {
+    Technique t;
+    t.integrator = spec.integrators[at[0]];
+    t.sampler = spec.samplers[at[3]];
+    t.maxDepth = spec.maxDepths[at[4]];
+    t.allEffects = spec.allEffects[at[8]];
+    const auto denoise = spec.denoise[at[7]];
+    bool keep = true;
+    if (t.integrator == render::Integrator::Path) {
+      t.strategy = spec.strategies[at[1]];
+      t.heuristic = spec.heuristics[at[2]];
+      t.russianRoulette = spec.russianRoulette[at[5]];
+      t.clamp = spec.clamps[at[6]];
+      t.denoise = denoise;
+    } else {
+      keep = denoise == render::DenoiseMode::Off;
+    }
+    if (keep && std::find(techniques.begin(), techniques.end(), t) == techniques.end())
+      techniques.push_back(t);
+    more = false;
+    for (size_t k = kLists; k-- > 0;) {
+      if (++at[k] < sizes[k]) {
+        more = true;
+        break;
+      }
+      at[k] = 0;
+    }
+  }
   if (techniques.empty())
     throw Error("study: no technique left (the denoiser filters only --integrator path)");
   return techniques;

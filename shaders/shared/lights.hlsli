@@ -47,12 +47,18 @@ float emissiveTrianglePdfArea(uint index) {
   return tri.p0.w / tri.p1.w;
 }
 
+// spot.w holds a spot's cos(outer angle) in [-1, 1], or a marker below it.
+bool isDirectionalLight(PointLight light) {
+  return light.spot.w < 0.5 * (PT_LIGHT_POINT + PT_LIGHT_DIRECTIONAL);
+}
+bool isSpotLight(PointLight light) { return light.spot.w > 0.5 * (-1.0 + PT_LIGHT_POINT); }
+
 // Irradiance a delta light gives at `position` on a surface facing it: a
 // directional light's own, else intensity / distance^2 times the spot's
 // falloff and the range's window (both as KHR_lights_punctual recommends).
 // `toLight` returns the unit direction, `distance` the distance to the light.
 float3 pointLightIncident(PointLight light, float3 position, out float3 toLight, out float distance) {
-  if (light.spot.w < -2.5) {  // PT_LIGHT_DIRECTIONAL
+  if (isDirectionalLight(light)) {
     toLight = -light.spot.xyz;
     distance = PT_DIRECTIONAL_SHADOW_LENGTH;
     return light.intensity.xyz;
@@ -63,7 +69,7 @@ float3 pointLightIncident(PointLight light, float3 position, out float3 toLight,
   if (distance <= 0.0) return zero3();
   float falloff = 1.0;
   float cosOuter = light.spot.w;
-  if (cosOuter > -1.5) {
+  if (isSpotLight(light)) {
     // (cos - cos outer) / (cos inner - cos outer), squared; a hard edge
     // when the cones are equal.
     float cosInner = light.position.w;
@@ -83,7 +89,7 @@ float3 pointLightIncident(PointLight light, float3 position, out float3 toLight,
 
 // The segment a shadow ray from `spawn` to the light must find empty.
 float3 pointLightShadowSegment(PointLight light, float3 spawn, out float segmentLength) {
-  if (light.spot.w < -2.5) {
+  if (isDirectionalLight(light)) {
     segmentLength = PT_DIRECTIONAL_SHADOW_LENGTH;
     return -light.spot.xyz;
   }
