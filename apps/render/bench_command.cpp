@@ -16,6 +16,7 @@
 #include "render/denoiser.h"
 #include "render/effect_set.h"
 #include "render/path_tracer.h"
+#include "render/render_job.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -216,7 +217,12 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
 
 int runBench(const BenchOptions& o) {
   auto [width, height] = parseImageSize(o.size);
-  const scene::Scene scene = scene::loadScene(o.scene);
+  // A scene without light is lit as `render` lights it (the default environment).
+  const scene::Scene scene = [&] {
+    scene::Scene loaded = scene::loadScene(o.scene);
+    render::applyEnvironmentChoice(loaded, {});
+    return loaded;
+  }();
   rhi::DeviceCreateInfo info;
   info.adapterIndex = o.device;
   auto device = backends::createDevice(o.backend, info);

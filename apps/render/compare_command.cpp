@@ -10,6 +10,7 @@
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "render/path_tracer.h"
+#include "render/render_job.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -85,7 +86,8 @@ int runCompare(const CompareOptions& o) {
   std::string nameA = o.a, nameB = o.b;
   if (renderMode) {
     const auto [w, h] = parseImageSize(o.size);
-    const auto scene = scene::loadScene(o.scene);
+    scene::Scene scene = scene::loadScene(o.scene);
+    render::applyEnvironmentChoice(scene, {});  // as `render` lights a scene without light
     fmt::print("scene: {}, {}x{}, {} spp, seed {}\n", scene.name, w, h, o.spp, o.seed);
     a = renderOn(o.deviceA, scene, w, h, o);
     b = renderOn(o.deviceB, scene, w, h, o);

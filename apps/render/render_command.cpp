@@ -40,7 +40,13 @@ struct RenderOptions {
   render::MisHeuristic heuristic = render::MisHeuristic::Power;
   render::Sampler sampler = render::Sampler::Random;
   float aperture = 0.0f;
+  float fNumber = 0.0f;
   float focusDistance = 1.0f;
+  uint32_t apertureBlades = 0;
+  std::string env;
+  float envRotation = 0.0f;
+  float envIntensity = 1.0f;
+  std::string envBackground;
   float clamp = 0.0f;
   bool noRoulette = false;
   bool validation = false;
@@ -164,6 +170,14 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   if (given("--exposure")) job.toneMapping.exposure = o.exposure;
   if (given("--tonemap")) job.toneMapping.toneOperator = o.toneOperator;
   if (given("--all-effects")) job.allEffects = o.allEffects;
+  // The environment options only where given: what they leave out stays
+  // the record's (or the scene's). A new map starts from its own defaults,
+  // as the viewer's does.
+  auto& env = job.environment;
+  if (cmd.count("--env") > 0) env = render::EnvironmentChoice{o.env, {}, {}, {}};
+  if (cmd.count("--env-rotation") > 0) env.rotationDegrees = o.envRotation;
+  if (cmd.count("--env-intensity") > 0) env.intensity = o.envIntensity;
+  if (cmd.count("--env-background") > 0) env.visibleBackground = o.envBackground == "visible";
   // A scene camera named on the command line wins over the record's camera.
   if (fromFile && cmd.count("--camera") > 0) job.camera.reset();
   return job;
@@ -179,15 +193,21 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
     if (!c) continue;
     if (cmd.count("--aperture") > 0) c->apertureRadius = o.aperture;
+    if (cmd.count("--f-number") > 0)
+      c->apertureRadius = scene::apertureRadiusForFNumber(o.fNumber, c->verticalFovDegrees);
     if (cmd.count("--focus-distance") > 0) c->focusDistance = o.focusDistance;
+    if (cmd.count("--aperture-blades") > 0) c->apertureBlades = o.apertureBlades;
     scene::validateCamera(*c);
   }
   if (!job.vary.empty() || !job.set.empty()) scene::changeMaterialRow(scene, job.vary, job.set);
   // The viewer's Material-menu edits, on top of the row as the viewer had it.
   render::applyMaterialOverrides(scene, job.materials, o.settingsFile);
+  render::applyEnvironmentChoice(scene, job.environment);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene)))
       fmt::print("{}\n", name);
+    for (const auto& name : render::featureNames(render::deriveFeatures(scene, job.camera)))
+      fmt::print("{} (branch)\n", name);
     return 0;
   }
   const std::vector<std::string> aovs = parseAovs(o.aov, o.out);
@@ -290,6 +310,25 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--aperture", o->aperture,
                   "Thin-lens aperture radius in metres (0: pinhole, everything sharp)")
       ->check(CLI::Range(0.0f, 1000.0f));
+  cmd->add_option("--f-number", o->fNumber,
+                  "Thin-lens aperture as an f-number on a 35 mm camera at the view's field of "
+                  "view (instead of --aperture)")
+      ->check(CLI::Range(0.5f, 1000.0f))
+      ->excludes("--aperture");
+  cmd->add_option(
+         "--aperture-blades", o->apertureBlades,
+         "Aperture blades: 0 round, 3..32 a polygon (the shape of out-of-focus highlights)")
+      ->check(CLI::Range(0u, 32u));
+  cmd->add_option("--env", o->env,
+                  "Environment light: an equirectangular .exr or .hdr, 'default' (the studio "
+                  "environment scenes without light get) or 'none'");
+  cmd->add_option("--env-rotation", o->envRotation,
+                  "Turn the environment about the up axis (degrees, counter-clockwise from above)");
+  cmd->add_option("--env-intensity", o->envIntensity, "Scale the environment's radiance")
+      ->check(CLI::Range(0.0f, 1e6f));
+  cmd->add_option("--env-background", o->envBackground,
+                  "Whether camera rays that miss see the environment: visible | hidden (black)")
+      ->check(CLI::IsMember({"visible", "hidden"}));
   cmd->add_option("--focus-distance", o->focusDistance,
                   "Distance in metres along the view to the plane in focus (with --aperture)")
       ->check(CLI::Range(1e-6f, 1e9f));

@@ -258,7 +258,12 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   const study::StudySpec spec = makeSpec(o);
   const std::vector<study::StudyPoint> points = study::expandStudy(spec);
   const auto [width, height] = parseImageSize(o.size);
-  const scene::Scene scene = scene::loadScene(o.scene);
+  // A scene without light is lit as `render` lights it (the default environment).
+  const scene::Scene scene = [&] {
+    scene::Scene loaded = scene::loadScene(o.scene);
+    render::applyEnvironmentChoice(loaded, {});
+    return loaded;
+  }();
   study::Reference reference;
   if (!o.reference.empty()) {
     reference.image = image::loadExr(o.reference);

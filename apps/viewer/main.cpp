@@ -46,6 +46,16 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
   app.add_option("--script", o.script, "Run scripted commands (see apps/viewer/script.h)");
   app.add_option("--config", o.config, "Viewer settings file holding camera bookmarks");
+  std::string envMap, envBackground;
+  float envRotation = 0.0f, envIntensity = 1.0f;
+  app.add_option("--env", envMap,
+                 "Environment light: an equirectangular .exr or .hdr, 'default' or 'none'");
+  app.add_option("--env-rotation", envRotation, "Turn the environment about the up axis (degrees)");
+  app.add_option("--env-intensity", envIntensity, "Scale the environment's radiance")
+      ->check(CLI::Range(0.0f, 1e6f));
+  app.add_option("--env-background", envBackground,
+                 "Whether camera rays that miss see the environment: visible | hidden")
+      ->check(CLI::IsMember({"visible", "hidden"}));
   app.add_flag("--validation", o.validation,
                "Enable the API validation layer; exit 1 on any message");
   try {
@@ -61,6 +71,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (renderScale > 0) o.renderScale = renderScale;
+  o.environment.map = envMap;
+  if (app.count("--env-rotation") > 0) o.environment.rotationDegrees = envRotation;
+  if (app.count("--env-intensity") > 0) o.environment.intensity = envIntensity;
+  if (app.count("--env-background") > 0)
+    o.environment.visibleBackground = envBackground == "visible";
   o.vsync = !noVsync;
   try {
     viewer::Viewer viewer(o);

@@ -28,6 +28,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
                                   {"scene", Kind::Scene, 0, 1},
                                   {"window-size", Kind::WindowSize, 2, 0},
                                   {"material", Kind::Material, -1, 2},
+                                  {"environment", Kind::Environment, 0, 2},
                                   {"screenshot", Kind::Screenshot, 0, 1},
                                   {"quit", Kind::Quit, 0, 0}};
   std::vector<ScriptCommand> commands;

@@ -9,6 +9,8 @@
 //   set NAME VALUE         a setting, as in viewer_settings.h ("set spp-per-frame 4")
 //   scene NAME|PATH        load a built-in scene or a scene file
 //   window-size W H        resize the window (the swapchain follows)
+//   environment KEY VALUE  as the Environment menu: map FILE|default|none, rotation DEG,
+//                          intensity X, background visible|hidden (recorded in screenshots)
 //   material NAME PARAM V  edit a material as the Material menu does: PARAM is
 //                          baseColor (V = R G B) or a Disney/Phong parameter
 //                          ("material white roughness 0.2"); recorded in screenshots
@@ -30,6 +32,7 @@ struct ScriptCommand {
     Scene,
     WindowSize,
     Material,
+    Environment,
     Screenshot,
     Quit
   };

@@ -92,7 +92,11 @@ Viewer::~Viewer() {
 
 void Viewer::loadScene(const std::string& nameOrPath) {
   scene::Scene scene = scene::loadScene(nameOrPath);  // throws before anything changes
+  const scene::Environment own = scene.environment;
+  render::applyEnvironmentChoice(scene, options_.environment);
   if (device_) device_->waitForIdle();
+  sceneEnvironment_ = own;
+  environment_ = options_.environment;
   scene_ = std::move(scene);
   sceneName_ = nameOrPath;
   vary_ = scene_.materialRow ? scene_.materialRow->vary : "";
@@ -240,6 +244,9 @@ bool Viewer::stepScript() {
         case Kind::Material:
           editMaterial(c.args[0], c.args[1], c.numbers);
           break;
+        case Kind::Environment:
+          changeEnvironment(c.args[0], c.args[1]);
+          break;
         case Kind::Screenshot:
           takeScreenshot(c.args[0]);
           break;
@@ -252,6 +259,43 @@ bool Viewer::stepScript() {
     ++scriptPosition_;
   }
   return true;
+}
+
+void Viewer::changeEnvironment(const std::string& key, const std::string& value) {
+  render::EnvironmentChoice choice = environment_;
+  scene::Environment env = scene_.environment;
+  if (key == "map") {
+    // A new map starts unrotated at intensity 1, as --env FILE alone would.
+    choice = render::EnvironmentChoice{};
+    choice.map = value;
+    env = render::chooseEnvironment(sceneEnvironment_, scene_.emitsLight(), scene_.name, choice);
+  } else if (!env.present()) {
+    throw Error(fmt::format("environment {}: there is no environment (environment map FILE)", key));
+  } else if (key == "rotation" || key == "intensity") {
+    float number = 0.0f;
+    try {
+      size_t used = 0;
+      number = std::stof(value, &used);
+      if (used != value.size()) throw std::invalid_argument(value);
+    } catch (const std::exception&) {
+      throw Error(fmt::format("environment {}: '{}' is not a number", key, value));
+    }
+    (key == "rotation" ? choice.rotationDegrees : choice.intensity) = number;
+    (key == "rotation" ? env.rotationDegrees : env.intensity) = number;
+  } else if (key == "background") {
+    if (value != "visible" && value != "hidden")
+      throw Error(fmt::format("environment background: '{}' (visible, hidden)", value));
+    choice.visibleBackground = env.visibleBackground = value == "visible";
+  } else {
+    throw Error(fmt::format(
+        "environment: unknown setting '{}' (map, rotation, intensity, background)", key));
+  }
+  tracer_->setEnvironment(env);  // validates before anything changes
+  environment_ = choice;
+  scene_.environment = std::move(env);
+  statusLine_ = scene_.environment.present()
+                    ? fmt::format("environment: {}", scene_.environment.source)
+                    : "environment: none";
 }
 
 void Viewer::takeScreenshot(const std::string& path) {
@@ -271,6 +315,7 @@ void Viewer::takeScreenshot(const std::string& path) {
   render::RenderJob job = makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(), size,
                                         tracer_->accumulatedSamples());
   job.materials = render::materialOverrides(uneditedMaterials(), scene_.materials);
+  job.environment = environment_;
   render::saveRenderJob(record, job);
   statusLine_ =
       fmt::format("saved {} and {} ({} spp)", path, record, tracer_->accumulatedSamples());

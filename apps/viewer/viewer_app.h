@@ -14,6 +14,7 @@
 #include "render/denoiser.h"
 #include "render/display_pass.h"
 #include "render/path_tracer.h"
+#include "render/render_job.h"
 #include "render_scale.h"
 #include "rhi/rhi.h"
 #include "scene/scene.h"
@@ -34,7 +35,8 @@ struct ViewerOptions {
   uint32_t samplesPerFrame = 1;
   uint32_t framesInFlight = 2;
   bool vsync = true;
-  std::string config;  // bookmarks file; empty: BookmarkStore::defaultPath()
+  std::string config;                     // bookmarks file; empty: BookmarkStore::defaultPath()
+  render::EnvironmentChoice environment;  // --env options, applied to every scene loaded
 };
 
 class Viewer {
@@ -61,6 +63,10 @@ class Viewer {
   void drawAlgorithmMenu();
   void drawMaterialMenu();
   void drawCameraMenu();
+  void drawEnvironmentMenu();
+  // The Environment menu's and the script's edits: "map" (a file, "none",
+  // "default"), "rotation", "intensity", "background" (visible, hidden).
+  void changeEnvironment(const std::string& key, const std::string& value);
   void drawStats();
   void takeScreenshot(const std::string& path);
   void materialsChanged();
@@ -83,6 +89,9 @@ class Viewer {
   uint64_t frameNumber_ = 0;
 
   std::string sceneName_;
+  render::EnvironmentChoice environment_;  // as the screenshot records it
+  scene::Environment sceneEnvironment_;    // the scene file's own
+  char environmentPath_[512] = "";
   std::string vary_, set_;  // material-test row edits, as --vary/--set
   // The materials and row as loaded: with vary_/set_ applied, what a
   // screenshot's record compares the Material menu's edits against.

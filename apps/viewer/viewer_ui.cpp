@@ -38,6 +38,7 @@ void Viewer::drawUi() {
   try {
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawSceneMenu();
     if (ImGui::CollapsingHeader("Camera")) drawCameraMenu();
+    if (ImGui::CollapsingHeader("Environment")) drawEnvironmentMenu();
     if (ImGui::CollapsingHeader("Algorithm")) drawAlgorithmMenu();
     if (ImGui::CollapsingHeader("Material")) drawMaterialMenu();
   } catch (const Error& e) {
@@ -81,6 +82,11 @@ void Viewer::drawCameraMenu() {
       ImGui::DragFloat("aperture radius (m)", &lens.apertureRadius, 0.0005f, 0.0f, 1.0f, "%.4f");
   lensChanged |= ImGui::DragFloat("focus distance (m)", &lens.focusDistance, 0.01f, 0.001f, 1e5f,
                                   "%.3f", ImGuiSliderFlags_Logarithmic);
+  int blades = int(lens.apertureBlades);
+  if (ImGui::SliderInt("aperture blades (0: round)", &blades, 0, 12)) {
+    lens.apertureBlades = blades > 0 && blades < 3 ? 3u : uint32_t(blades);
+    lensChanged = true;
+  }
   if (lensChanged) {
     camera_->setCamera(lens);
     tracer_->setCamera(lens);
@@ -103,6 +109,39 @@ void Viewer::drawCameraMenu() {
     ImGui::PopID();
   }
   ImGui::TextDisabled("bookmarks: %s", bookmarks_.path().c_str());
+}
+
+void Viewer::drawEnvironmentMenu() {
+  const scene::Environment& env = scene_.environment;
+  ImGui::Text("%s", env.present()
+                        ? fmt::format("{} ({}x{})", env.source, env.width, env.height).c_str()
+                        : "none");
+  // The menu's edits go through changeEnvironment, as a script's do; a bad
+  // file shows its error in the status line instead of ending the session.
+  auto change = [&](const std::string& key, const std::string& value) {
+    try {
+      changeEnvironment(key, value);
+    } catch (const Error& e) {
+      statusLine_ = e.what();
+    }
+  };
+  ImGui::InputText("##envpath", environmentPath_, sizeof(environmentPath_));
+  ImGui::SameLine();
+  if (ImGui::Button("Load .exr/.hdr")) change("map", environmentPath_);
+  if (ImGui::Button("Default studio")) change("map", "default");
+  ImGui::SameLine();
+  if (ImGui::Button("None")) change("map", "none");
+  if (!env.present()) return;
+  float rotation = env.rotationDegrees;
+  if (ImGui::SliderFloat("rotation (deg)", &rotation, -180.0f, 180.0f, "%.1f"))
+    change("rotation", fmt::format("{}", rotation));
+  float intensity = env.intensity;
+  if (ImGui::DragFloat("intensity", &intensity, 0.01f, 0.0f, 1000.0f, "%.3f",
+                       ImGuiSliderFlags_Logarithmic))
+    change("intensity", fmt::format("{}", intensity));
+  bool background = env.visibleBackground;
+  if (ImGui::Checkbox("visible background", &background))
+    change("background", background ? "visible" : "hidden");
 }
 
 void Viewer::drawAlgorithmMenu() {

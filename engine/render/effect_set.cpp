@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <iterator>
+
 #include "effects.h"
 #include "util/error.h"
 
@@ -45,7 +48,9 @@ bool alphaMasked(const scene::Material& m) {
   return m.alphaMode == scene::AlphaMode::Blend && (textured || m.alpha < 1.0f);
 }
 
-uint32_t deriveMaterialEffects(const scene::Material& material) { return materialEffectsOf(material); }
+uint32_t deriveMaterialEffects(const scene::Material& material) {
+  return materialEffectsOf(material);
+}
 
 uint32_t deriveEffects(const scene::Scene& scene) {
   uint32_t effects = 0;
@@ -62,12 +67,46 @@ uint32_t deriveEffects(const scene::Scene& scene) {
 }
 
 std::vector<std::string> effectNames(uint32_t effects) {
-  static const char* const kNames[PT_EFFECT_COUNT] = {
-      "area-lights", "delta-lights", "specular", "transmission",
-      "clearcoat",   "sheen",        "textures", "alpha-mask"};
+  static const char* const kNames[PT_EFFECT_COUNT] = {"area-lights",  "delta-lights", "specular",
+                                                      "transmission", "clearcoat",    "sheen",
+                                                      "textures",     "alpha-mask"};
   std::vector<std::string> names;
   for (int bit = 0; bit < PT_EFFECT_COUNT; ++bit)
     if (effects & (1u << bit)) names.emplace_back(kNames[bit]);
+  return names;
+}
+
+uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera) {
+  uint32_t features = 0;
+  if (scene.environment.present()) features |= kFeatureEnvironment;
+  for (const auto& light : scene.pointLights) {
+    if (light.type == scene::LightType::Directional) features |= kFeatureDirectionalLights;
+    if (light.type == scene::LightType::Directional && light.angularRadiusDegrees > 0.0f)
+      features |= kFeatureSoftSun;
+    if (light.type == scene::LightType::Spot) features |= kFeatureSpotLights;
+  }
+  const scene::Camera& view = camera ? *camera : scene.camera;
+  if (view.apertureRadius > 0.0f) features |= kFeatureThinLens;
+  if (view.apertureRadius > 0.0f && view.apertureBlades >= 3) features |= kFeatureLensBlades;
+  auto absorbs = [&](uint32_t materialIndex) {
+    const auto& m = scene.materials.at(materialIndex);
+    const bool transmits = m.specTrans > 0.0f || m.transparency > 0.0f;
+    return transmits && !m.thin && std::isfinite(m.attenuationDistance);
+  };
+  for (const auto& instance : scene.instances)
+    if (absorbs(scene.meshes.at(instance.mesh).material)) features |= kFeatureAbsorption;
+  for (const auto& object : scene.implicits)
+    if (absorbs(object.material)) features |= kFeatureAbsorption;
+  return features;
+}
+
+std::vector<std::string> featureNames(uint32_t features) {
+  static const char* const kNames[] = {"environment", "directional-lights", "soft-sun",
+                                       "spot-lights", "thin-lens",          "lens-blades",
+                                       "absorption"};
+  std::vector<std::string> names;
+  for (int bit = 0; bit < int(std::size(kNames)); ++bit)
+    if (features & (1u << bit)) names.emplace_back(kNames[bit]);
   return names;
 }
 

@@ -3,6 +3,7 @@
 // pipeline must hold. The path tracer builds its pipeline from the shader
 // variants compiled for exactly this set, unless asked for every effect.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,24 @@ bool alphaMasked(const scene::Material& material);
 
 // Names of the bits in `effects`, in bit order ("area-lights", "sheen", ...).
 std::vector<std::string> effectNames(uint32_t effects);
+
+// Features of a scene that the shaders reach by a uniform branch on a value
+// of the frame or a light record rather than by a variant bit (a variant bit
+// doubles the compiled variants; the branch costs a scene without the
+// feature nothing measurable: docs/results.md). Listed by --print-effects.
+enum SceneFeature : uint32_t {
+  kFeatureEnvironment = 1,        // an environment map or colour
+  kFeatureDirectionalLights = 2,  // directional lights (delta or soft suns)
+  kFeatureSoftSun = 4,            // a directional light with an angular radius
+  kFeatureSpotLights = 8,
+  kFeatureThinLens = 16,    // an aperture radius > 0
+  kFeatureLensBlades = 32,  // a polygonal aperture
+  kFeatureAbsorption = 64,  // a transmissive material with a finite attenuation distance
+};
+// The features of the scene rendered from `camera` (the scene's own if absent).
+uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera);
+// Their names ("environment", "soft-sun", ...), in bit order.
+std::vector<std::string> featureNames(uint32_t features);
 
 // The embedded variant of an entry point ("path_trace.rgen", "whitted.rgen",
 // "triangle.rchit") compiled for `effects`, restricted to the bits the entry

@@ -16,6 +16,7 @@
 #include "path_tracer_shared.h"
 #include "penumbra_shaders.h"
 #include "render/effect_set.h"
+#include "render/environment_map.h"
 #include "render/implicit_geometry.h"
 #include "render/scene_textures.h"
 #include "util/error.h"
@@ -154,8 +155,13 @@ constexpr double kRebaseDistance = 64.0;
 gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
   gpu::PointLight p;
   const bool directional = l.type == scene::LightType::Directional;
-  p.position = toFloat4(directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin),
-                        std::cos(glm::radians(std::min(l.innerConeDegrees, l.outerConeDegrees))));
+  // w: a spot's inner cone, a directional light's angular radius (cosines).
+  p.position = toFloat4(
+      directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin),
+      directional && l.angularRadiusDegrees <= 0.0f
+          ? 1.0f
+          : std::cos(glm::radians(directional ? l.angularRadiusDegrees
+                                              : std::min(l.innerConeDegrees, l.outerConeDegrees))));
   p.intensity = toFloat4(l.intensity, directional ? 0.0f : l.range);
   float marker = float(PT_LIGHT_POINT);
   if (l.type == scene::LightType::Spot) marker = std::cos(glm::radians(l.outerConeDegrees));
@@ -277,6 +283,7 @@ struct PathTracer::SceneBuffers {
   rhi::BufferHandle normals, tangents, texcoords;
   SceneTextures textures;
   rhi::BufferHandle textureRefs;
+  rhi::BufferHandle environmentInfo, environmentTexels, environmentCdf;
   std::vector<rhi::rt::AccelStructHandle> mergedBottomLevels;  // one per MergeGroup
   rhi::BufferHandle
       mergedTransforms;  // their geometries' transforms, 3x4 rows, in GPU instance order
@@ -363,10 +370,56 @@ void PathTracer::resize(uint32_t width, uint32_t height) {
   width_ = width;
   height_ = height;
   createAccumulation();
+  rebuildBindings();
+  resetAccumulation();
+}
+
+void PathTracer::rebuildBindings() {
   for (int i = 0; i < int(RayGeneration::Probe); ++i)
     if (pipelines_[i].pipeline)
       pipelines_[i].bindings =
           createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
+}
+
+void PathTracer::uploadEnvironment() {
+  const EnvironmentTables tables = buildEnvironmentTables(environment_);
+  auto& s = *scene_;
+  using rhi::BufferUsage;
+  const std::vector<gpu::EnvironmentData> info = {tables.info};
+  s.environmentInfo = makeStorageBuffer(device_, info, BufferUsage::None, "environment");
+  s.environmentTexels =
+      makeStorageBuffer(device_, tables.texels, BufferUsage::None, "environment texels");
+  s.environmentCdf = makeStorageBuffer(device_, tables.cdf, BufferUsage::None, "environment CDF");
+  auto* cmd = commandList_.get();
+  cmd->open();
+  writeAll(*cmd, s.environmentInfo, info);
+  writeAll(*cmd, s.environmentTexels, tables.texels);
+  writeAll(*cmd, s.environmentCdf, tables.cdf);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+}
+
+void PathTracer::setEnvironment(const scene::Environment& environment) {
+  scene::validateEnvironment(environment);
+  // Frames in flight still read the buffers rewritten or replaced here.
+  device_.waitForIdle();
+  const bool sameMap = environment.width == environment_.width &&
+                       environment.height == environment_.height &&
+                       environment.radiance == environment_.radiance;
+  environment_ = environment;
+  if (sameMap) {
+    const std::vector<gpu::EnvironmentData> info = {environmentInfo(environment_)};
+    auto* cmd = commandList_.get();
+    cmd->open();
+    writeAll(*cmd, scene_->environmentInfo, info);
+    cmd->close();
+    device_.submit(cmd);
+    device_.waitForIdle();
+  } else {
+    uploadEnvironment();
+    rebuildBindings();
+  }
   resetAccumulation();
 }
 
@@ -409,6 +462,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
   pointLightCount_ = uint32_t(pointLights.size());
   ambient_ = scene.ambient;
+  environment_ = scene.environment;
 
   // Everything the GPU sees is placed relative to renderOrigin_ (the camera's
   // position when the scene was uploaded), in double until then: the render
@@ -504,6 +558,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
+  uploadEnvironment();
   cmd->open();
   rhi::TimerQueryHandle bottomLevelTimer = device_.createTimerQuery();
   rhi::TimerQueryHandle topLevelTimer = device_.createTimerQuery();
@@ -714,6 +769,9 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
                              Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
                              Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
                              Item::storageBuffer(PT_SLOT_TEXTURE_REFS, scene_->textureRefs),
+                             Item::storageBuffer(PT_SLOT_ENVIRONMENT_INFO, scene_->environmentInfo),
+                             Item::storageBuffer(PT_SLOT_ENVIRONMENT, scene_->environmentTexels),
+                             Item::storageBuffer(PT_SLOT_ENVIRONMENT_CDF, scene_->environmentCdf),
                              Item::sampledTextures(PT_SLOT_TEXTURES, scene_->textures.textures),
                              Item::samplers(PT_SLOT_SAMPLERS, scene_->textures.samplers),
                              Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
@@ -898,7 +956,12 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
   c.image = {width_, height_, samples, accumulatedSamples_};
   c.sampling = {settings.seed, settings.maxDepth, settings.rouletteStartDepth,
                 frameFlags(settings)};
-  c.lights = {emissiveTriangleCount_, pointLightCount_, firstSample_, 0};
+  uint32_t sceneFlags = camera_.apertureBlades << PT_SCENE_BLADES_SHIFT;
+  if (environment_.present()) {
+    sceneFlags |= PT_SCENE_ENVIRONMENT;
+    if (environment_.visibleBackground) sceneFlags |= PT_SCENE_BACKGROUND;
+  }
+  c.lights = {emissiveTriangleCount_, pointLightCount_, firstSample_, sceneFlags};
   c.shading = toFloat4(ambient_, settings.radianceClamp);
 
   // One counter serves every frame: the queue runs the frames' clear,

@@ -176,6 +176,12 @@ class PathTracer {
   // cannot change here: emitters are sampled from a table built with the
   // scene, so that needs a new PathTracer (penumbra::Error otherwise).
   bool updateMaterials(const std::vector<scene::Material>& materials);
+  // Replaces the environment (scene::Environment; one that is not present
+  // turns it off) and resets the accumulation. A map equal to the one
+  // uploaded keeps its buffers: only rotation, intensity and the background
+  // switch are written, so the viewer's sliders cost no upload.
+  void setEnvironment(const scene::Environment& environment);
+  const scene::Environment& environment() const { return environment_; }
   // A new accumulation image of this size (the viewer's render scale); the
   // scene and pipelines stay. Resets the accumulation.
   void resize(uint32_t width, uint32_t height);
@@ -222,6 +228,8 @@ class PathTracer {
   void uploadImplicits(const scene::Scene& scene,
                        std::vector<rhi::rt::InstanceDesc>& tlasInstances);
   void createAccumulation();
+  void uploadEnvironment();
+  void rebuildBindings();
   // One pipeline per ray-generation shader, created on first use: drivers
   // compile every hit and intersection shader into each ray-generation shader
   // of a pipeline, so a pipeline holding all three costs three times as much
@@ -258,6 +266,7 @@ class PathTracer {
   double pipelineCreationSeconds_ = 0;
   AccelStructBuildTimes accelStructBuildTimes_;
   glm::vec3 ambient_{0.0f};
+  scene::Environment environment_;
   std::unique_ptr<SceneBuffers> scene_;
   std::unique_ptr<WorldPlacement> placement_;
   uint32_t rebaseCount_ = 0;

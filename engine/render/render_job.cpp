@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/log.h"
 
 namespace penumbra::render {
 namespace {
@@ -264,6 +265,37 @@ void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverr
   }
 }
 
+scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment, bool emitsLight,
+                                     const std::string& sceneName,
+                                     const EnvironmentChoice& choice) {
+  scene::Environment env = sceneEnvironment;
+  if (choice.map == "none") {
+    env = scene::Environment{};
+  } else if (choice.map == "default") {
+    env = scene::defaultEnvironment();
+  } else if (!choice.map.empty()) {
+    env = scene::loadEnvironmentMap(choice.map);
+  }
+  if (choice.map != "none" && !env.present() && !emitsLight) {
+    env = scene::defaultEnvironment();
+    log::info("scene '{}' has no light: lit by the default studio environment (--env none: unlit)",
+              sceneName);
+  }
+  if (!env.present() && (choice.rotationDegrees || choice.intensity || choice.visibleBackground))
+    throw Error(
+        "environment: rotation, intensity and background need an environment (--env FILE gives "
+        "one)");
+  if (choice.rotationDegrees) env.rotationDegrees = *choice.rotationDegrees;
+  if (choice.intensity) env.intensity = *choice.intensity;
+  if (choice.visibleBackground) env.visibleBackground = *choice.visibleBackground;
+  scene::validateEnvironment(env);
+  return env;
+}
+
+void applyEnvironmentChoice(scene::Scene& scene, const EnvironmentChoice& choice) {
+  scene.environment = chooseEnvironment(scene.environment, scene.emitsLight(), scene.name, choice);
+}
+
 std::string renderJobToJson(const RenderJob& job) {
   json doc;
   doc["format"] = "penumbra-render";
@@ -277,7 +309,8 @@ std::string renderJobToJson(const RenderJob& job) {
                      {"up", toJson(job.camera->up)},
                      {"verticalFovDegrees", job.camera->verticalFovDegrees},
                      {"apertureRadius", job.camera->apertureRadius},
-                     {"focusDistance", job.camera->focusDistance}};
+                     {"focusDistance", job.camera->focusDistance},
+                     {"apertureBlades", job.camera->apertureBlades}};
   }
   doc["width"] = job.width;
   doc["height"] = job.height;
@@ -296,6 +329,15 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["exposure"] = job.toneMapping.exposure;
   doc["toneMapping"] = toneMapOperatorName(job.toneMapping.toneOperator);
   doc["allEffects"] = job.allEffects;
+  if (!job.environment.empty()) {
+    const EnvironmentChoice& e = job.environment;
+    json env = json::object();
+    if (!e.map.empty()) env["map"] = e.map;
+    if (e.rotationDegrees) env["rotation"] = *e.rotationDegrees;
+    if (e.intensity) env["intensity"] = *e.intensity;
+    if (e.visibleBackground) env["background"] = *e.visibleBackground;
+    doc["environment"] = env;
+  }
   if (!job.materials.empty()) {
     json materials = json::array();
     for (const auto& o : job.materials) materials.push_back(overrideToJson(o));
@@ -342,6 +384,11 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
       if (!c[key].is_number()) r.fail(std::string("camera.") + key, "must be a number");
       camera.*field = c[key].get<float>();
     }
+    if (c.contains("apertureBlades")) {
+      if (!c["apertureBlades"].is_number_unsigned())
+        r.fail("camera.apertureBlades", "must be a whole number >= 0");
+      camera.apertureBlades = c["apertureBlades"].get<uint32_t>();
+    }
     job.camera = camera;
   }
   r.read("width", job.width);
@@ -361,6 +408,25 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
   r.read("exposure", job.toneMapping.exposure);
   r.readEnum("toneMapping", job.toneMapping.toneOperator, &parseToneMapOperator);
   r.read("allEffects", job.allEffects);
+  if (doc.contains("environment")) {
+    const json& e = doc["environment"];
+    if (!e.is_object()) r.fail("environment", "must be an object");
+    EnvironmentChoice& choice = job.environment;
+    if (e.contains("map")) {
+      if (!e["map"].is_string()) r.fail("environment.map", "must be a string");
+      choice.map = e["map"].get<std::string>();
+    }
+    for (auto [key, field] : {std::pair{"rotation", &EnvironmentChoice::rotationDegrees},
+                              std::pair{"intensity", &EnvironmentChoice::intensity}}) {
+      if (!e.contains(key)) continue;
+      if (!e[key].is_number()) r.fail(std::string("environment.") + key, "must be a number");
+      choice.*field = e[key].get<float>();
+    }
+    if (e.contains("background")) {
+      if (!e["background"].is_boolean()) r.fail("environment.background", "must be true or false");
+      choice.visibleBackground = e["background"].get<bool>();
+    }
+  }
   if (doc.contains("materials")) {
     const json& materials = doc["materials"];
     if (!materials.is_array()) r.fail("materials", "must be an array");

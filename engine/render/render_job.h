@@ -6,12 +6,14 @@
 //
 //   { "format": "penumbra-render", "version": 1,
 //     "scene": "cornell-box", "vary": "", "set": "",
-//     "camera": { "position": [x,y,z], "forward": [..], "up": [..], "verticalFovDegrees": 39.3 },
+//     "camera": { "position": [x,y,z], "forward": [..], "up": [..], "verticalFovDegrees": 39.3,
+//                 "apertureRadius": 0, "focusDistance": 1, "apertureBlades": 0 },
 //     "width": 512, "height": 512, "spp": 64, "sppPerFrame": 4,
 //     "integrator": "path", "strategy": "mis", "misHeuristic": "power", "sampler": "random",
 //     "maxDepth": 8, "russianRoulette": true, "rouletteStartDepth": 3,
 //     "radianceClamp": 0, "seed": 0,
 //     "exposure": 1, "toneMapping": "clamp", "allEffects": false,
+//     "environment": { "map": "sky.hdr", "rotation": 90, "intensity": 1, "background": true },
 //     "materials": [ { "index": 0, "name": "white", "model": "lambert",
 //                      "baseColor": [r,g,b], "metallic": 0, "roughness": 0.5,
 //                      "anisotropic": 0, "specular": 0.5, "specularTint": 0,
@@ -47,6 +49,27 @@ struct MaterialOverride {
   scene::Material material;
 };
 
+// The environment asked for over the scene's own (the command line's --env
+// options, the viewer's Environment menu). What is not given keeps the
+// scene's; a scene with no light at all gets the default environment
+// unless `map` is "none".
+struct EnvironmentChoice {
+  std::string map;  // "" the scene's, "none", "default", or an .exr / .hdr file
+  std::optional<float> rotationDegrees, intensity;
+  std::optional<bool> visibleBackground;
+  bool empty() const { return map.empty() && !rotationDegrees && !intensity && !visibleBackground; }
+};
+
+// Applies the choice to the scene's environment; a scene left without any
+// light (no environment, scene::Scene::emitsLight false) gets scene::defaultEnvironment() and one
+// line on stderr saying so. Throws penumbra::Error for an unreadable map or
+// a setting given with no environment to apply it to.
+void applyEnvironmentChoice(scene::Scene& scene, const EnvironmentChoice& choice);
+// The same for a scene's own environment, given whether anything else in it
+// emits light (scene::Scene::emitsLight).
+scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment, bool emitsLight,
+                                     const std::string& sceneName, const EnvironmentChoice& choice);
+
 struct RenderJob {
   std::string scene = "cornell-box";    // built-in name or scene file path
   std::string vary, set;                // material-test row (scene::changeMaterialRow)
@@ -58,6 +81,7 @@ struct RenderJob {
   ToneMapping toneMapping;
   bool allEffects = false;
   std::vector<MaterialOverride> materials;  // applied after vary/set
+  EnvironmentChoice environment;
 };
 
 const char* integratorName(Integrator integrator);

@@ -52,10 +52,52 @@ uint64_t Scene::triangleCount() const {
   return n;
 }
 
+// Here rather than in environment.cpp, which reads image files: the glTF
+// loader's sanitizer build links scene.cpp without the image readers.
+void validateEnvironment(const Environment& env) {
+  if (!env.present()) return;
+  if (env.width > 16384 || env.height > 16384)
+    throw Error(fmt::format("environment '{}': {}x{} texels is larger than 16384x16384", env.source,
+                            env.width, env.height));
+  if (env.radiance.size() != size_t(env.width) * env.height)
+    throw Error(fmt::format("environment '{}': {} texels for a {}x{} map", env.source,
+                            env.radiance.size(), env.width, env.height));
+  if (!std::isfinite(env.rotationDegrees))
+    throw Error(fmt::format("environment '{}': the rotation is not finite", env.source));
+  if (!(env.intensity >= 0.0f) || !std::isfinite(env.intensity))
+    throw Error(fmt::format("environment '{}': intensity {} is not a finite number >= 0",
+                            env.source, env.intensity));
+  for (size_t i = 0; i < env.radiance.size(); ++i) {
+    const glm::vec3 r = env.radiance[i];
+    for (int k = 0; k < 3; ++k)
+      if (!(r[k] >= 0.0f) || !std::isfinite(r[k]))
+        throw Error(
+            fmt::format("environment '{}': texel ({}, {}) holds {}, not a finite radiance >= 0",
+                        env.source, i % env.width, i / env.width, r[k]));
+  }
+}
+
+bool Scene::emitsLight() const {
+  if (!pointLights.empty()) return true;
+  for (const auto& inst : instances)
+    if (materials.at(meshes.at(inst.mesh).material).isEmissive()) return true;
+  for (const auto& object : implicits)
+    if (materials.at(object.material).isEmissive()) return true;
+  return false;
+}
+
+float apertureRadiusForFNumber(float fNumber, float verticalFovDegrees) {
+  const double focalLength = 0.012 / std::tan(glm::radians(double(verticalFovDegrees)) * 0.5);
+  return float(focalLength / (2.0 * fNumber));
+}
+
 void validateCamera(const Camera& camera) {
   if (!(camera.apertureRadius >= 0.0f) || !std::isfinite(camera.apertureRadius))
     throw Error(fmt::format("camera: aperture radius {} must be finite and >= 0 (0: pinhole)",
                             camera.apertureRadius));
+  if (camera.apertureBlades != 0 && (camera.apertureBlades < 3 || camera.apertureBlades > 32))
+    throw Error(fmt::format("camera: {} aperture blades; 0 (round) or 3..32 expected",
+                            camera.apertureBlades));
   if (camera.apertureRadius > 0.0f &&
       (!(camera.focusDistance > 0.0f) || !std::isfinite(camera.focusDistance)))
     throw Error(
@@ -101,6 +143,15 @@ void validate(const Scene& scene) {
     checkAttribute(mesh.uv1.size(), finite(mesh.uv1), "second texture coordinates");
   }
   validateTextures(scene, fail);
+  try {
+    validateEnvironment(scene.environment);
+  } catch (const Error& e) {
+    fail(e.what());
+  }
+  for (const auto& light : scene.pointLights)
+    if (!(light.angularRadiusDegrees >= 0.0f && light.angularRadiusDegrees < 90.0f))
+      fail(fmt::format("a directional light's angular radius {} is outside [0, 90) degrees",
+                       light.angularRadiusDegrees));
   for (const auto& m : scene.materials) {
     auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
     for (int i = 0; i < 3; ++i)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/environment.h"
 #include "scene/implicit_object.h"
 
 namespace penumbra::scene {
@@ -121,6 +122,9 @@ struct PointLight {
   float innerConeDegrees = 180.0f;         // spot: full intensity within, falling off to outer
   float outerConeDegrees = 180.0f;
   float range = 0.0f;  // point and spot: no light beyond this distance (0: unlimited)
+  // Directional: the sun's angular radius (0: a delta light; more: a soft
+  // sun, a disk of that radius whose irradiance is `intensity`).
+  float angularRadiusDegrees = 0.0f;
 };
 
 struct Mesh {
@@ -156,6 +160,9 @@ struct Camera {
   // forward, which is in focus. 0: a pinhole, everything sharp.
   float apertureRadius = 0.0f;
   float focusDistance = 1.0f;
+  // The aperture's blades: 0 a round aperture, 3..32 a regular polygon of
+  // that many straight sides inscribed in the radius (bokeh takes its shape).
+  uint32_t apertureBlades = 0;
 };
 
 // The material-test row (scene/material_row.h): which materials belong to
@@ -182,11 +189,15 @@ struct Scene {
   std::vector<Instance> instances;
   std::vector<ImplicitObject> implicits;
   std::vector<PointLight> pointLights;
+  Environment environment;           // none unless the scene file or the command line gives one
   glm::vec3 ambient{0.0f};           // Whitted's ambient term
   Camera camera;                     // the view rendered
   std::vector<NamedCamera> cameras;  // alternatives for selectCamera
   std::optional<MaterialRow> materialRow;
   uint64_t triangleCount() const;
+  // Whether anything but the environment emits: an emissive material that
+  // is drawn, a delta light.
+  bool emitsLight() const;
 };
 
 // Makes the camera named `name` (its own name or its node's) the scene's view;
@@ -199,8 +210,11 @@ void selectCamera(Scene& scene, const std::string& name);
 // implicit objects are well-formed (validateImplicit); throws penumbra::Error
 // naming the scene and the part.
 void validate(const Scene& scene);
-// A usable camera: a finite aperture radius >= 0 and, with a lens, a focus
-// distance > 0. Throws penumbra::Error saying which.
+// A usable camera: a finite aperture radius >= 0, 0 or 3..32 blades and,
+// with a lens, a focus distance > 0. Throws penumbra::Error saying which.
 void validateCamera(const Camera& camera);
+// The aperture radius (metres) of a lens at f-number N on a 35 mm camera
+// (a 24 mm tall frame) with this vertical field of view: focal length / 2N.
+float apertureRadiusForFNumber(float fNumber, float verticalFovDegrees);
 
 }  // namespace penumbra::scene

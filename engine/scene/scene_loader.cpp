@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -178,6 +179,37 @@ std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::s
   return view;
 }
 
+// "environment": { "file": "sky.exr" (relative to the scene file) or
+// "color": [r, g, b], "rotation": degrees, "intensity": x, "background": bool }
+Environment parseEnvironment(const json& e, const std::string& where,
+                             const std::string& baseDirectory) {
+  if (!e.is_object()) throw Error(where + ": must be an object");
+  Environment env;
+  if (e.contains("file") == e.contains("color"))
+    throw Error(where + ": give exactly one of \"file\" (an .exr or .hdr map) and \"color\"");
+  if (e.contains("file")) {
+    const std::filesystem::path file = e.at("file").get<std::string>();
+    env = loadEnvironmentMap((file.is_absolute() || baseDirectory.empty()
+                                  ? file
+                                  : std::filesystem::path(baseDirectory) / file)
+                                 .string());
+  } else {
+    const glm::vec3 color = readVec3(e.at("color"), where + " color");
+    if (!(color.r >= 0 && color.g >= 0 && color.b >= 0))
+      throw Error(where + " color: must be >= 0");
+    env = constantEnvironment(color);
+  }
+  env.rotationDegrees = e.value("rotation", 0.0f);
+  env.intensity = e.value("intensity", 1.0f);
+  env.visibleBackground = e.value("background", true);
+  try {
+    validateEnvironment(env);
+  } catch (const Error& error) {
+    throw Error(where + ": " + error.what());
+  }
+  return env;
+}
+
 }  // namespace
 
 Scene parseScene(std::string_view text, const std::string& source,
@@ -214,6 +246,21 @@ Scene parseScene(std::string_view text, const std::string& source,
         require(cam, "verticalFovDegrees", at + " camera").get<float>();
     scene.camera.apertureRadius = cam.value("apertureRadius", 0.0f) * scale;
     scene.camera.focusDistance = cam.value("focusDistance", 1.0f / scale) * scale;
+    // An f-number instead of a radius: the radius is focal length / (2 N),
+    // with the focal length of a 35 mm frame (24 mm tall) at this field of view.
+    if (cam.contains("fNumber")) {
+      if (cam.contains("apertureRadius"))
+        throw Error(at + " camera: give \"apertureRadius\" or \"fNumber\", not both");
+      const float fNumber = cam.at("fNumber").get<float>();
+      if (!(fNumber > 0.0f) || !std::isfinite(fNumber))
+        throw Error(fmt::format("{} camera: fNumber {} must be finite and > 0", at, fNumber));
+      scene.camera.apertureRadius =
+          apertureRadiusForFNumber(fNumber, scene.camera.verticalFovDegrees);
+    }
+    const int blades = cam.value("apertureBlades", 0);
+    if (blades < 0)
+      throw Error(fmt::format("{} camera: apertureBlades {} is negative", at, blades));
+    scene.camera.apertureBlades = uint32_t(blades);
     try {
       validateCamera(scene.camera);
     } catch (const Error& e) {
@@ -269,6 +316,11 @@ Scene parseScene(std::string_view text, const std::string& source,
           throw Error(fmt::format("{}: innerConeDegrees {} must be in 0..outerConeDegrees ({})",
                                   where, light.innerConeDegrees, light.outerConeDegrees));
       }
+      if (light.type == LightType::Directional && l.contains("angularRadiusDegrees")) {
+        light.angularRadiusDegrees = l.at("angularRadiusDegrees").get<float>();
+        if (!(light.angularRadiusDegrees >= 0.0f && light.angularRadiusDegrees < 90.0f))
+          throw Error(where + " angularRadiusDegrees: must be in [0, 90)");
+      }
       if (light.type != LightType::Directional && l.contains("range")) {
         light.range = l.at("range").get<float>() * scale;
         if (!(light.range > 0.0f)) throw Error(where + " range: must be > 0");
@@ -277,6 +329,8 @@ Scene parseScene(std::string_view text, const std::string& source,
     }
   }
   if (doc.contains("ambient")) scene.ambient = readVec3(doc.at("ambient"), at + " ambient");
+  if (doc.contains("environment"))
+    scene.environment = parseEnvironment(doc.at("environment"), at + " environment", baseDirectory);
 
   const json meshes = doc.value("meshes", json::array());
   if (!meshes.is_array()) throw Error(at + ": \"meshes\" must be an array");

@@ -31,6 +31,15 @@ layout(set = 0, binding = PT_SLOT_IMPLICITS, std430) readonly buffer Implicits {
 layout(set = 0, binding = PT_SLOT_TEXTURE_REFS, std430) readonly buffer TextureRefs {
   TextureRefData gTextureRefs[];
 };
+layout(set = 0, binding = PT_SLOT_ENVIRONMENT_INFO, std430) readonly buffer EnvironmentInfo {
+  EnvironmentData gEnvironment;
+};
+layout(set = 0, binding = PT_SLOT_ENVIRONMENT, std430) readonly buffer EnvironmentTexels {
+  float4 gEnvironmentTexels[];
+};
+layout(set = 0, binding = PT_SLOT_ENVIRONMENT_CDF, std430) readonly buffer EnvironmentCdf {
+  float gEnvironmentCdf[];
+};
 layout(set = 0, binding = PT_SLOT_TEXTURES) uniform texture2D gTextures[];
 layout(set = 0, binding = PT_SLOT_SAMPLERS) uniform sampler gSamplers[];
 layout(set = 0, binding = PT_SLOT_ACCUMULATION, rgba32f) uniform image2D gAccumulation;
@@ -42,12 +51,16 @@ EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[in
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
 ImplicitData loadImplicit(uint index) { return gImplicits[index]; }
 TextureRefData loadTextureRef(uint index) { return gTextureRefs[index]; }
+EnvironmentData loadEnvironment() { return gEnvironment; }
+float4 loadEnvironmentTexel(uint index) { return gEnvironmentTexels[index]; }
+float loadEnvironmentCdf(uint index) { return gEnvironmentCdf[index]; }
 // Indices differ between neighbouring rays, hence nonuniformEXT.
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) {
   return textureLod(sampler2D(gTextures[nonuniformEXT(textureIndex)], gSamplers[nonuniformEXT(samplerIndex)]),
                     uv, 0.0);
 }
 #include "textures.hlsli"
+#include "environment.hlsli"
 
 // The vertex indices of triangle `primitive` of an instance's mesh.
 uint3 triangleVertices(InstanceData instance, uint primitive) {

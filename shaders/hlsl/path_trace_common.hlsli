@@ -27,6 +27,9 @@ StructuredBuffer<float4> gTangents : PENUMBRA_REGISTER_T(PT_T_TANGENTS);
 StructuredBuffer<float4> gTexCoords : PENUMBRA_REGISTER_T(PT_T_TEXCOORDS);
 StructuredBuffer<ImplicitData> gImplicits : PENUMBRA_REGISTER_T(PT_T_IMPLICITS);
 StructuredBuffer<TextureRefData> gTextureRefs : PENUMBRA_REGISTER_T(PT_T_TEXTURE_REFS);
+StructuredBuffer<EnvironmentData> gEnvironment : PENUMBRA_REGISTER_T(PT_T_ENVIRONMENT_INFO);
+StructuredBuffer<float4> gEnvironmentTexels : PENUMBRA_REGISTER_T(PT_T_ENVIRONMENT);
+StructuredBuffer<float> gEnvironmentCdf : PENUMBRA_REGISTER_T(PT_T_ENVIRONMENT_CDF);
 Texture2D<float4> gTextures[] : PENUMBRA_REGISTER_T(PT_T_TEXTURES);
 SamplerState gSamplers[] : PENUMBRA_REGISTER_S(PT_S_SAMPLERS);
 RWTexture2D<float4> gAccumulation : PENUMBRA_REGISTER_U(PT_U_ACCUMULATION);
@@ -38,12 +41,16 @@ EmissiveTriangle loadEmissiveTriangle(uint index) { return gEmissiveTriangles[in
 PointLight loadPointLight(uint index) { return gPointLights[index]; }
 ImplicitData loadImplicit(uint index) { return gImplicits[index]; }
 TextureRefData loadTextureRef(uint index) { return gTextureRefs[index]; }
+EnvironmentData loadEnvironment() { return gEnvironment[0]; }
+float4 loadEnvironmentTexel(uint index) { return gEnvironmentTexels[index]; }
+float loadEnvironmentCdf(uint index) { return gEnvironmentCdf[index]; }
 // Indices differ between neighbouring rays, hence NonUniformResourceIndex.
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) {
   return gTextures[NonUniformResourceIndex(textureIndex)].SampleLevel(
       gSamplers[NonUniformResourceIndex(samplerIndex)], uv, 0.0);
 }
 #include "textures.hlsli"
+#include "environment.hlsli"
 
 // The vertex indices of triangle `primitive` of an instance's mesh.
 uint3 triangleVertices(InstanceData instance, uint primitive) {

@@ -1,4 +1,4 @@
-// Pinhole camera of FrameConstants.
+// The camera of FrameConstants: a pinhole or a thin lens.
 #ifndef PENUMBRA_CAMERA_HLSLI
 #define PENUMBRA_CAMERA_HLSLI
 
@@ -45,8 +45,23 @@ float2 pixelSample(inout Rng rng, uint index, uint count) {
   return jitteredPixelSample(index, count, u0, u1);
 }
 
+// A uniform point of the regular polygon with `sides` corners on the unit
+// circle (an aperture of that many straight blades), one corner on +x: u0
+// picks the wedge between two corners and the centre, and what is left of
+// it with u1 a uniform point of that triangle.
+float2 samplePolygon(uint sides, float u0, float u1) {
+  float scaled = u0 * float(sides);
+  float wedge = min(floor(scaled), float(sides) - 1.0);
+  float2 b = sampleUniformTriangle(saturate(scaled - wedge), u1);
+  float step = 2.0 * kPi / float(sides);
+  float2 a0 = float2(cos(wedge * step), sin(wedge * step));
+  float2 a1 = float2(cos((wedge + 1.0) * step), sin((wedge + 1.0) * step));
+  return b.x * a0 + b.y * a1;
+}
+
 // The camera ray through `filmPosition`: the pinhole's, or with a thin lens
-// (cameraUp.w > 0) from a point of the aperture disk towards where the
+// (cameraUp.w > 0) from a point of the aperture (a disk, or a polygon of
+// FrameConstants.lights.w's blade count) towards where the
 // pinhole ray meets the plane in focus, so that plane stays sharp and
 // everything nearer or farther blurs by its circle of confusion. A pinhole
 // draws no random numbers, so its images do not change with the lens code.
@@ -59,7 +74,8 @@ void cameraRay(FrameConstants c, float2 filmPosition, inout Rng rng, out float3 
     float3 inFocus = origin + direction * (c.cameraForward.w / dot(direction, c.cameraForward.xyz));
     float u0 = rngNext(rng);
     float u1 = rngNext(rng);
-    float2 lens = sampleConcentricDisk(u0, u1) * lensRadius;
+    uint blades = (c.lights.w >> PT_SCENE_BLADES_SHIFT) & 255u;
+    float2 lens = (blades >= 3u ? samplePolygon(blades, u0, u1) : sampleConcentricDisk(u0, u1)) * lensRadius;
     origin += lens.x * c.cameraRight.xyz + lens.y * c.cameraUp.xyz;
     direction = normalize(inFocus - origin);
   }

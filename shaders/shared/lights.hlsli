@@ -53,15 +53,32 @@ bool isDirectionalLight(PointLight light) {
 }
 bool isSpotLight(PointLight light) { return light.spot.w > 0.5 * (-1.0 + PT_LIGHT_POINT); }
 
+// A soft sun: a directional light whose disk subtends an angular radius
+// (position.w = its cosine, below 1).
+bool isSoftSun(PointLight light) { return isDirectionalLight(light) && light.position.w < 1.0; }
+
 // Irradiance a delta light gives at `position` on a surface facing it: a
 // directional light's own, else intensity / distance^2 times the spot's
 // falloff and the range's window (both as KHR_lights_punctual recommends).
 // `toLight` returns the unit direction, `distance` the distance to the light.
-float3 pointLightIncident(PointLight light, float3 position, out float3 toLight, out float distance) {
+//
+// A soft sun's direction is drawn uniformly from its cone by `u` (solid
+// angle 2 pi (1 - cos a)); the sun's disk of irradiance E has radiance
+// E / (pi sin^2 a), so one direction carries E 2 / (1 + cos a), and over a
+// surface the disk lies wholly above, the mean is E cos(theta) as for a
+// delta light. u.x < 0 takes the disk's centre with E (Whitted: hard shadows).
+float3 pointLightIncident(PointLight light, float3 position, float2 u, out float3 toLight, out float distance) {
   if (isDirectionalLight(light)) {
     toLight = -light.spot.xyz;
     distance = PT_DIRECTIONAL_SHADOW_LENGTH;
-    return light.intensity.xyz;
+    float cosRadius = light.position.w;
+    if (cosRadius >= 1.0 || u.x < 0.0) return light.intensity.xyz;
+    float cosTheta = 1.0 - u.x * (1.0 - cosRadius);
+    float sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
+    float phi = 2.0 * kPi * u.y;
+    Frame f = frameFromNormal(toLight);
+    toLight = normalize(f.tangent * (sinTheta * cos(phi)) + f.bitangent * (sinTheta * sin(phi)) + f.normal * cosTheta);
+    return light.intensity.xyz * (2.0 / (1.0 + cosRadius));
   }
   float3 d = light.position.xyz - position;
   distance = length(d);
@@ -87,15 +104,17 @@ float3 pointLightIncident(PointLight light, float3 position, out float3 toLight,
   return light.intensity.xyz * (falloff / (distance * distance));
 }
 
-// The segment a shadow ray from `spawn` to the light must find empty.
-float3 pointLightShadowSegment(PointLight light, float3 spawn, out float segmentLength) {
+// The segment a shadow ray from `spawn` to the light must find empty;
+// `toLight` is the direction pointLightIncident chose (a soft sun's differs
+// from its axis).
+float3 pointLightShadowSegment(PointLight light, float3 spawn, float3 toLight, out float segmentLength) {
   if (isDirectionalLight(light)) {
     segmentLength = PT_DIRECTIONAL_SHADOW_LENGTH;
-    return -light.spot.xyz;
+    return toLight;
   }
-  float3 toLight = light.position.xyz - spawn;
-  segmentLength = length(toLight);
-  return segmentLength > 0.0 ? toLight / segmentLength : float3(0.0, 0.0, 1.0);
+  float3 d = light.position.xyz - spawn;
+  segmentLength = length(d);
+  return segmentLength > 0.0 ? d / segmentLength : float3(0.0, 0.0, 1.0);
 }
 
 // Converts an area density at a point seen at `distance` under `cosLight` to

@@ -20,9 +20,11 @@
 //   MaterialData loadMaterial(uint index);
 //   EmissiveTriangle loadEmissiveTriangle(uint index);
 //   PointLight loadPointLight(uint index);
+//   and environment.hlsli's loadEnvironment, loadEnvironmentTexel, loadEnvironmentCdf
 #ifndef PENUMBRA_PATH_TRACER_HLSLI
 #define PENUMBRA_PATH_TRACER_HLSLI
 #include "camera.hlsli"
+#include "environment.hlsli"
 #include "lights.hlsli"
 #include "material.hlsli"
 #include "ray_offset.hlsli"
@@ -94,14 +96,15 @@ ShadowRay noShadowRay() {
   return r;
 }
 
-// The shadow ray towards a point or spot light from a path vertex at
-// `position`, carrying the light's contribution if nothing blocks it.
-ShadowRay pointLightShadowRay(PointLight light, DisneyMaterial material, Frame frame, float3 position,
+// The shadow ray towards a delta light (or a soft sun, its direction drawn
+// by `u`) from a path vertex at `position`, carrying the light's
+// contribution if nothing blocks it.
+ShadowRay pointLightShadowRay(PointLight light, float2 u, DisneyMaterial material, Frame frame, float3 position,
                               float3 ng, float3 direction, float3 wo, float3 throughput, float clampLimit) {
   ShadowRay r = noShadowRay();
   float3 wi;
   float distance;
-  float3 incident = pointLightIncident(light, position, wi, distance);
+  float3 incident = pointLightIncident(light, position, u, wi, distance);
   float3 wiLocal = frameToLocal(frame, wi);
   if (maxComponent(incident) <= 0.0 || wiLocal.z == 0.0 ||
       !shadingConsistent(ng, -direction, wi, wo.z, wiLocal.z))
@@ -110,7 +113,7 @@ ShadowRay pointLightShadowRay(PointLight light, DisneyMaterial material, Frame f
   if (maxComponent(e.f) <= 0.0) return r;
   float3 spawn = offsetRayOrigin(position, dot(wi, ng) > 0.0 ? ng : -ng);
   float shadowLength;
-  float3 toLight = pointLightShadowSegment(light, spawn, shadowLength);
+  float3 toLight = pointLightShadowSegment(light, spawn, wi, shadowLength);
   if (!(shadowLength > 0.0)) return r;
   r.origin = spawn;
   r.direction = toLight;
@@ -303,6 +306,33 @@ VertexGuides closeGuides(inout PathState p, float3 albedo, float3 normal) {
   return g;
 }
 
+// The probability that next-event estimation samples the environment
+// rather than an emissive triangle: 1 or 0 when there is only one of them,
+// else half (a power estimate would need the scene's extent).
+float environmentChoice(FrameConstants c) {
+  if (!environmentPresent(c)) return 0.0;
+  return c.lights.x > 0u ? 0.5 : 1.0;
+}
+
+// What a ray that left the scene along `direction` adds: the environment
+// through the path's throughput, weighted against next-event estimation
+// (which already counted it without MIS); a camera ray sees it only as a
+// visible background.
+float3 environmentSeen(FrameConstants c, PathState p, float3 direction) {
+  uint flags = c.sampling.w;
+  bool useNee = (flags & PT_FLAG_NEE) != 0u;
+  float weight = 1.0;
+  if (p.depth == 0u) {
+    weight = (c.lights.w & PT_SCENE_BACKGROUND) != 0u ? 1.0 : 0.0;
+  } else if (!p.previousDelta && useNee) {
+    weight = (flags & PT_FLAG_MIS) != 0u
+                 ? misWeight(flags, p.previousPdf, environmentPdf(direction) * environmentChoice(c))
+                 : 0.0;
+  }
+  if (weight <= 0.0) return zero3();
+  return clampContribution(p.throughput * environmentRadiance(direction) * weight, c.shading.w);
+}
+
 // The vertex that `ray` found (its trace returned `record`): its emission
 // and guides, its area-light sample (`shadow`, tMax 0 if none), what its
 // point lights' shadow rays are built from (`pointLights`) and its bounce.
@@ -324,7 +354,10 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
   bool useMis = useNee && (flags & PT_FLAG_MIS) != 0u;
   float clampLimit = c.shading.w;
-  if (hit.hitT < 0.0) return false;  // no environment light yet
+  if (hit.hitT < 0.0) {
+    if (environmentPresent(c)) p.radiance += environmentSeen(c, p, direction);
+    return false;
+  }
   float3 radianceBefore = p.radiance;
   InstanceData instance = loadInstanceData(hit.instanceIndex);
   MaterialData data = hitMaterial(instance, hit);
@@ -348,7 +381,8 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
       p.radiance += clampContribution(emitted, clampLimit);
     } else if (useMis) {
       float lightPdf = areaToSolidAnglePdf(
-          emissiveTrianglePdfArea(instance.firstEmissiveTriangle + hit.primitiveIndex), hit.hitT, cosLight);
+          emissiveTrianglePdfArea(instance.firstEmissiveTriangle + hit.primitiveIndex), hit.hitT, cosLight) *
+          (1.0 - environmentChoice(c));
       p.radiance += clampContribution(emitted * misWeight(flags, p.previousPdf, lightPdf), clampLimit);
     }
     // NEE without MIS: this light was already counted by a shadow ray.
@@ -378,33 +412,54 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     return false;
   }
 
-  // The area light's sample and the bounce's direction are drawn first (in
-  // that order), then the BSDF is evaluated for both at one call site.
+  // The light sample (an emissive triangle's point, or with probability
+  // environmentChoice a direction of the environment) and the bounce's
+  // direction are drawn first (in that order), then the BSDF is evaluated
+  // for both at one call site.
   bool lightSampled = false;
+  bool lightFromEnvironment = false;
   float3 lightWi = float3(0.0, 0.0, 1.0);  // world
   float3 lightWiLocal = float3(0.0, 0.0, 1.0);
-  float lightDistance = 0.0;
-  float cosAtLight = 0.0;
+  float3 lightRadiance = zero3();
+  float lightPdf = 0.0;  // per solid angle, the choice of light included
   LightSample light;
   light.position = zero3();
   light.normal = float3(0.0, 0.0, 1.0);
   light.radiance = zero3();
   light.pdfArea = 0.0;
-#if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
-  if (useNee && c.lights.x > 0u) {
+  bool environmentOn = environmentPresent(c);
+  if (useNee && (c.lights.x > 0u || environmentOn)) {
     float u0 = rngNext(p.rng);
     float u1 = rngNext(p.rng);
     float u2 = rngNext(p.rng);
-    light = sampleEmissiveTriangles(c.lights.x, u0, u1, u2);
-    float3 toLight = light.position - hit.position;
-    lightDistance = length(toLight);
-    lightWi = toLight / max(lightDistance, 1e-30);
-    cosAtLight = -dot(light.normal, lightWi);
-    lightWiLocal = frameToLocal(frame, lightWi);
-    lightSampled = cosAtLight > 0.0 && lightDistance > 0.0 && lightWiLocal.z != 0.0 &&
-                   shadingConsistent(ng, -direction, lightWi, wo.z, lightWiLocal.z);
-  }
+    float choice = environmentChoice(c);
+    if (u0 < choice) {
+      EnvironmentSample es = sampleEnvironment(u1, u2);
+      lightFromEnvironment = true;
+      lightWi = es.direction;
+      lightRadiance = es.radiance;
+      lightPdf = es.pdf * choice;
+      lightWiLocal = frameToLocal(frame, lightWi);
+      lightSampled = lightPdf > 0.0 && lightWiLocal.z != 0.0 &&
+                     shadingConsistent(ng, -direction, lightWi, wo.z, lightWiLocal.z);
+    }
+#if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
+    else {
+      // The rest of u0 picks the triangle (u0 itself without an environment).
+      float triangleU = choice > 0.0 ? min((u0 - choice) / (1.0 - choice), 0.99999994) : u0;
+      light = sampleEmissiveTriangles(c.lights.x, triangleU, u1, u2);
+      float3 toLight = light.position - hit.position;
+      float lightDistance = length(toLight);
+      lightWi = toLight / max(lightDistance, 1e-30);
+      float cosAtLight = -dot(light.normal, lightWi);
+      lightWiLocal = frameToLocal(frame, lightWi);
+      lightRadiance = light.radiance;
+      lightPdf = areaToSolidAnglePdf(light.pdfArea, lightDistance, cosAtLight) * (1.0 - choice);
+      lightSampled = cosAtLight > 0.0 && lightDistance > 0.0 && lightWiLocal.z != 0.0 &&
+                     shadingConsistent(ng, -direction, lightWi, wo.z, lightWiLocal.z);
+    }
 #endif
+  }
   ScatterDirection scatterDir = scatterDirection(c, material, wo, p.rng);
   BsdfEval lightEval;
   lightEval.f = zero3();
@@ -419,24 +474,26 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
       scatterEval = e;
     }
   }
-#if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
   if (lightSampled && maxComponent(lightEval.f) > 0.0) {
     float3 spawn = offsetRayOrigin(hit.position, dot(lightWi, ng) > 0.0 ? ng : -ng);
-    // End the shadow ray just off the light's surface, on the lit side.
-    float3 target = offsetRayOrigin(light.position, light.normal);
-    float3 shadowDir = target - spawn;
-    float shadowLength = length(shadowDir);
+    float3 shadowDir = lightWi;
+    float shadowLength = PT_DIRECTIONAL_SHADOW_LENGTH;
+    if (!lightFromEnvironment) {
+      // End the shadow ray just off the light's surface, on the lit side.
+      float3 target = offsetRayOrigin(light.position, light.normal);
+      shadowDir = target - spawn;
+      shadowLength = length(shadowDir);
+      shadowDir = shadowDir / max(shadowLength, 1e-30);
+    }
     if (shadowLength > 0.0) {
-      float lightPdf = areaToSolidAnglePdf(light.pdfArea, lightDistance, cosAtLight);
       float weight = useMis ? misWeight(flags, lightPdf, lightEval.pdf) : 1.0;
       shadow.origin = spawn;
-      shadow.direction = shadowDir / shadowLength;
+      shadow.direction = shadowDir;
       shadow.tMax = shadowLength;
       shadow.contribution = clampContribution(
-          p.throughput * lightEval.f * light.radiance * (abs(lightWiLocal.z) * weight / lightPdf), clampLimit);
+          p.throughput * lightEval.f * lightRadiance * (abs(lightWiLocal.z) * weight / lightPdf), clampLimit);
     }
   }
-#endif
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
   pointLights.record = record;
   pointLights.ray = ray;
@@ -454,9 +511,10 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   return continues;
 }
 
-// The vertex's next point- or spot-light shadow ray that has something to
-// carry, its surface rebuilt from the record; false when none is left.
-bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, out ShadowRay shadow) {
+// The vertex's next delta-light shadow ray that has something to carry, its
+// surface rebuilt from the record; false when none is left. A soft sun
+// draws its direction from the path's stream (no other light draws).
+bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, inout Rng rng, out ShadowRay shadow) {
   shadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
   if (v.nextLight >= v.lights) return false;
@@ -465,8 +523,14 @@ bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, out Sha
   Frame frame = shadingFrame(hit, shadingNormalFor(hit, -v.ray.direction), material);
   float3 wo = frameToLocal(frame, -v.ray.direction);
   while (v.nextLight < v.lights) {
-    shadow = pointLightShadowRay(loadPointLight(v.nextLight), material, frame, hit.position, hit.geometricNormal,
-                                 v.ray.direction, wo, v.throughput, c.shading.w);
+    PointLight light = loadPointLight(v.nextLight);
+    float2 u = float2(0.0, 0.0);
+    if (isSoftSun(light)) {
+      u.x = rngNext(rng);
+      u.y = rngNext(rng);
+    }
+    shadow = pointLightShadowRay(light, u, material, frame, hit.position, hit.geometricNormal, v.ray.direction, wo,
+                                 v.throughput, c.shading.w);
     v.nextLight += 1u;
     if (shadow.tMax > 0.0) return true;
   }
@@ -531,7 +595,7 @@ float3 tracePixel(out float2 moments) {
                        float4(guides.normal, p.chainLength * p.cosForward), p.chainEmission);
 #endif
     }
-    if (shadow.tMax > 0.0 || nextPointLightShadowRay(c, pointLights, shadow)) continue;
+    if (shadow.tMax > 0.0 || nextPointLightShadowRay(c, pointLights, p.rng, shadow)) continue;
     if (continues) continue;
     // The path ends: on to the pixel's next sample.
 #if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)

@@ -29,7 +29,10 @@ namespace penumbra::gpu {
 #define PT_T_IMPLICITS 10          // ImplicitData by family: InstanceID() + PrimitiveIndex()
 #define PT_T_PROBE_RAYS 11         // ProbeRay: rays of PathTracer::traceProbeRays
 #define PT_T_TEXTURE_REFS 12       // TextureRefData: Scene::textureRefs
-#define PT_T_TEXTURES 13           // Texture2D[] (bindless, so the highest t register: D3D12 unbounded ranges cover all above)
+#define PT_T_ENVIRONMENT_INFO 13   // EnvironmentData, one (a 1x1 black map when the scene has none)
+#define PT_T_ENVIRONMENT 14        // float4 per texel of the map: rgb radiance, w the texel's probability
+#define PT_T_ENVIRONMENT_CDF 15    // float: the rows' cumulative probabilities, then each row's own
+#define PT_T_TEXTURES 16           // Texture2D[] (bindless, so the highest t register: D3D12 unbounded ranges cover all above)
 #define PT_S_SAMPLERS 0            // SamplerState[] (bindless): the distinct samplers of the texture refs
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
@@ -52,6 +55,9 @@ namespace penumbra::gpu {
 #define PT_SLOT_TEXCOORDS PENUMBRA_T(PT_T_TEXCOORDS)
 #define PT_SLOT_IMPLICITS PENUMBRA_T(PT_T_IMPLICITS)
 #define PT_SLOT_PROBE_RAYS PENUMBRA_T(PT_T_PROBE_RAYS)
+#define PT_SLOT_ENVIRONMENT_INFO PENUMBRA_T(PT_T_ENVIRONMENT_INFO)
+#define PT_SLOT_ENVIRONMENT PENUMBRA_T(PT_T_ENVIRONMENT)
+#define PT_SLOT_ENVIRONMENT_CDF PENUMBRA_T(PT_T_ENVIRONMENT_CDF)
 #define PT_SLOT_TEXTURES PENUMBRA_T(PT_T_TEXTURES)
 #define PT_SLOT_TEXTURE_REFS PENUMBRA_T(PT_T_TEXTURE_REFS)
 #define PT_SLOT_SAMPLERS PENUMBRA_S(PT_S_SAMPLERS)
@@ -80,6 +86,12 @@ namespace penumbra::gpu {
 #define PT_FLAG_RUSSIAN_ROULETTE 4u
 #define PT_FLAG_BALANCE_HEURISTIC 8u // balance instead of power heuristic
 #define PT_FLAG_SOBOL 16u            // Owen-scrambled Sobol samples instead of hashed random ones
+
+// FrameConstants.lights.w: bits 0-7 flags, bits 8-15 the thin lens's
+// aperture blades (0: round).
+#define PT_SCENE_ENVIRONMENT 1u      // rays that leave the scene see the environment, NEE samples it
+#define PT_SCENE_BACKGROUND 2u       // camera rays that miss see it too (else black)
+#define PT_SCENE_BLADES_SHIFT 8u
 
 // Rng.sampler (shaders/shared/rng.hlsli).
 #define RNG_SAMPLER_RANDOM 0u
@@ -130,7 +142,8 @@ struct FrameConstants {
   uint4 sampling;         // x seed, y max depth (bounces), z Russian roulette start depth, w flags
   // x emissive triangle count, y point light count; z the sample index the
   // mean started at (image.w counts the samples in the mean, z + image.w is
-  // the next sample's index: PathTracer::startNewMean)
+  // the next sample's index: PathTracer::startNewMean); w PT_SCENE_* bits
+  // and the lens's blade count
   uint4 lights;
   float4 shading;         // xyz Whitted ambient radiance; w radiance clamp per sample (0 = off)
 };
@@ -188,10 +201,10 @@ struct TextureRefData {
   uint4 ids;         // x texture (PT_T_TEXTURES index), y sampler (PT_S_SAMPLERS index), z texCoord set (0, 1)
 };
 
-// A point or spot light: a delta light, sampled by next-event estimation only.
 // A delta light: point, spot or directional (scene::PointLight).
 struct PointLight {
-  float4 position;   // xyz (none for a directional light); w cos(inner cone angle) of a spot light
+  float4 position;   // xyz (none for a directional light); w cos(inner cone angle) of a spot light,
+                     // a directional light's cos(angular radius) (1: a delta light; less: a soft sun)
   float4 intensity;  // rgb radiant intensity (W/sr), a directional light's irradiance (W/m^2);
                      // w range (0: none), beyond which the light does not reach
   float4 spot;       // xyz the direction the light faces (spot) or travels (directional);
@@ -201,6 +214,12 @@ struct PointLight {
 #define PT_LIGHT_DIRECTIONAL -3.0
 // A directional light's shadow rays end this far away (world units).
 #define PT_DIRECTIONAL_SHADOW_LENGTH 1e30
+
+// The environment map's layout and placement (shaders/shared/environment.hlsli).
+struct EnvironmentData {
+  uint4 size;        // x width, y height (texels)
+  float4 transform;  // x cos, y sin of the rotation about +y; z intensity (scales the radiance)
+};
 
 // An emitting triangle in world space, for next-event estimation. A textured
 // emitter's radiance is the material's factor; the shader multiplies in the
@@ -261,6 +280,7 @@ static_assert(sizeof(InstanceData) == 128);
 static_assert(sizeof(MaterialData) == 176);
 static_assert(sizeof(TextureRefData) == 48);
 static_assert(sizeof(EmissiveTriangle) == 96);
+static_assert(sizeof(EnvironmentData) == 32);
 }  // namespace penumbra::gpu
 #endif
 #endif

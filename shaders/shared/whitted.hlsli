@@ -1,5 +1,6 @@
-// Whitted ray tracing (Whitted 1980) with the Phong model: point and spot
-// lights with hard shadows, an ambient term, perfect mirror reflection, and
+// Whitted ray tracing (Whitted 1980) with the Phong model: point, spot and
+// directional lights with hard shadows, an ambient term, the environment
+// seen by rays that escape (not as a light), perfect mirror reflection, and
 // refraction weighted by the dielectric Fresnel term, with total internal
 // reflection. Recursion is an explicit stack of pending rays (reflection and
 // refraction branch), bounded by the max depth and a minimum weight.
@@ -8,6 +9,7 @@
 #ifndef PENUMBRA_WHITTED_HLSLI
 #define PENUMBRA_WHITTED_HLSLI
 #include "disney_bsdf.hlsli"
+#include "environment.hlsli"
 #include "fresnel.hlsli"
 #include "lights.hlsli"
 #include "material.hlsli"
@@ -53,7 +55,13 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     top -= 1;
     WhittedRay ray = stack[top];
     SurfaceHit hit = traceClosest(ray.origin, ray.direction);
-    if (hit.hitT < 0.0) continue;
+    if (hit.hitT < 0.0) {
+      // Mirror and refraction rays that escape see the environment; camera
+      // rays only as a visible background.
+      bool seen = ray.depth > 0u || (c.lights.w & PT_SCENE_BACKGROUND) != 0u;
+      if (environmentPresent(c) && seen) radiance += ray.weight * environmentRadiance(ray.direction);
+      continue;
+    }
     InstanceData instance = loadInstanceData(hit.instanceIndex);
     MaterialData data = loadMaterial(instance.materialIndex);
     float occlusion = 1.0;
@@ -84,11 +92,12 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
       PointLight light = loadPointLight(l);
       float3 toLight;
       float distance;
-      float3 incident = pointLightIncident(light, hit.position, toLight, distance);
+      // A soft sun's centre: Whitted's shadows are hard.
+      float3 incident = pointLightIncident(light, hit.position, float2(-1.0, 0.0), toLight, distance);
       // Lights behind the geometric surface stay dark whatever the shading normal says.
       if (maxComponent(incident) <= 0.0 || dot(n, toLight) <= 0.0 || dot(ng, toLight) <= 0.0) continue;
       float shadowLength;
-      float3 toLightFromSpawn = pointLightShadowSegment(light, spawnOut, shadowLength);
+      float3 toLightFromSpawn = pointLightShadowSegment(light, spawnOut, toLight, shadowLength);
       if (shadowLength > 0.0 && traceVisibility(spawnOut, toLightFromSpawn, shadowLength))
         local += phongTerm(p, n, toLight, toViewer, incident);
     }

@@ -39,6 +39,24 @@ gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 "$penumbra" render --scene "$gltf_data/triangle.glb" --size 16x16 --spp 1 --validation \
   --out "$work/glb.png" >/dev/null
 [ -s "$work/glb.png" ]
+# A glTF file without lights is lit by the default environment and says so
+# (one line); --env none leaves it black, and says nothing.
+"$penumbra" render --scene "$gltf_data/attributes.gltf" --size 16x16 --spp 4 --validation \
+  --out "$work/studio.exr" 2>"$work/studio.err" >/dev/null
+[ "$(grep -c "has no light: lit by the default studio environment" "$work/studio.err")" = 1 ]
+"$penumbra" render --scene "$gltf_data/attributes.gltf" --env none --size 16x16 --spp 4 \
+  --out "$work/dark.exr" 2>"$work/dark.err" >/dev/null
+[ ! -s "$work/dark.err" ]
+if "$penumbra" compare "$work/studio.exr" "$work/dark.exr" --tolerance 1e-3 >/dev/null; then
+  echo "the default environment did not light the glTF file"; exit 1
+fi
+# An environment from a file for any scene, turned, scaled, behind a hidden
+# background; --print-effects lists the branch features after the variants.
+"$penumbra" render --scene "$gltf_data/attributes.gltf" --env "$work/studio.exr" --env-rotation 90 \
+  --env-intensity 2 --env-background hidden --size 16x16 --spp 2 --validation --out "$work/env.png" >/dev/null
+[ -s "$work/env.png" ]
+[ "$("$penumbra" render --scene "$gltf_data/attributes.gltf" --aperture 0.01 --aperture-blades 5 --print-effects)" = \
+  "$(printf 'specular\nenvironment (branch)\nthin-lens (branch)\nlens-blades (branch)')" ]
 # The denoiser on the final image with every AOV as an EXR layer (the header
 # names the channels), and the temporal denoiser frame by frame.
 "$penumbra" render --size 32x32 --spp 2 --denoise atrous --aov albedo,normal,depth,emission,motion,variance \

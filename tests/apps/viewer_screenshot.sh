@@ -53,6 +53,13 @@ set view image
 set denoise atrous      # the single-frame filter on the accumulation
 wait-frames 2
 set denoise off
+environment map default # the Environment menu's edits, recorded with the screenshot
+environment rotation 40
+environment intensity 0.5
+environment background hidden
+wait-frames 2
+wait-samples 16
+screenshot $work/env.exr
 quit
 SCRIPT
 xvfb-run -a -s "-screen 0 640x480x24" "$viewer" --scene cornell-box --size 96x64 --render-scale 1 \
@@ -90,6 +97,19 @@ fi
 # The edits changed the image: reproducing shot.exr needs them applied.
 if "$penumbra" compare "$work/shot.exr" "$work/unedited.exr" --tolerance 1e-6 >/dev/null; then
   echo "viewer test: the scripted material edits did not change the image" >&2
+  exit 1
+fi
+# The environment edits: recorded, reproduced, and visible in the image.
+grep -q '"map": "default"' "$work/env.json"
+grep -q '"rotation": 40' "$work/env.json"
+grep -q '"intensity": 0.5' "$work/env.json"
+grep -q '"background": false' "$work/env.json"
+"$penumbra" render --settings "$work/env.json" --validation --out "$work/env-headless.exr" >/dev/null
+"$penumbra" compare "$work/env.exr" "$work/env-headless.exr" --tolerance 1e-6 | tee "$work/compare"
+grep -q "^within tolerance$" "$work/compare"
+"$penumbra" render --settings "$work/env.json" --env none --out "$work/env-none.exr" >/dev/null
+if "$penumbra" compare "$work/env.exr" "$work/env-none.exr" --tolerance 1e-6 >/dev/null; then
+  echo "viewer test: the environment did not change the image" >&2
   exit 1
 fi
 echo "viewer screenshot ok"

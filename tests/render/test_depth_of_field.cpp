@@ -116,6 +116,56 @@ TEST_CASE("depth of field: a point out of focus images to the circle of confusio
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+// With six blades the circle of confusion is a regular hexagon inscribed in
+// the round one: corners where the lens's right axis points (the image's x
+// axis; point-symmetric, so the image's inversion changes nothing), flat
+// sides across the image's y axis, at cos(30 deg) = 0.87 of the radius. The
+// light between 0.91 and 1.0 of the radius lies in the corner directions
+// (within 10 degrees of the x axis) and not in the side directions (within
+// 10 degrees of the y axis, where the hexagon ends by 0.88), where a round
+// aperture has it in both.
+TEST_CASE("depth of field: six aperture blades make a hexagonal circle of confusion",
+          "[render][gpu][camera]") {
+  auto device = test::makeTestDevice();
+  const double tanHalfFov = std::tan(kFovDegrees * 0.5 * 3.14159265358979323846 / 180.0);
+  const float aperture = 0.8f, focus = 2.0f;
+  const double radius = aperture * std::abs(kEmitterDistance - focus) /
+                        (kEmitterDistance * focus * tanHalfFov) * (kSize / 2.0);  // 17.6 px
+  render::PathTracerSettings settings;
+  settings.seed = 21;
+  double cornerToSide[2];
+  for (uint32_t blades : {0u, 6u}) {
+    scene::Scene s = pointEmitter(aperture, focus);
+    s.camera.apertureBlades = blades;
+    // 4096 spp: about 150 samples land in each direction's part of the ring.
+    const auto img = test::renderScene(*device, s, kSize, kSize, 4 * kSpp, settings);
+    REQUIRE(image::countNonFinite(img) == 0);
+    const Spot spot = measure(img);
+    double corner = 0, side = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+      for (uint32_t x = 0; x < kSize; ++x) {
+        const double dx = x + 0.5 - spot.cx, dy = y + 0.5 - spot.cy;
+        const double r = std::sqrt(dx * dx + dy * dy) / radius;
+        if (r < 0.91 || r > 1.0) continue;
+        const double angle =
+            std::atan2(std::abs(dy), std::abs(dx)) * 180.0 / 3.14159265358979323846;
+        if (angle < 10.0) corner += img.pixel(x, y)[0];
+        if (angle > 80.0) side += img.pixel(x, y)[0];
+      }
+    INFO(blades << " blades: outer ring light in the corner directions " << corner << ", sides "
+                << side);
+    REQUIRE(corner > 0.0);
+    cornerToSide[blades == 0 ? 0 : 1] = side / corner;
+  }
+  INFO("side / corner light: round " << cornerToSide[0] << ", six blades " << cornerToSide[1]);
+  // Round: the same ring either way (8 % noise each).
+  CHECK(std::abs(cornerToSide[0] - 1.0) < 0.35);
+  // Hexagon: the sides' ring lies outside it but for the emitter's own
+  // 1.1 px and the pixels' blurring the edge.
+  CHECK(cornerToSide[1] < 0.25);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 TEST_CASE("depth of field: a negative aperture or a lens without focus is refused", "[camera]") {
   scene::Camera c;
   c.apertureRadius = -0.1f;
@@ -125,4 +175,8 @@ TEST_CASE("depth of field: a negative aperture or a lens without focus is refuse
   REQUIRE_THROWS_WITH(scene::validateCamera(c), ContainsSubstring("focus distance 0"));
   c.apertureRadius = 0.0f;  // a pinhole needs no focus
   REQUIRE_NOTHROW(scene::validateCamera(c));
+  c.apertureBlades = 2;
+  REQUIRE_THROWS_WITH(scene::validateCamera(c), ContainsSubstring("2 aperture blades"));
+  // f/2 at a 39.6 degree field of view (a 35 mm camera's 33 mm lens): 8.3 mm.
+  CHECK(std::abs(scene::apertureRadiusForFNumber(2.0f, 39.6f) - 0.0083f) < 0.0001f);
 }

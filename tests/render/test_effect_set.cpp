@@ -171,6 +171,37 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   // the specular layer compiled out (glass), every effect at once (a bit the
   // derivation forgot would drop its lobe and change the image), and both
   // Whitted branches.
+  // The branch features (environment, soft sun, spot, thin lens with
+  // blades, absorbing glass) all in one scene: they are no variants, so
+  // both pipelines hold them, but the specialized one must still match.
+  auto absorbing = glass;
+  absorbing.roughness = 0.0f;
+  absorbing.attenuationColor = {0.9f, 0.5f, 0.2f};
+  absorbing.attenuationDistance = 0.05f;
+  scene::Scene branches = cornellWithSphere(absorbing, true);
+  branches.environment = scene::defaultEnvironment();
+  scene::PointLight sun;
+  sun.type = scene::LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.2f, -0.5f, -1.0f));
+  sun.intensity = glm::vec3(2.0f);
+  sun.angularRadiusDegrees = 3.0f;
+  scene::PointLight spot;
+  spot.type = scene::LightType::Spot;
+  spot.position = {0.2, 0.5, 0.3};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.innerConeDegrees = 20.0f;
+  spot.outerConeDegrees = 35.0f;
+  spot.intensity = glm::vec3(0.3f);
+  branches.pointLights.push_back(sun);
+  branches.pointLights.push_back(spot);
+  branches.camera.apertureRadius = 0.01f;
+  branches.camera.focusDistance = 0.8f;
+  branches.camera.apertureBlades = 6;
+  REQUIRE(render::featureNames(render::deriveFeatures(branches, std::nullopt)) ==
+          std::vector<std::string>{"environment", "directional-lights", "soft-sun", "spot-lights",
+                                   "thin-lens", "lens-blades", "absorption"});
+  REQUIRE(render::deriveFeatures(scene::loadScene("cornell-box"), std::nullopt) == 0u);
+
   std::vector<Case> cases = {
       {"cornell box (area light, Lambert)", scene::loadScene("cornell-box"),
        render::Integrator::Path},
@@ -178,6 +209,9 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
       {"every lobe, point light", cornellWithSphere(everything, true), render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},
+      {"environment, soft sun, spot, bladed lens, absorbing glass", branches,
+       render::Integrator::Path},
+      {"Whitted under the environment", branches, render::Integrator::Whitted},
   };
   render::PipelineOptions full;
   full.allEffects = true;

@@ -1,6 +1,7 @@
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+#include <cmath>
 
 #include "scene/mesh_builders.h"
 #include "scene/scene_loader.h"
@@ -145,6 +146,47 @@ TEST_CASE("scene-file lights: point with range, spot, directional; bad cones ref
           withLights(R"({"type":"directional","direction":[0,0,0],"intensity":[1,1,1]})"),
           "t.json"),
       ContainsSubstring("direction: must not be zero"));
+}
+
+TEST_CASE("scene files: a soft sun, a lens by f-number with blades, an environment", "[scene]") {
+  auto scene = [](const std::string& camera, const std::string& extra) {
+    return R"({"format":"penumbra-scene","version":1,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":39.6)" +
+           camera + R"(},
+    "materials":{"white":{"albedo":[0.5,0.5,0.5]}},)" +
+           extra + R"(
+    "meshes":[{"name":"q","material":"white","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+  };
+  const auto s = scene::parseScene(
+      scene(R"(,"fNumber":2,"focusDistance":3,"apertureBlades":7)",
+            R"("lights":[{"type":"directional","direction":[0,-1,0],"intensity":[2,2,2],
+                          "angularRadiusDegrees":0.27}],
+               "environment":{"color":[0.2,0.3,0.4],"rotation":45,"intensity":2,"background":false},)"),
+      "t.json");
+  CHECK(std::abs(s.camera.apertureRadius - 0.0083f) < 0.0001f);  // 33 mm / (2 x 2)
+  CHECK(s.camera.apertureBlades == 7u);
+  CHECK(s.pointLights.at(0).angularRadiusDegrees == 0.27f);
+  REQUIRE(s.environment.present());
+  CHECK(s.environment.radiance[0].b == 0.4f);
+  CHECK(s.environment.rotationDegrees == 45.0f);
+  CHECK(s.environment.intensity == 2.0f);
+  CHECK_FALSE(s.environment.visibleBackground);
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(scene("", R"("environment":{"file":"missing.hdr"},)"), "t.json"),
+      ContainsSubstring("missing.hdr") && ContainsSubstring("no such file"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(scene("", R"("environment":{"color":[1,1,1],"file":"a.exr"},)"), "t.json"),
+      ContainsSubstring("exactly one of"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(scene("", R"("environment":{"color":[1,1,1],"intensity":-2},)"), "t.json"),
+      ContainsSubstring("t.json' environment") && ContainsSubstring("intensity -2"));
+  REQUIRE_THROWS_WITH(scene::parseScene(scene(R"(,"fNumber":0)", ""), "t.json"),
+                      ContainsSubstring("fNumber 0"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(scene("", R"("lights":[{"type":"directional","direction":[0,-1,0],
+          "intensity":[1,1,1],"angularRadiusDegrees":95}],)"),
+                        "t.json"),
+      ContainsSubstring("angularRadiusDegrees"));
 }
 
 TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused", "[scene]") {
