@@ -14,6 +14,7 @@ rtsmoke="${3:-}"
 here="$(cd "$(dirname "$0")/.." && pwd)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+size="${PENUMBRA_COST_SIZE:-1920x1080}"  # smaller only to try the script out
 glass="$here/tests/data/scenes/sunlit-glass.json"
 sed 's/"angularRadiusDegrees": 2/"angularRadiusDegrees": 0/' "$glass" >"$work/delta-sun.json"
 sed 's/"type": "spot"/"type": "point"/' "$glass" >"$work/point-not-spot.json"
@@ -41,14 +42,14 @@ for run in 1 2 3; do
   for row in "${rows[@]}"; do
     IFS='|' read -r name binary args <<<"$row"
     # shellcheck disable=SC2086
-    out=$("$binary" render $args --size 1920x1080 --spp 16 --seed 1 --out "$work/frame.exr" 2>/dev/null)
+    out=$("$binary" render $args --size "$size" --spp 16 --seed 1 --out "$work/frame.exr" 2>/dev/null)
     ms=$(grep '^GPU time' <<<"$out" | sed 's/GPU time: \([0-9.]*\) ms.*/\1/')
     times[$name]="${times[$name]:-} $ms"
     rays[$name]=$(grep '^rays:' <<<"$out" | sed 's/.*(\([0-9.]*\) Mrays\/s)/\1/')
   done
 done
 median() { tr ' ' '\n' <<<"$1" | grep . | sort -g | sed -n 2p; }
-echo "| scene | GPU ms, 1080p 16 spp (runs) | median | Mrays/s |"
+echo "| scene | GPU ms, $size 16 spp (runs) | median | Mrays/s |"
 echo "|---|---|---|---|"
 for row in "${rows[@]}"; do
   IFS='|' read -r name _ _ <<<"$row"
@@ -56,6 +57,6 @@ for row in "${rows[@]}"; do
 done
 if [ -n "$rtsmoke" ]; then
   for run in 1 2 3; do
-    "$rtsmoke" --scene cornell --size 1920x1080 --spp 16 --depth 4 --frames 6 --out '' | grep -i "rays/s" | tail -1
+    "$rtsmoke" --scene cornell --size 1920x1080 --spp 16 --depth 4 --frames 6 --out '' | grep "^RESULT"
   done
 fi

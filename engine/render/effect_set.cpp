@@ -55,6 +55,7 @@ uint32_t deriveMaterialEffects(const scene::Material& material) {
 uint32_t deriveEffects(const scene::Scene& scene) {
   uint32_t effects = 0;
   if (!scene.pointLights.empty()) effects |= PT_EFFECT_DELTA_LIGHTS;
+  if (scene.environment.present()) effects |= PT_EFFECT_ENVIRONMENT;
   // Materials of meshes that are drawn, not every material the file lists.
   auto use = [&](uint32_t materialIndex) {
     const auto& material = scene.materials.at(materialIndex);
@@ -67,18 +68,20 @@ uint32_t deriveEffects(const scene::Scene& scene) {
 }
 
 std::vector<std::string> effectNames(uint32_t effects) {
-  static const char* const kNames[PT_EFFECT_COUNT] = {"area-lights",  "delta-lights", "specular",
-                                                      "transmission", "clearcoat",    "sheen",
-                                                      "textures",     "alpha-mask"};
+  static const std::pair<uint32_t, const char*> kNames[] = {
+      {PT_EFFECT_AREA_LIGHTS, "area-lights"}, {PT_EFFECT_DELTA_LIGHTS, "delta-lights"},
+      {PT_EFFECT_SPECULAR, "specular"},       {PT_EFFECT_TRANSMISSION, "transmission"},
+      {PT_EFFECT_CLEARCOAT, "clearcoat"},     {PT_EFFECT_SHEEN, "sheen"},
+      {PT_EFFECT_TEXTURES, "textures"},       {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
+      {PT_EFFECT_ENVIRONMENT, "environment"}};
   std::vector<std::string> names;
-  for (int bit = 0; bit < PT_EFFECT_COUNT; ++bit)
-    if (effects & (1u << bit)) names.emplace_back(kNames[bit]);
+  for (const auto& [bit, name] : kNames)
+    if (effects & bit) names.emplace_back(name);
   return names;
 }
 
 uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera) {
   uint32_t features = 0;
-  if (scene.environment.present()) features |= kFeatureEnvironment;
   for (const auto& light : scene.pointLights) {
     if (light.type == scene::LightType::Directional) features |= kFeatureDirectionalLights;
     if (light.type == scene::LightType::Directional && light.angularRadiusDegrees > 0.0f)
@@ -101,9 +104,8 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
 }
 
 std::vector<std::string> featureNames(uint32_t features) {
-  static const char* const kNames[] = {"environment", "directional-lights", "soft-sun",
-                                       "spot-lights", "thin-lens",          "lens-blades",
-                                       "absorption"};
+  static const char* const kNames[] = {"directional-lights", "soft-sun",    "spot-lights",
+                                       "thin-lens",          "lens-blades", "absorption"};
   std::vector<std::string> names;
   for (int bit = 0; bit < int(std::size(kNames)); ++bit)
     if (features & (1u << bit)) names.emplace_back(kNames[bit]);

@@ -32,21 +32,22 @@ bool alphaMasked(const scene::Material& material);
 std::vector<std::string> effectNames(uint32_t effects);
 
 // Features of a scene that the shaders reach by a uniform branch on a value
-// of the frame or a light record rather than by a variant bit (a variant bit
-// doubles the compiled variants; the branch costs a scene without the
-// feature nothing measurable: docs/results.md). Listed by --print-effects.
+// of the frame, the camera or a light or material record rather than by a
+// variant bit: each bit doubles the compiled variants, and these cost a
+// scene without them nothing measurable (docs/results.md). The
+// environment, which did cost (11 % of the Cornell box's frame on the
+// H200), is the variant bit PT_EFFECT_ENVIRONMENT. Listed by --print-effects.
 enum SceneFeature : uint32_t {
-  kFeatureEnvironment = 1,        // an environment map or colour
-  kFeatureDirectionalLights = 2,  // directional lights (delta or soft suns)
-  kFeatureSoftSun = 4,            // a directional light with an angular radius
-  kFeatureSpotLights = 8,
-  kFeatureThinLens = 16,    // an aperture radius > 0
-  kFeatureLensBlades = 32,  // a polygonal aperture
-  kFeatureAbsorption = 64,  // a transmissive material with a finite attenuation distance
+  kFeatureDirectionalLights = 1,  // directional lights (delta or soft suns)
+  kFeatureSoftSun = 2,            // a directional light with an angular radius
+  kFeatureSpotLights = 4,
+  kFeatureThinLens = 8,     // an aperture radius > 0
+  kFeatureLensBlades = 16,  // a polygonal aperture
+  kFeatureAbsorption = 32,  // a transmissive material with a finite attenuation distance
 };
 // The features of the scene rendered from `camera` (the scene's own if absent).
 uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera);
-// Their names ("environment", "soft-sun", ...), in bit order.
+// Their names ("soft-sun", "thin-lens", ...), in bit order.
 std::vector<std::string> featureNames(uint32_t features);
 
 // The embedded variant of an entry point ("path_trace.rgen", "whitted.rgen",

@@ -408,6 +408,7 @@ void PathTracer::setEnvironment(const scene::Environment& environment) {
                        environment.height == environment_.height &&
                        environment.radiance == environment_.radiance;
   environment_ = environment;
+  const bool wasPresent = sceneEffects_ & PT_EFFECT_ENVIRONMENT;
   if (sameMap) {
     const std::vector<gpu::EnvironmentData> info = {environmentInfo(environment_)};
     auto* cmd = commandList_.get();
@@ -421,6 +422,12 @@ void PathTracer::setEnvironment(const scene::Environment& environment) {
     rebuildBindings();
   }
   resetAccumulation();
+  // Turned on or off: the pipelines hold the environment's code only when
+  // the scene has one (PT_EFFECT_ENVIRONMENT).
+  if (wasPresent != environment_.present()) {
+    sceneEffects_ ^= PT_EFFECT_ENVIRONMENT;
+    rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
+  }
 }
 
 glm::dmat4 PathTracer::worldToRenderSpace() const {
@@ -870,12 +877,17 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   resetAccumulation();
 
   // Emission is unchanged, so only the material bits can differ.
-  uint32_t effects = sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS);
+  uint32_t effects =
+      sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_ENVIRONMENT);
   for (uint32_t m : drawnMaterials_) effects |= deriveMaterialEffects(materials_[m]);
   sceneEffects_ = effects;
-  const uint32_t wanted = options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
-  if (wanted == pipelineEffects_) return false;
-  pipelineEffects_ = wanted;
+  return rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
+}
+
+bool PathTracer::rebuildPipelinesFor(uint32_t effects) {
+  if (effects == pipelineEffects_) return false;
+  device_.waitForIdle();  // frames in flight still use the old pipelines
+  pipelineEffects_ = effects;
   // Pipelines of the old effect set go; each is rebuilt when next used.
   for (auto& p : pipelines_) p = RayGenerationPipeline{};
   pipelineFor(RayGeneration::Path);

@@ -179,7 +179,8 @@ class PathTracer {
   // Replaces the environment (scene::Environment; one that is not present
   // turns it off) and resets the accumulation. A map equal to the one
   // uploaded keeps its buffers: only rotation, intensity and the background
-  // switch are written, so the viewer's sliders cost no upload.
+  // switch are written, so the viewer's sliders cost no upload. Turning
+  // the environment on or off rebuilds the pipelines (PT_EFFECT_ENVIRONMENT).
   void setEnvironment(const scene::Environment& environment);
   const scene::Environment& environment() const { return environment_; }
   // A new accumulation image of this size (the viewer's render scale); the
@@ -230,6 +231,9 @@ class PathTracer {
   void createAccumulation();
   void uploadEnvironment();
   void rebuildBindings();
+  // Drops the pipelines if they were built for other effects (PT_EFFECT_*)
+  // and builds the path tracer's for these; whether it did.
+  bool rebuildPipelinesFor(uint32_t effects);
   // One pipeline per ray-generation shader, created on first use: drivers
   // compile every hit and intersection shader into each ray-generation shader
   // of a pipeline, so a pipeline holding all three costs three times as much

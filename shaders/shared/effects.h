@@ -17,8 +17,8 @@
 #define PT_EFFECT_SHEEN 32         // sheen > 0
 #define PT_EFFECT_TEXTURES 64      // material textures: base colour, metallic-roughness, emission, normal maps
 #define PT_EFFECT_ALPHA_MASK 128   // alphaMode MASK (textured) or BLEND: an any-hit shader cuts the surface
-#define PT_EFFECT_COUNT 8
-#define PT_EFFECTS_ALL 255
+#define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
+#define PT_EFFECTS_ALL 767         // the eight bits above and the environment
 // Not a scene effect but an output: the path tracer writes the denoiser's
 // guide buffers (PathTracerSettings::writeGuides). Its code and the state it
 // keeps alive across every trace cost about a tenth of a Cornell box frame,
@@ -28,11 +28,11 @@
 // The effects each entry point is compiled in variants of (cmake/Shaders.cmake
 // builds one variant per subset of these bits). Alpha masking is no variant:
 // it adds an any-hit shader to the triangles' hit group instead.
-#define PT_PATH_TRACE_EFFECT_BITS 383  // every effect but alpha masking, and the guides
-#define PT_WHITTED_EFFECT_BITS (PT_EFFECT_SPECULAR + PT_EFFECT_TRANSMISSION + PT_EFFECT_TEXTURES)
+#define PT_PATH_TRACE_EFFECT_BITS 895  // every effect but alpha masking, and the guides
+#define PT_WHITTED_EFFECT_BITS (PT_EFFECT_SPECULAR + PT_EFFECT_TRANSMISSION + PT_EFFECT_TEXTURES + PT_EFFECT_ENVIRONMENT)
 
 #ifndef PT_EFFECTS
-#define PT_EFFECTS 511  // PT_EFFECTS_ALL | PT_OUTPUT_GUIDES
+#define PT_EFFECTS 1023  // PT_EFFECTS_ALL | PT_OUTPUT_GUIDES
 #endif
 #define PT_HAS_EFFECT(effect) ((PT_EFFECTS & (effect)) != 0)
 

@@ -18,9 +18,18 @@
 //   float loadEnvironmentCdf(uint index);     // rows' CDF, then each row's own
 #ifndef PENUMBRA_ENVIRONMENT_HLSLI
 #define PENUMBRA_ENVIRONMENT_HLSLI
+#include "effects.h"
 #include "math.hlsli"
 
-bool environmentPresent(FrameConstants c) { return (c.lights.w & PT_SCENE_ENVIRONMENT) != 0u; }
+// False at compile time in a variant without PT_EFFECT_ENVIRONMENT, so
+// none of the environment's code is in a scene's pipeline that has none.
+bool environmentPresent(FrameConstants c) {
+#if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
+  return (c.lights.w & PT_SCENE_ENVIRONMENT) != 0u;
+#else
+  return false;
+#endif
+}
 
 // The map's direction for a world direction: the rotation undone.
 float3 environmentToMap(EnvironmentData e, float3 d) {

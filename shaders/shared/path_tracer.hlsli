@@ -310,10 +310,11 @@ VertexGuides closeGuides(inout PathState p, float3 albedo, float3 normal) {
 // rather than an emissive triangle: 1 or 0 when there is only one of them,
 // else half (a power estimate would need the scene's extent).
 float environmentChoice(FrameConstants c) {
-  if (!environmentPresent(c)) return 0.0;
+  if (!environmentPresent(c)) return 0.0;  // a constant 0 in variants without the environment
   return c.lights.x > 0u ? 0.5 : 1.0;
 }
 
+#if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
 // What a ray that left the scene along `direction` adds: the environment
 // through the path's throughput, weighted against next-event estimation
 // (which already counted it without MIS); a camera ray sees it only as a
@@ -332,6 +333,7 @@ float3 environmentSeen(FrameConstants c, PathState p, float3 direction) {
   if (weight <= 0.0) return zero3();
   return clampContribution(p.throughput * environmentRadiance(direction) * weight, c.shading.w);
 }
+#endif
 
 // The vertex that `ray` found (its trace returned `record`): its emission
 // and guides, its area-light sample (`shadow`, tMax 0 if none), what its
@@ -355,7 +357,9 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   bool useMis = useNee && (flags & PT_FLAG_MIS) != 0u;
   float clampLimit = c.shading.w;
   if (hit.hitT < 0.0) {
+#if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
     if (environmentPresent(c)) p.radiance += environmentSeen(c, p, direction);
+#endif
     return false;
   }
   float3 radianceBefore = p.radiance;
@@ -433,6 +437,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     float u1 = rngNext(p.rng);
     float u2 = rngNext(p.rng);
     float choice = environmentChoice(c);
+#if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
     if (u0 < choice) {
       EnvironmentSample es = sampleEnvironment(u1, u2);
       lightFromEnvironment = true;
@@ -443,8 +448,12 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
       lightSampled = lightPdf > 0.0 && lightWiLocal.z != 0.0 &&
                      shadingConsistent(ng, -direction, lightWi, wo.z, lightWiLocal.z);
     }
+#endif
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
-    else {
+#if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
+    else
+#endif
+    {
       // The rest of u0 picks the triangle (u0 itself without an environment).
       float triangleU = choice > 0.0 ? min((u0 - choice) / (1.0 - choice), 0.99999994) : u0;
       light = sampleEmissiveTriangles(c.lights.x, triangleU, u1, u2);

@@ -56,10 +56,12 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     WhittedRay ray = stack[top];
     SurfaceHit hit = traceClosest(ray.origin, ray.direction);
     if (hit.hitT < 0.0) {
+#if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
       // Mirror and refraction rays that escape see the environment; camera
       // rays only as a visible background.
       bool seen = ray.depth > 0u || (c.lights.w & PT_SCENE_BACKGROUND) != 0u;
       if (environmentPresent(c) && seen) radiance += ray.weight * environmentRadiance(ray.direction);
+#endif
       continue;
     }
     InstanceData instance = loadInstanceData(hit.instanceIndex);
