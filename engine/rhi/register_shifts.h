@@ -1,5 +1,5 @@
 #pragma once
-// One register-to-binding shift table for both APIs (DESIGN.md §3).
+// One register-to-binding shift table for both APIs (docs/ARCHITECTURE.md, "RHI").
 // HLSL register(tN, spaceS) is Vulkan (set S, binding kShiftT + N), and so on.
 // The DXC SPIR-V flags use the same numbers (-fvk-t-shift 32 all, ...), the
 // GLSL entry points write bindings with the macros of

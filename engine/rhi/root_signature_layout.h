@@ -1,6 +1,6 @@
 #pragma once
-// How a pipeline's binding layout becomes a D3D12 root signature (DESIGN.md
-// §3), as plain data: the mapping is written once, unit-tested on any
+// How a pipeline's binding layout becomes a D3D12 root signature (docs/ARCHITECTURE.md,
+// "D3D12 backend"), as plain data: the mapping is written once, unit-tested on any
 // platform, and backends/d3d12 only translates it into D3D12_ROOT_PARAMETER1s.
 //
 // Global root signature, one per pipeline:

@@ -1,4 +1,4 @@
-// Maps the HLSL dialect of shaders/shared onto GLSL (DESIGN.md §3): include
+// Maps the HLSL dialect of shaders/shared onto GLSL (docs/ARCHITECTURE.md, "Shaders"): include
 // first in every GLSL entry point, before any shared header.
 #ifndef PENUMBRA_HLSL_PRELUDE
 #define PENUMBRA_HLSL_PRELUDE

@@ -1,4 +1,4 @@
-// The shading core compiled by glslang's HLSL front-end (DESIGN.md §3), as a
+// The shading core compiled by glslang's HLSL front-end (docs/ARCHITECTURE.md, "Shaders"), as a
 // compute shader that runs the path tracer in an analytic furnace: the camera
 // sits inside a sphere of albedo rho emitting Le everywhere, so every sample
 // must converge to Le / (1 - rho). Run by tests/shaders/test_hlsl_core.cpp,

@@ -60,7 +60,7 @@ TEST_CASE("glTF: an emissive quad lights a diffuse floor as the form factor says
   const auto scene = scene::loadGltf(gltf("emissive_quad.gltf"));
   render::PathTracerSettings settings;
   settings.seed = 3;
-  const auto img = test::renderScene(*device, scene, 16, 16, 256, settings);
+  const auto img = test::renderScene(*device, scene, 16, 16, 4096, settings);
   REQUIRE(image::countNonFinite(img) == 0);
   // The camera sees the floor (albedo 0.5, Lambertian: specularFactor 0)
   // right under the centre of a 1 m square emitter of radiance 2.5 x 4 = 10,
@@ -72,15 +72,19 @@ TEST_CASE("glTF: an emissive quad lights a diffuse floor as the form factor says
   const double expected = 0.5 * 10.0 * 0.2394548;
   const double measured = centreMean(img, 2);
   INFO("floor radiance " << measured << ", expected " << expected);
-  REQUIRE(measured == Catch::Approx(expected).epsilon(0.04));
+  // 4096 spp over the 5 x 5 centre pixels leave about 0.1 % of noise
+  // (measured at 16384 spp: 0.03 % off, the mirrored file 0.08 %; the
+  // patch is small enough that the form factor's falloff across it is
+  // below that): 0.5 % lets through no light-sampling bias larger than that.
+  REQUIRE(measured == Catch::Approx(expected).epsilon(0.005));
 
   // Mirrored in x by a scene file's transform (the setup is symmetric): the
   // light must still emit downwards, for next-event estimation too.
   const auto mirrored = scene::loadScene(gltf("emissive_mirrored.json"));
-  const auto img2 = test::renderScene(*device, mirrored, 16, 16, 256, settings);
+  const auto img2 = test::renderScene(*device, mirrored, 16, 16, 4096, settings);
   const double measured2 = centreMean(img2, 2);
   INFO("mirrored: floor radiance " << measured2);
-  REQUIRE(measured2 == Catch::Approx(expected).epsilon(0.04));
+  REQUIRE(measured2 == Catch::Approx(expected).epsilon(0.005));
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
@@ -102,9 +106,14 @@ TEST_CASE("glTF: smooth vertex normals shade without facets", "[render][gpu][glt
                        << ", flat " << rf);
     REQUIRE(rf > 0.0);
     REQUIRE(rs < 0.25 * rf);
-    // The same light reaches both: their mean brightness agrees within 10%.
+    // The same light reaches both. Not an analytic check: interpolated
+    // normals move light across the sphere, so the means are of two
+    // different images and differ by 2.1 % (path) and 1.7 % (Whitted),
+    // measured; 5 % catches a light lost or counted twice on either path,
+    // while the form-factor test above holds the light's own value to 0.5 %.
     const auto ms = image::meanRgb(smooth), mf = image::meanRgb(flat);
-    REQUIRE(ms.g == Catch::Approx(mf.g).epsilon(0.1));
+    INFO("mean green: smooth " << ms.g << ", flat " << mf.g);
+    REQUIRE(ms.g == Catch::Approx(mf.g).epsilon(0.05));
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

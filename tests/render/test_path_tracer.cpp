@@ -25,7 +25,11 @@ TEST_CASE("path tracer: Cornell box is finite, deterministic and converges", "[r
 
   const auto a = test::renderScene(*device, scene, kSize, kSize, 16, settings);
   const auto b = test::renderScene(*device, scene, kSize, kSize, 16, settings);
-  const auto reference = test::renderScene(*device, scene, kSize, kSize, 256, settings);
+  // The reference from a seed of its own: with seed 7 its first 16 samples
+  // would be `a` itself, and the means below would agree by construction.
+  render::PathTracerSettings referenceSettings = settings;
+  referenceSettings.seed = 1007;
+  const auto reference = test::renderScene(*device, scene, kSize, kSize, 256, referenceSettings);
 
   // No NaN/Inf, no negative radiance.
   REQUIRE(image::countNonFinite(a) == 0);
@@ -39,7 +43,10 @@ TEST_CASE("path tracer: Cornell box is finite, deterministic and converges", "[r
   const auto other = test::renderScene(*device, scene, kSize, kSize, 16, settings);
   REQUIRE(std::memcmp(a.rgba.data(), other.rgba.data(), a.rgba.size() * sizeof(float)) != 0);
 
-  // 16 spp and 256 spp agree on the image mean within 2% per channel.
+  // 16 spp and an independent 256 spp agree on the image mean within 2 %
+  // per channel: the 16-spp mean of 65536 samples carries about 0.6 % of
+  // noise (3 standard errors), so a bias of a few percent (a light counted
+  // twice is 100 %) fails.
   const auto m16 = image::meanRgb(a), m256 = image::meanRgb(reference);
   INFO("mean 16 spp " << m16.r << " " << m16.g << " " << m16.b << "; 256 spp " << m256.r << " "
                       << m256.g << " " << m256.b);

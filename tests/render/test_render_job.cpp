@@ -61,6 +61,80 @@ TEST_CASE("render job: floats survive the round trip bit for bit", "[render]") {
   CHECK_FALSE(render::renderJobFromJson(R"({"format":"penumbra-render","version":1})", "x").camera);
 }
 
+// Every field the record holds, each away from its default, written and
+// read back: a field the writer forgets or the reader skips comes back as
+// its default and fails here.
+TEST_CASE("render job: the writer round trips every field", "[render]") {
+  render::RenderJob job;
+  job.scene = "material-test";
+  job.vary = "sheen";
+  job.set = "metallic=1";
+  scene::Camera camera;
+  camera.position = {0.25, -1.5, 3.75};
+  camera.forward = {0.0f, -0.6f, 0.8f};
+  camera.up = {0.0f, 0.8f, 0.6f};
+  camera.verticalFovDegrees = 33.0f;
+  camera.apertureRadius = 0.015f;
+  camera.focusDistance = 2.5f;
+  camera.apertureBlades = 7;
+  job.camera = camera;
+  job.width = 321;
+  job.height = 123;
+  job.spp = 77;
+  job.sppPerFrame = 7;
+  auto& t = job.settings;
+  t.integrator = render::Integrator::Whitted;
+  t.strategy = render::SamplingStrategy::Cosine;
+  t.misHeuristic = render::MisHeuristic::Balance;
+  t.sampler = render::Sampler::Sobol;
+  t.maxDepth = 13;
+  t.russianRoulette = false;
+  t.rouletteStartDepth = 5;
+  t.radianceClamp = 4.5f;
+  t.seed = 99;
+  job.toneMapping.exposure = 0.75f;
+  job.toneMapping.toneOperator = render::ToneMapOperator::AcesFitted;
+  job.allEffects = true;
+  job.environment.map = "sky.hdr";
+  job.environment.rotationDegrees = -35.0f;
+  job.environment.intensity = 2.25f;
+  job.environment.visibleBackground = false;
+  const auto back = render::renderJobFromJson(render::renderJobToJson(job), "round trip");
+  CHECK(back.scene == job.scene);
+  CHECK(back.vary == job.vary);
+  CHECK(back.set == job.set);
+  REQUIRE(back.camera.has_value());
+  CHECK(back.camera->position == camera.position);
+  CHECK(back.camera->forward == camera.forward);
+  CHECK(back.camera->up == camera.up);
+  CHECK(back.camera->verticalFovDegrees == camera.verticalFovDegrees);
+  CHECK(back.camera->apertureRadius == camera.apertureRadius);
+  CHECK(back.camera->focusDistance == camera.focusDistance);
+  CHECK(back.camera->apertureBlades == camera.apertureBlades);
+  CHECK(back.width == job.width);
+  CHECK(back.height == job.height);
+  CHECK(back.spp == job.spp);
+  CHECK(back.sppPerFrame == job.sppPerFrame);
+  CHECK(back.settings.integrator == t.integrator);
+  CHECK(back.settings.strategy == t.strategy);
+  CHECK(back.settings.misHeuristic == t.misHeuristic);
+  CHECK(back.settings.sampler == t.sampler);
+  CHECK(back.settings.maxDepth == t.maxDepth);
+  CHECK(back.settings.russianRoulette == t.russianRoulette);
+  CHECK(back.settings.rouletteStartDepth == t.rouletteStartDepth);
+  CHECK(back.settings.radianceClamp == t.radianceClamp);
+  CHECK(back.settings.seed == t.seed);
+  CHECK(back.toneMapping.exposure == job.toneMapping.exposure);
+  CHECK(back.toneMapping.toneOperator == job.toneMapping.toneOperator);
+  CHECK(back.allEffects == job.allEffects);
+  CHECK(back.environment.map == "sky.hdr");
+  CHECK(back.environment.rotationDegrees == -35.0f);
+  CHECK(back.environment.intensity == 2.25f);
+  CHECK(back.environment.visibleBackground == false);
+  // Nothing given, nothing recorded: the scene's own environment stays.
+  CHECK(render::renderJobToJson(render::RenderJob{}).find("environment") == std::string::npos);
+}
+
 TEST_CASE("render job: malformed records name the file and the field", "[render]") {
   REQUIRE_THROWS_WITH(
       render::renderJobFromJson(R"({"format":"penumbra-scene","version":1})", "a.json"),
