@@ -12,7 +12,6 @@
 #include "util/error.h"
 
 namespace penumbra::image {
-namespace {
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -20,6 +19,8 @@ std::string lowerExtension(const std::string& path) {
                  [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
+
+namespace {
 
 std::string temporaryPathFor(const std::string& path) {
   return fmt::format("{}.tmp-{}", path, getpid());

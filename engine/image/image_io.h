@@ -12,6 +12,9 @@ namespace penumbra::image {
 
 enum class FileFormat { Exr, Png };
 
+// A path's extension in lower case, with its dot (".exr"; "" without one).
+std::string lowerExtension(const std::string& path);
+
 // From the extension (.exr, .png; case-insensitive); penumbra::Error otherwise.
 FileFormat formatFromPath(const std::string& path);
 

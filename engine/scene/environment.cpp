@@ -13,13 +13,6 @@
 namespace penumbra::scene {
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 constexpr double kPi = 3.14159265358979323846;
 
 // The unit direction of map coordinates (u, v), as environment.hlsli.
@@ -36,7 +29,7 @@ Environment loadEnvironmentMap(const std::string& path) {
     throw Error(fmt::format("environment '{}': no such file", path));
   Environment env;
   env.source = path;
-  const std::string ext = lowerExtension(path);
+  const std::string ext = image::lowerExtension(path);
   if (ext == ".exr") {
     image::Image img;
     try {
