@@ -263,15 +263,26 @@ bool Viewer::stepScript() {
 
 void Viewer::changeEnvironment(const std::string& key, const std::string& value) {
   render::EnvironmentChoice choice = environment_;
-  scene::Environment env = scene_.environment;
+  scene::Environment& env = scene_.environment;
   if (key == "map") {
     // A new map starts unrotated at intensity 1, as --env FILE alone would.
     choice = render::EnvironmentChoice{};
     choice.map = value;
-    env = render::chooseEnvironment(sceneEnvironment_, scene_.emitsLight(), scene_.name, choice);
-  } else if (!env.present()) {
+    scene::Environment chosen =
+        render::chooseEnvironment(sceneEnvironment_, scene_.emitsLight(), scene_.name, choice);
+    tracer_->setEnvironment(chosen);  // validates before anything changes
+    env = std::move(chosen);
+    environment_ = choice;
+    statusLine_ = env.present() ? fmt::format("environment: {}", env.source) : "environment: none";
+    return;
+  }
+  if (!env.present())
     throw Error(fmt::format("environment {}: there is no environment (environment map FILE)", key));
-  } else if (key == "rotation" || key == "intensity") {
+  // The rest moves the map uploaded without copying it: the sliders call
+  // this every tick.
+  float rotation = env.rotationDegrees, intensity = env.intensity;
+  bool background = env.visibleBackground;
+  if (key == "rotation" || key == "intensity") {
     float number = 0.0f;
     try {
       size_t used = 0;
@@ -281,21 +292,21 @@ void Viewer::changeEnvironment(const std::string& key, const std::string& value)
       throw Error(fmt::format("environment {}: '{}' is not a number", key, value));
     }
     (key == "rotation" ? choice.rotationDegrees : choice.intensity) = number;
-    (key == "rotation" ? env.rotationDegrees : env.intensity) = number;
+    (key == "rotation" ? rotation : intensity) = number;
   } else if (key == "background") {
     if (value != "visible" && value != "hidden")
       throw Error(fmt::format("environment background: '{}' (visible, hidden)", value));
-    choice.visibleBackground = env.visibleBackground = value == "visible";
+    choice.visibleBackground = background = value == "visible";
   } else {
     throw Error(fmt::format(
         "environment: unknown setting '{}' (map, rotation, intensity, background)", key));
   }
-  tracer_->setEnvironment(env);  // validates before anything changes
+  tracer_->setEnvironmentPlacement(rotation, intensity, background);  // validates first
+  env.rotationDegrees = rotation;
+  env.intensity = intensity;
+  env.visibleBackground = background;
   environment_ = choice;
-  scene_.environment = std::move(env);
-  statusLine_ = scene_.environment.present()
-                    ? fmt::format("environment: {}", scene_.environment.source)
-                    : "environment: none";
+  statusLine_ = fmt::format("environment: {}", env.source);
 }
 
 void Viewer::takeScreenshot(const std::string& path) {

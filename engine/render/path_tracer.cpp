@@ -382,45 +382,55 @@ void PathTracer::rebuildBindings() {
 }
 
 void PathTracer::uploadEnvironment() {
+  // Everything is built and written before anything is replaced: an
+  // allocation that fails (a map too large for the device) leaves the
+  // environment that was there, bound and whole.
   const EnvironmentTables tables = buildEnvironmentTables(environment_);
-  auto& s = *scene_;
   using rhi::BufferUsage;
   const std::vector<gpu::EnvironmentData> info = {tables.info};
-  s.environmentInfo = makeStorageBuffer(device_, info, BufferUsage::None, "environment");
-  s.environmentTexels =
+  rhi::BufferHandle newInfo = makeStorageBuffer(device_, info, BufferUsage::None, "environment");
+  rhi::BufferHandle newTexels =
       makeStorageBuffer(device_, tables.texels, BufferUsage::None, "environment texels");
-  s.environmentCdf = makeStorageBuffer(device_, tables.cdf, BufferUsage::None, "environment CDF");
+  rhi::BufferHandle newCdf =
+      makeStorageBuffer(device_, tables.cdf, BufferUsage::None, "environment CDF");
   auto* cmd = commandList_.get();
   cmd->open();
-  writeAll(*cmd, s.environmentInfo, info);
-  writeAll(*cmd, s.environmentTexels, tables.texels);
-  writeAll(*cmd, s.environmentCdf, tables.cdf);
+  writeAll(*cmd, newInfo, info);
+  writeAll(*cmd, newTexels, tables.texels);
+  writeAll(*cmd, newCdf, tables.cdf);
+  cmd->close();
+  device_.submit(cmd);
+  device_.waitForIdle();
+  auto& s = *scene_;
+  s.environmentInfo = std::move(newInfo);
+  s.environmentTexels = std::move(newTexels);
+  s.environmentCdf = std::move(newCdf);
+}
+
+void PathTracer::writeEnvironmentPlacement() {
+  const std::vector<gpu::EnvironmentData> info = {environmentInfo(environment_)};
+  auto* cmd = commandList_.get();
+  cmd->open();
+  writeAll(*cmd, scene_->environmentInfo, info);
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
 }
 
-void PathTracer::setEnvironment(const scene::Environment& environment) {
+void PathTracer::setEnvironment(scene::Environment environment) {
   scene::validateEnvironment(environment);
-  // Frames in flight still read the buffers rewritten or replaced here.
+  // Frames in flight still read the buffers replaced here.
   device_.waitForIdle();
-  const bool sameMap = environment.width == environment_.width &&
-                       environment.height == environment_.height &&
-                       environment.radiance == environment_.radiance;
-  environment_ = environment;
   const bool wasPresent = sceneEffects_ & PT_EFFECT_ENVIRONMENT;
-  if (sameMap) {
-    const std::vector<gpu::EnvironmentData> info = {environmentInfo(environment_)};
-    auto* cmd = commandList_.get();
-    cmd->open();
-    writeAll(*cmd, scene_->environmentInfo, info);
-    cmd->close();
-    device_.submit(cmd);
-    device_.waitForIdle();
-  } else {
+  scene::Environment previous = std::move(environment_);
+  environment_ = std::move(environment);
+  try {
     uploadEnvironment();
-    rebuildBindings();
+  } catch (...) {
+    environment_ = std::move(previous);
+    throw;
   }
+  rebuildBindings();
   resetAccumulation();
   // Turned on or off: the pipelines hold the environment's code only when
   // the scene has one (PT_EFFECT_ENVIRONMENT).
@@ -428,6 +438,25 @@ void PathTracer::setEnvironment(const scene::Environment& environment) {
     sceneEffects_ ^= PT_EFFECT_ENVIRONMENT;
     rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
   }
+}
+
+void PathTracer::setEnvironmentPlacement(float rotationDegrees, float intensity,
+                                         bool visibleBackground) {
+  if (!environment_.present())
+    throw Error("environment: there is none to turn, scale or hide (environment map FILE)");
+  scene::Environment placed;  // the map stays; only these are validated
+  placed.width = placed.height = 1;
+  placed.radiance = {glm::vec3(0.0f)};
+  placed.source = environment_.source;
+  placed.rotationDegrees = rotationDegrees;
+  placed.intensity = intensity;
+  scene::validateEnvironment(placed);
+  device_.waitForIdle();  // frames in flight read the placement written here
+  environment_.rotationDegrees = rotationDegrees;
+  environment_.intensity = intensity;
+  environment_.visibleBackground = visibleBackground;
+  writeEnvironmentPlacement();
+  resetAccumulation();
 }
 
 glm::dmat4 PathTracer::worldToRenderSpace() const {

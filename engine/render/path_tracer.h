@@ -177,11 +177,17 @@ class PathTracer {
   // scene, so that needs a new PathTracer (penumbra::Error otherwise).
   bool updateMaterials(const std::vector<scene::Material>& materials);
   // Replaces the environment (scene::Environment; one that is not present
-  // turns it off) and resets the accumulation. A map equal to the one
-  // uploaded keeps its buffers: only rotation, intensity and the background
-  // switch are written, so the viewer's sliders cost no upload. Turning
-  // the environment on or off rebuilds the pipelines (PT_EFFECT_ENVIRONMENT).
-  void setEnvironment(const scene::Environment& environment);
+  // turns it off) and resets the accumulation. The new map's buffers are
+  // built before the old ones go, so a map that cannot be uploaded throws
+  // and leaves the environment as it was. Turning the environment on or off
+  // rebuilds the pipelines (PT_EFFECT_ENVIRONMENT).
+  void setEnvironment(scene::Environment environment);
+  // Turns, scales or hides the environment uploaded, writing only its
+  // placement (no map is copied, compared or uploaded: the viewer's
+  // sliders call this every tick); resets the accumulation. Throws
+  // penumbra::Error without an environment or with a rotation that is not
+  // finite or an intensity that is not a finite number >= 0.
+  void setEnvironmentPlacement(float rotationDegrees, float intensity, bool visibleBackground);
   const scene::Environment& environment() const { return environment_; }
   // A new accumulation image of this size (the viewer's render scale); the
   // scene and pipelines stay. Resets the accumulation.
@@ -230,6 +236,7 @@ class PathTracer {
                        std::vector<rhi::rt::InstanceDesc>& tlasInstances);
   void createAccumulation();
   void uploadEnvironment();
+  void writeEnvironmentPlacement();
   void rebuildBindings();
   // Drops the pipelines if they were built for other effects (PT_EFFECT_*)
   // and builds the path tracer's for these; whether it did.

@@ -3,6 +3,7 @@
 // equirectangular map (shaders/shared/environment.hlsli gives the directions:
 // the top row looks up (+y), the centre column along -z, u grows towards +x).
 // It lights rays that leave the scene and is sampled by next-event estimation.
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -32,8 +33,13 @@ Environment constantEnvironment(const glm::vec3& radiance);
 // than shipped as a file, so every build has it.
 Environment defaultEnvironment();
 
-// Finite rotation and intensity >= 0, width x height finite radiances >= 0;
-// throws penumbra::Error naming the environment's source.
+// The largest map validateEnvironment takes: 16384x8192 (or any shape of
+// that many texels, no side over 16384).
+inline constexpr uint32_t kMaxEnvironmentWidth = 16384;
+inline constexpr uint64_t kMaxEnvironmentTexels = uint64_t(16384) * 8192;
+
+// At most kMaxEnvironmentTexels, finite rotation and intensity >= 0, width x height finite
+// radiances >= 0; throws penumbra::Error naming the environment's source.
 void validateEnvironment(const Environment& environment);
 
 }  // namespace penumbra::scene

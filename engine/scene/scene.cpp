@@ -56,9 +56,13 @@ uint64_t Scene::triangleCount() const {
 // loader's sanitizer build links scene.cpp without the image readers.
 void validateEnvironment(const Environment& env) {
   if (!env.present()) return;
-  if (env.width > 16384 || env.height > 16384)
-    throw Error(fmt::format("environment '{}': {}x{} texels is larger than 16384x16384", env.source,
-                            env.width, env.height));
+  // 2^27 texels at most, the largest equirectangular map being 16384x8192:
+  // 16 bytes each is a 2 GiB buffer, and 2^27 elements is D3D12's largest
+  // buffer view (D3D12_REQ_BUFFER_RESOURCE_TEXEL_COUNT_2_TO_EXP).
+  if (env.width > kMaxEnvironmentWidth || env.height > kMaxEnvironmentWidth ||
+      uint64_t(env.width) * env.height > kMaxEnvironmentTexels)
+    throw Error(fmt::format("environment '{}': {}x{} texels is more than 16384x8192 ({} texels)",
+                            env.source, env.width, env.height, kMaxEnvironmentTexels));
   if (env.radiance.size() != size_t(env.width) * env.height)
     throw Error(fmt::format("environment '{}': {} texels for a {}x{} map", env.source,
                             env.radiance.size(), env.width, env.height));

@@ -216,8 +216,8 @@ float3 demodulationAlbedo(DisneyMaterial m) {
 // chain of delta vertices is open, its throughput is the path's and its
 // length and emission are kept here; the vertex that closes it hands its
 // guides over (VertexGuides), and they go to the guide buffers at once. A
-// chain that escapes the scene has no surface: zero guides, as a camera ray
-// that misses.
+// chain that escapes the scene has no surface: zero albedo, normal and
+// depth, as a camera ray that misses, and all it carries as its emission.
 struct PathState {
   float3 radiance;
   float3 throughput;
@@ -608,10 +608,14 @@ float3 tracePixel(out float2 moments) {
     if (continues) continue;
     // The path ends: on to the pixel's next sample.
 #if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)
-    if (p.guidesOpen) addGuideSample(launchPixel(), before + s, zero3(), float4(0.0, 0.0, 0.0, 0.0), zero3());
+    // A chain that never closed escaped the scene through delta vertices:
+    // what it carries (the environment, emitters passed on the way) is
+    // emission seen by the camera, kept out of the filter like an
+    // emitter's, and it has no surface.
+    if (p.guidesOpen) addGuideSample(launchPixel(), before + s, zero3(), float4(0.0, 0.0, 0.0, 0.0), p.radiance);
 #endif
     sum += p.radiance;
-    float l = luminance(p.radiance - (p.guidesOpen ? zero3() : p.chainEmission));
+    float l = p.guidesOpen ? 0.0 : luminance(p.radiance - p.chainEmission);
     moments += float2(l, l * l);
     s += 1u;
     if (s >= c.image.z) break;

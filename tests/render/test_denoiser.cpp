@@ -262,6 +262,23 @@ TEST_CASE(
   CHECK(std::abs(n[0] - 1.0f) < 1e-5f);
   // 2 m to the mirror, 1 m on to the wall, along the (nearly) central ray.
   CHECK(std::abs(n[3] - 3.0f) < 0.01f);
+
+  // Without the wall, under a uniform sky: the reflection escapes, so the
+  // pixel has no surface, and the sky it shows is emission seen by the
+  // camera (kept out of the filter), not illumination.
+  const glm::vec3 sky(0.5f, 0.25f, 0.125f);
+  mirror.instances = {{0, glm::mat4(1.0f)}};
+  mirror.environment = scene::constantEnvironment(sky);
+  Render escaped = renderTracer(*device, mirror, 41, 4, 6);
+  const image::Image oEmission = escaped.tracer->readback(escaped.tracer->guides().emission);
+  const image::Image oAlbedo = escaped.tracer->readback(escaped.tracer->guides().albedo);
+  const image::Image oNd = escaped.tracer->readback(escaped.tracer->guides().normalDepth);
+  INFO("mirror under the sky, centre pixel");
+  for (int c = 0; c < 3; ++c) {
+    CHECK(std::abs(oEmission.pixel(20, 20)[c] - sky[c]) < 1e-5f);
+    CHECK(oAlbedo.pixel(20, 20)[c] == 0.0f);
+  }
+  CHECK(oNd.pixel(20, 20)[3] == 0.0f);
   CHECK(device->validationMessageCount() == 0);
 }
 

@@ -354,6 +354,17 @@ TEST_CASE("environment: .exr and .hdr maps load; bad maps and settings are refus
   env.intensity = -1.0f;
   REQUIRE_THROWS_WITH(scene::validateEnvironment(env), ContainsSubstring("intensity -1"));
   env.intensity = 1.0f;
+  // Larger than 16384x8192 (2^27 texels, a 2 GiB buffer): refused before
+  // the texels are even looked at.
+  scene::Environment huge;
+  huge.width = 16384;
+  huge.height = 8193;
+  huge.source = "huge.exr";
+  REQUIRE_THROWS_WITH(scene::validateEnvironment(huge),
+                      ContainsSubstring("huge.exr") && ContainsSubstring("more than 16384x8192"));
+  huge.width = 16385;
+  huge.height = 1;
+  REQUIRE_THROWS_WITH(scene::validateEnvironment(huge), ContainsSubstring("more than 16384x8192"));
   env.radiance[5].y = std::nanf("");
   REQUIRE_THROWS_WITH(scene::validateEnvironment(env), ContainsSubstring("texel (5, 0)"));
   // Settings with no environment to apply them to.

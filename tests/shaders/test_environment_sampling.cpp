@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <boost/math/special_functions/gamma.hpp>
+#include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <cstring>
@@ -273,4 +274,41 @@ TEST_CASE("environment: the density a sample reports is the one MIS evaluates",
     CHECK(std::abs(r.radiance.y - 2.5 * texel.y) <= 1e-5 * (1 + texel.y));
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("environment sampling: a texel's probability is the one its float table steps draw",
+          "[environment]") {
+  // A texel's draw probability is the width of its row's step in the rows'
+  // float CDF times the width of its own step in the row's (the search
+  // takes the first entry above u). A dim texel after a bright one has a
+  // step of about 1e-8 in double, which float rounding makes 0 or 6e-8:
+  // a probability taken from the double weights would then be off by
+  // that factor for NEE and MIS alike.
+  scene::Environment env;
+  env.width = 8;
+  env.height = 4;
+  env.source = "high dynamic range";
+  env.radiance.assign(32, glm::vec3(0.01f));
+  env.radiance[1 * 8 + 2] = glm::vec3(1e6f);  // a sun in row 1
+  env.radiance[2 * 8 + 0] = glm::vec3(3.0f);
+  const render::EnvironmentTables t = render::buildEnvironmentTables(env);
+  REQUIRE(t.cdf.size() == 4 + 32);
+  double sum = 0.0;
+  bool someStepRoundedAway = false;
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 8; ++x) {
+      const double row = double(t.cdf[y]) - (y > 0 ? double(t.cdf[y - 1]) : 0.0);
+      const size_t c = 4 + y * 8 + x;
+      const double column = double(t.cdf[c]) - (x > 0 ? double(t.cdf[c - 1]) : 0.0);
+      const double drawn = row * column;
+      INFO("texel (" << x << ", " << y << ")");
+      CHECK(double(t.texels[y * 8 + x].w) == Catch::Approx(drawn).epsilon(1e-6).margin(1e-30));
+      sum += t.texels[y * 8 + x].w;
+      const double exact = expectedTexelProbabilities(env)[y * 8 + x];
+      if (std::abs(drawn - exact) > 0.5 * exact) someStepRoundedAway = true;
+    }
+  // The map is one where it matters: float rounding moved some texel's
+  // draw probability by more than half its exact value.
+  CHECK(someStepRoundedAway);
+  CHECK(sum == Catch::Approx(1.0).epsilon(1e-6));
 }
