@@ -1,28 +1,37 @@
-# penumbra_add_shaders(TARGET name NAMESPACE ns SOURCES files... INCLUDE_DIRS dirs...
-#                      [HLSL_DIR dir HLSL_INCLUDE_DIRS dirs...]
-#                      [EFFECT_VARIANTS source bits [source bits ...]])
+# penumbra_add_shaders(TARGET name NAMESPACE ns INCLUDE_DIRS dirs...
+#                      [STAGES files... HLSL_INCLUDE_DIRS dirs...]
+#                      [SOURCES files...]
+#                      [EFFECT_VARIANTS stage bits [stage bits ...]])
 #
-# Builds every entry point for both APIs and embeds the results in a static
-# library:
-# - SPIR-V: each GLSL ray-tracing/compute entry point (and .hlsl compute
-#   harnesses through glslang's HLSL front-end) is compiled by glslang. glslang
-#   writes a depfile, so editing an included .hlsli recompiles exactly the
-#   shaders that include it.
-# - DXIL: with HLSL_DIR, every GLSL source X has a DXR twin HLSL_DIR/X.hlsl
-#   (configure fails if one is missing). Where DXC was found (see below) it is
-#   compiled with -T lib_6_3 (ray-tracing stages) or -T cs_6_3 (compute);
-#   without DXC the DXIL is empty and the D3D12 backend says so at pipeline
-#   creation.
-# - Binding layout: penumbra_shader_layout (tools/shader_layout) reflects the
-#   SPIR-V at build time and writes it, the SPIR-V and the DXIL into one
-#   generated header per shader.
+# Builds every entry point and embeds the results in a static library.
+#
+# STAGES are written once, in the shared dialect (docs/ARCHITECTURE.md,
+# "Shaders"); the extension names the stage (.rgen .rmiss .rchit .rahit .rint
+# .comp). For each, the build writes two wrappers that include the API's
+# prelude and then the stage:
+# - GLSL (prelude.glsl, found through INCLUDE_DIRS): glslang compiles it to
+#   SPIR-V for Vulkan. glslang writes a depfile, so editing an included
+#   .hlsli recompiles exactly the shaders that include it.
+# - HLSL (prelude.hlsli, through HLSL_INCLUDE_DIRS): where DXC was found (see
+#   below) it compiles it to DXIL for D3D12, -T lib_6_3 (ray-tracing stages) or
+#   -T cs_6_3 (compute); without DXC the DXIL is empty and the D3D12 backend
+#   says so at pipeline creation. Whether DXC is here or not, glslang's HLSL
+#   front-end compiles the same wrapper with PENUMBRA_HLSL_CHECK (the DXR
+#   intrinsics stubbed, hlsl/prelude.hlsli), for every effect variant's
+#   extremes, so an HLSL-only error in a stage or in the core fails the build.
+# SOURCES are plain GLSL stages (tests' shaders) or .hlsl compute harnesses
+# (glslang's HLSL front-end, entry point "main"), compiled to SPIR-V alone.
+#
+# Binding layout: penumbra_shader_layout (tools/shader_layout) reflects the
+# SPIR-V at build time and writes it, the SPIR-V and the DXIL into one
+# generated header per shader.
 #
 # The generated header <TARGET>.h declares, in namespace <ns>:
 #   std::span<const uint32_t> find(name);   // SPIR-V words, empty if unknown
 #   rhi::ShaderDesc shaderDesc(name);        // everything a backend needs
 # where `name` is the source file name, e.g. "path_trace.rgen".
 #
-# EFFECT_VARIANTS (shaders/shared/effects.h): each listed source is also built
+# EFFECT_VARIANTS (shaders/shared/effects.h): each listed stage is also built
 # once per proper subset M of `bits` with -DPT_EFFECTS=M, named
 # "<stem>.e<M>.<ext>" (path_trace.e5.rgen); the plain name holds every effect.
 
@@ -94,10 +103,11 @@ function(_penumbra_shader_stage name out)
 endfunction()
 
 function(penumbra_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;NAMESPACE;HLSL_DIR"
-                        "SOURCES;INCLUDE_DIRS;HLSL_INCLUDE_DIRS;EFFECT_VARIANTS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;NAMESPACE"
+                        "STAGES;SOURCES;INCLUDE_DIRS;HLSL_INCLUDE_DIRS;EFFECT_VARIANTS" ${ARGN})
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
-  file(MAKE_DIRECTORY ${out_dir})
+  set(wrapper_dir ${CMAKE_CURRENT_BINARY_DIR}/stages)
+  file(MAKE_DIRECTORY ${out_dir} ${wrapper_dir})
   set(include_flags)
   foreach(dir ${ARG_INCLUDE_DIRS})
     list(APPEND include_flags -I${dir})
@@ -105,20 +115,26 @@ function(penumbra_add_shaders)
   set(hlsl_include_flags)
   set(hlsl_depends)
   foreach(dir ${ARG_HLSL_INCLUDE_DIRS})
-    list(APPEND hlsl_include_flags -I ${dir})
+    list(APPEND hlsl_include_flags -I${dir})
     file(GLOB headers ${dir}/*.hlsli ${dir}/*.h)
     list(APPEND hlsl_depends ${headers})
   endforeach()
 
   set(headers)
+  set(checks)
   set(table_entries)
   set(includes)
-  # Jobs: "<source>|<embedded name>|<PT_EFFECTS value or empty>".
+  # Jobs: "<source>|<embedded name>|<PT_EFFECTS value or ->|<stage or source>".
   set(jobs)
+  foreach(src ${ARG_STAGES})
+    get_filename_component(abs ${src} ABSOLUTE)
+    get_filename_component(name ${src} NAME)
+    list(APPEND jobs "${abs}|${name}|-|stage")
+  endforeach()
   foreach(src ${ARG_SOURCES})
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME)
-    list(APPEND jobs "${abs}|${name}|")
+    list(APPEND jobs "${abs}|${name}|-|source")
   endforeach()
   set(variant_args ${ARG_EFFECT_VARIANTS})
   while(variant_args)
@@ -130,7 +146,7 @@ function(penumbra_add_shaders)
     foreach(mask RANGE ${bits})
       math(EXPR inside "${mask} & ${bits}")
       if(inside EQUAL mask AND NOT mask EQUAL bits)
-        list(APPEND jobs "${abs}|${stem}.e${mask}.${ext}|${mask}")
+        list(APPEND jobs "${abs}|${stem}.e${mask}.${ext}|${mask}|stage")
       endif()
     endforeach()
   endwhile()
@@ -139,22 +155,38 @@ function(penumbra_add_shaders)
     string(REPLACE "|" ";" job_parts "${job}")
     list(GET job_parts 0 abs)
     list(GET job_parts 1 name)
-    list(LENGTH job_parts job_length)
+    list(GET job_parts 2 effects)
+    list(GET job_parts 3 kind)
     set(effect_defines)
-    if(job_length GREATER 2)
-      list(GET job_parts 2 effects)
-      if(NOT effects STREQUAL "")
-        set(effect_defines -DPT_EFFECTS=${effects})
-      endif()
+    if(NOT effects STREQUAL "-")
+      set(effect_defines -DPT_EFFECTS=${effects})
     endif()
     get_filename_component(source_name ${abs} NAME)
-    set(src ${abs})
     string(MAKE_C_IDENTIFIER "shader_${name}" var)
     _penumbra_shader_stage(${name} stage)
     set(spv ${out_dir}/${name}.spv)
     set(header ${out_dir}/${name}.h)
     set(lang_flags --target-env vulkan1.2)
-    if(name MATCHES "\\.hlsl$")
+    set(glslang_input ${abs})
+    if(kind STREQUAL "stage")
+      # The wrappers: written at configure time, one per stage source (the
+      # variants share it).
+      # Each names the stage by file name, found through its own directory
+      # (glslang takes no absolute include paths), and names the stage with
+      # -S (its own name ends in .glsl / .hlsl).
+      set(glslang_input ${wrapper_dir}/${source_name}.glsl)
+      set(hlsl_input ${wrapper_dir}/${source_name}.hlsl)
+      # file(CONFIGURE) writes only what changed, so a configure rebuilds nothing.
+      file(CONFIGURE OUTPUT ${glslang_input} CONTENT
+           "#version 460\n#extension GL_GOOGLE_include_directive : require\n#include \"prelude.glsl\"\n#include \"${source_name}\"\n")
+      file(CONFIGURE OUTPUT ${hlsl_input} CONTENT "#include \"prelude.hlsli\"\n#include \"${source_name}\"\n")
+      get_filename_component(stage_dir ${abs} DIRECTORY)
+      string(REGEX REPLACE "^.*\\." "" glslang_stage ${source_name})
+      list(APPEND lang_flags -S ${glslang_stage} -I${stage_dir})
+      if(NOT stage STREQUAL "Compute")
+        list(APPEND lang_flags -DPT_STAGE_RAY_TRACING=1)
+      endif()
+    elseif(name MATCHES "\\.hlsl$")
       # HLSL compute harness: glslang's HLSL front-end, entry point "main".
       # SPIR-V 1.3: glslang 12's HLSL front-end still emits BufferBlock, which
       # SPIR-V 1.4+ forbids. glslang's shift flags do not class registers the
@@ -166,7 +198,7 @@ function(penumbra_add_shaders)
     add_custom_command(
       OUTPUT ${spv}
       COMMAND ${GLSLANG_VALIDATOR} ${lang_flags} ${effect_defines} ${include_flags} --quiet
-              --depfile ${spv}.d -o ${spv} ${abs}
+              --depfile ${spv}.d -o ${spv} ${glslang_input}
       DEPENDS ${abs}
       DEPFILE ${spv}.d
       COMMENT "glslang ${name}"
@@ -174,10 +206,22 @@ function(penumbra_add_shaders)
 
     set(dxil_args)
     set(dxil_depends)
-    if(ARG_HLSL_DIR AND NOT name MATCHES "\\.hlsl$")
-      set(hlsl ${ARG_HLSL_DIR}/${source_name}.hlsl)
-      if(NOT EXISTS ${hlsl})
-        message(FATAL_ERROR "penumbra_add_shaders: ${src} has no DXR twin ${hlsl}")
+    if(kind STREQUAL "stage")
+      # The HLSL check: every stage's plain build (all effects) and its
+      # variant without any, so both sides of each PT_HAS_EFFECT are parsed.
+      if(effects STREQUAL "-" OR effects STREQUAL "0")
+        set(check ${out_dir}/hlsl_check/${name}.spv)
+        add_custom_command(
+          OUTPUT ${check}
+          COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}/hlsl_check
+          COMMAND ${GLSLANG_VALIDATOR} --target-env vulkan1.1 -D -S comp -e main -DPENUMBRA_HLSL_CHECK=1
+                  ${effect_defines} -I${stage_dir} ${hlsl_include_flags} --quiet --depfile ${check}.d -o ${check}
+                  ${hlsl_input}
+          DEPENDS ${abs}
+          DEPFILE ${check}.d
+          COMMENT "HLSL check ${name}"
+          VERBATIM)
+        list(APPEND checks ${check})
       endif()
       if(DXC_EXECUTABLE)
         set(dxil ${out_dir}/${name}.dxil)
@@ -188,16 +232,15 @@ function(penumbra_add_shaders)
         endif()
         add_custom_command(
           OUTPUT ${dxil}
-          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 ${effect_defines} ${hlsl_include_flags} -Fo ${dxil}
-                  ${hlsl}
-          DEPENDS ${hlsl} ${hlsl_depends}
-          COMMENT "dxc ${name}.hlsl"
+          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 ${effect_defines} -I${stage_dir} ${hlsl_include_flags} -Fo ${dxil}
+                  ${hlsl_input}
+          DEPENDS ${abs} ${hlsl_depends}
+          COMMENT "dxc ${name}"
           VERBATIM)
         set(dxil_args --dxil ${dxil})
         set(dxil_depends ${dxil})
       endif()
     endif()
-
     add_custom_command(
       OUTPUT ${header}
       COMMAND ${_penumbra_layout_command} --name ${name} --var ${var} --spirv ${spv} ${dxil_args}
@@ -279,7 +322,7 @@ rhi::ShaderDesc shaderDesc(std::string_view name) {
 }
 }  // namespace @namespace@
 ]=] @ONLY)
-  add_library(${ARG_TARGET} STATIC ${table_cpp} ${headers})
+  add_library(${ARG_TARGET} STATIC ${table_cpp} ${headers} ${checks})
   target_include_directories(${ARG_TARGET} PRIVATE ${out_dir} PUBLIC ${out_dir}/include)
   target_link_libraries(${ARG_TARGET} PUBLIC penumbra_rhi)
 endfunction()

@@ -1,7 +1,7 @@
 #pragma once
 // The denoiser: spatio-temporal variance-guided filtering (SVGF family) of a
 // path tracer's image with its guide buffers, as compute passes through the
-// RHI (shaders/glsl/denoise.comp; kernels in shaders/shared/denoiser.hlsli).
+// RHI (shaders/stages/denoise.comp; kernels in shaders/shared/denoiser.hlsli).
 //
 // Two modes:
 //  - Svgf (temporal): each frame holds only its own samples (the caller

@@ -1,6 +1,6 @@
 #include "render/display_pass.h"
 
-#include "bindings.hlsli"
+#include "display_shared.h"
 #include "penumbra_shaders.h"
 #include "util/error.h"
 
@@ -21,20 +21,16 @@ void DisplayPass::record(rhi::ICommandList& commandList, const rhi::TextureHandl
   if (!bindings_ || boundHdr_ != hdr.get() || boundTarget_ != target.get()) {
     rhi::BindingSetDesc set;
     set.debugName = "display bindings";
-    set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(0), hdr),
-                 rhi::BindingSetItem::storageTexture(PENUMBRA_U(0), target)};
+    set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(TM_T_INPUT), hdr),
+                 rhi::BindingSetItem::storageTexture(PENUMBRA_U(TM_U_OUTPUT), target)};
     bindings_ = device_.createBindingSet(set, *pipeline_);
     boundHdr_ = hdr.get();
     boundTarget_ = target.get();
   }
-  struct {
-    uint32_t sourceWidth, sourceHeight, targetWidth, targetHeight;
-    float exposure;
-    uint32_t toneOperator;
-    uint32_t channels;
-  } push{hdr->desc().width,     hdr->desc().height,   target->desc().width,
-         target->desc().height, toneMapping.exposure, uint32_t(toneMapping.toneOperator),
-         uint32_t(channels)};
+  const gpu::DisplayPush push{hdr->desc().width,    hdr->desc().height,
+                              target->desc().width, target->desc().height,
+                              toneMapping.exposure, uint32_t(toneMapping.toneOperator),
+                              uint32_t(channels)};
   commandList.setComputeState({pipeline_.get(), {bindings_.get()}});
   commandList.setPushConstants(&push, sizeof(push));
   commandList.dispatch((push.targetWidth + 7) / 8, (push.targetHeight + 7) / 8);

@@ -14,6 +14,7 @@
 
 #include "effects.h"
 #include "path_tracer_shared.h"
+#include "payloads_shared.h"
 #include "penumbra_shaders.h"
 #include "render/effect_set.h"
 #include "render/environment_map.h"
@@ -771,9 +772,9 @@ PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGene
     desc.hitGroups.push_back(
         {name, "implicit.rchit", "", implicitIntersectionShader(family), true});
   }
-  desc.maxPayloadBytes = 24;    // HitRecord (hit_record.hlsli)
-  desc.maxAttributeBytes = 12;  // ImplicitAttributes (triangles: 8 bytes of barycentrics)
-  desc.maxRecursionDepth = 1;   // only the ray generation shader traces
+  desc.maxPayloadBytes = sizeof(gpu::HitRecord);
+  desc.maxAttributeBytes = sizeof(gpu::ImplicitAttributes);
+  desc.maxRecursionDepth = 1;  // only the ray generation shader traces
   const auto start = std::chrono::steady_clock::now();
   p.pipeline = device_.createRayTracingPipeline(desc);
   pipelineCreationSeconds_ +=

@@ -1,5 +1,5 @@
 // PathTracer::traceProbeRays: arbitrary rays through the production pipeline
-// (shaders/glsl/probe.rgen), for tests of the hit shaders and for picking.
+// (shaders/stages/probe.rgen), for tests of the hit shaders and for picking.
 #include <fmt/format.h>
 
 #include <cstring>

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "bindings.hlsli"
+#include "display_shared.h"
 #include "penumbra_shaders.h"
 #include "util/error.h"
 
@@ -16,7 +16,8 @@ Tonemapper::Tonemapper(rhi::IDevice& device) : device_(device) {
   commandList_ = device_.createCommandList();
 }
 
-image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure, ToneMapOperator toneOperator) {
+image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure,
+                              ToneMapOperator toneOperator) {
   const uint32_t w = hdr->desc().width, h = hdr->desc().height;
   rhi::BufferDesc out;
   out.byteSize = uint64_t(w) * h * 4;
@@ -30,15 +31,11 @@ image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure, Ton
 
   rhi::BindingSetDesc set;
   set.debugName = "tonemap bindings";
-  set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(0), hdr),
-               rhi::BindingSetItem::storageBuffer(PENUMBRA_U(0), pixels)};
+  set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(TM_T_INPUT), hdr),
+               rhi::BindingSetItem::storageBuffer(PENUMBRA_U(TM_U_OUTPUT), pixels)};
   auto bindings = device_.createBindingSet(set, *pipeline_);
 
-  struct {
-    uint32_t width, height;
-    float exposure;
-    uint32_t toneOperator;
-  } push{w, h, exposure, uint32_t(toneOperator)};
+  const gpu::TonemapPush push{w, h, exposure, uint32_t(toneOperator)};
   auto* cmd = commandList_.get();
   cmd->open();
   cmd->setComputeState({pipeline_.get(), {bindings.get()}});

@@ -15,11 +15,7 @@
 #define PENUMBRA_IMPLICIT_HLSLI
 #include "math.hlsli"
 #include "surface_hit.hlsli"
-
-// Hit attributes of the implicit hit groups (12 bytes; DXR allows 32).
-struct ImplicitAttributes {
-  float3 objectNormal;
-};
+#include "payloads_shared.h"
 
 struct ImplicitHit {
   float s;        // < 0: no hit

@@ -12,5 +12,10 @@ struct float4 {
 struct uint4 {
   uint x = 0, y = 0, z = 0, w = 0;
 };
-static_assert(sizeof(float4) == 16 && sizeof(uint4) == 16);
+// Only in what never sits in a buffer (payloads_shared.h): a ray payload's
+// and a hit's attributes are packed, not std430.
+struct float3 {
+  float x = 0, y = 0, z = 0;
+};
+static_assert(sizeof(float4) == 16 && sizeof(uint4) == 16 && sizeof(float3) == 12);
 }  // namespace penumbra::gpu

@@ -100,7 +100,7 @@ TEST_CASE("binding sets are checked against the reflected layout", "[rhi][reflec
 TEST_CASE("the HLSL-front-end build of the core uses the shared register shifts",
           "[rhi][reflection]") {
   PipelineBindingLayout layout;
-  reflectSpirv(shaders::find("core_check.hlsl"), "core_check.hlsl", layout);
+  reflectSpirv(test_shaders::find("core_check.hlsl"), "core_check.hlsl", layout);
   REQUIRE(layout.spaces.size() == 1);
   REQUIRE(layout.spaces[0].items.size() == 2);
   // register(t0) -> PENUMBRA_T(0) = 32, register(u0) -> PENUMBRA_U(0) = 64.
@@ -130,7 +130,7 @@ bool sameLayout(const PipelineBindingLayout& a, const PipelineBindingLayout& b) 
 TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR-V",
           "[rhi][reflection]") {
   std::vector<const char*> names(std::begin(kPathTracerShaders), std::end(kPathTracerShaders));
-  names.insert(names.end(), {"tonemap.comp", "core_check.hlsl"});
+  names.insert(names.end(), {"tonemap.comp", "display.comp", "denoise.comp"});
   for (const char* name : names) {
     INFO(name);
     const ShaderDesc desc = shaders::shaderDesc(name);
@@ -139,7 +139,7 @@ TEST_CASE("the build-time layouts equal run-time reflection of the embedded SPIR
     CHECK(desc.shaderRecordBytes == runtime.shaderRecordBytes);
   }
   for (const char* name : {"probe.rgen", "probe.rmiss", "probe_alternate.rmiss", "probe.rchit",
-                           "sphere.rint", "texture_sample.comp"}) {
+                           "sphere.rint", "texture_sample.comp", "core_check.hlsl"}) {
     INFO(name);
     const ShaderDesc desc = test_shaders::shaderDesc(name);
     const ShaderReflection runtime = reflectSpirvModule(desc.spirv, name);

@@ -1,22 +1,23 @@
 // Runs the shading core as compiled by glslang's HLSL front-end
-// (shaders/hlsl/core_check.hlsl) in an analytic furnace on the test device:
+// (tests/shaders/harness/core_check.hlsl) in an analytic furnace on the test device:
 // the HLSL spelling of the core must compute the same physics as the GLSL one.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <cstring>
 
 #include "path_tracer_shared.h"
-#include "penumbra_shaders.h"
+#include "penumbra_test_shaders.h"
 #include "test_device.h"
 
 using namespace penumbra;
 
 namespace {
 
-std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t maxDepth, uint32_t spp) {
+std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t maxDepth,
+                              uint32_t spp) {
   constexpr uint32_t kSide = 16, kPixels = kSide * kSide;
   rhi::ComputePipelineDesc desc;
-  desc.shader = shaders::shaderDesc("core_check.hlsl");
+  desc.shader = test_shaders::shaderDesc("core_check.hlsl");
   desc.debugName = "HLSL core furnace";
   auto pipeline = device.createComputePipeline(desc);
 

@@ -2,7 +2,7 @@
 // Runs the shading core's Disney BSDF (shaders/shared/disney_bsdf.hlsli) on
 // many inputs for tests/render/test_disney_bsdf.cpp.
 #extension GL_GOOGLE_include_directive : require
-#include "hlsl_prelude.glsl"
+#include "prelude.glsl"
 #include "path_tracer_shared.h"
 #include "material.hlsli"
 #include "rng.hlsli"

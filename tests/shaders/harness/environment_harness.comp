@@ -5,7 +5,7 @@
 // looked up. It writes 8 floats: the direction, the density, the radiance
 // and environmentPdf(direction) (the density evaluated again, for MIS).
 #extension GL_GOOGLE_include_directive : require
-#include "hlsl_prelude.glsl"
+#include "prelude.glsl"
 #include "path_tracer_shared.h"
 #include "math.hlsli"
 

@@ -3,7 +3,7 @@
 // tests/shaders/test_sampler.cpp: item i is sample firstIndex + i % samples
 // of pixel firstPixel + (i / samples, 0); it writes `dimensions` numbers.
 #extension GL_GOOGLE_include_directive : require
-#include "hlsl_prelude.glsl"
+#include "prelude.glsl"
 #include "path_tracer_shared.h"
 #include "rng.hlsli"
 

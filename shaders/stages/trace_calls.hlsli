@@ -1,9 +1,11 @@
-// traceClosest / traceVisibility and the running-mean accumulation for the
-// DXR ray-generation shaders: the twin of glsl/trace_wrappers.glsl.
-#ifndef PENUMBRA_TRACE_WRAPPERS_HLSLI
-#define PENUMBRA_TRACE_WRAPPERS_HLSLI
-#include "path_trace_common.hlsli"
+// The ray-generation shaders' one trace call (traceRay) and what is built on
+// it (traceClosest, traceVisibility), with the running-mean accumulation into
+// gAccumulation and the count of rays traced (gRayCounter).
+#ifndef PENUMBRA_TRACE_CALLS_HLSLI
+#define PENUMBRA_TRACE_CALLS_HLSLI
+#include "path_trace_resources.hlsli"
 
+PT_TRACE_PAYLOAD(HitRecord);
 static uint gRaysThisLaunch = 0u;
 
 // No opaque ray flag: geometry decides, and only alpha-masked meshes are
@@ -13,15 +15,10 @@ static uint gRaysThisLaunch = 0u;
 // as it was (hitT 0), and the radiance miss shader marks a miss (hitT < 0).
 HitRecord traceRay(float3 origin, float3 direction, float tMax, bool shadow) {
   gRaysThisLaunch += 1u;
-  RayDesc ray;
-  ray.Origin = origin;
-  ray.Direction = direction;
-  ray.TMin = 0.0;
-  ray.TMax = tMax;
   HitRecord record = hitRecordMiss();
   record.hitT = 0.0;
-  TraceRay(gScene, shadow ? RAY_FLAG_ACCEPT_FIRST_HIT_AND_END_SEARCH | RAY_FLAG_SKIP_CLOSEST_HIT_SHADER : RAY_FLAG_NONE,
-           0xff, PT_RAY_CONTRIBUTION, PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, ray, record);
+  PT_TRACE_RAY(gScene, shadow ? PT_RAY_FLAG_SHADOW : PT_RAY_FLAG_NONE, PT_RAY_CONTRIBUTION,
+               PT_GEOMETRY_HIT_GROUP_STRIDE, PT_MISS_RADIANCE, origin, 0.0, direction, tMax, record);
   return record;
 }
 
@@ -35,10 +32,10 @@ bool traceVisibility(float3 origin, float3 direction, float tMax) {
 
 // Running mean over all frames: mean_n = (mean_{n-1} * before + sum) / n.
 void accumulate(uint2 pixel, float3 sum, uint samples, uint before) {
-  float3 previous = before > 0u ? gAccumulation[pixel].xyz : zero3();
+  float3 previous = before > 0u ? PT_LOAD_RW_TEXTURE(gAccumulation, pixel).xyz : zero3();
   float3 mean = (previous * float(before) + sum) / float(before + samples);
-  gAccumulation[pixel] = float4(mean, 1.0);
-  InterlockedAdd(gRayCounter[0], gRaysThisLaunch);
+  PT_STORE_RW_TEXTURE(gAccumulation, pixel, float4(mean, 1.0));
+  PT_ATOMIC_ADD(gRayCounter[0], gRaysThisLaunch);
 }
 
 #endif
