@@ -1,20 +1,23 @@
 #pragma once
-// One register-to-binding shift table for both APIs (docs/ARCHITECTURE.md, "RHI").
+// One register-to-binding shift table for both APIs (docs/ARCHITECTURE.md, "RHI"):
 // HLSL register(tN, spaceS) is Vulkan (set S, binding kShiftT + N), and so on.
-// The DXC SPIR-V flags use the same numbers (-fvk-t-shift 32 all, ...), the
-// GLSL entry points write bindings with the macros of
-// shaders/shared/bindings.hlsli, and the D3D12 root signature maps a reflected
+// The numbers are defined once, in shaders/shared/bindings.hlsli, which the
+// shaders' declarations use; the D3D12 root signature maps a reflected
 // binding back to its register with registerForBinding().
 #include <cstdint>
+
+#include "bindings.hlsli"
 
 namespace penumbra::rhi {
 
 enum class RegisterClass : uint8_t { B, T, U, S };  // CBV, SRV, UAV, sampler
 
-constexpr uint32_t kShiftB = 0;
-constexpr uint32_t kShiftT = 32;
-constexpr uint32_t kShiftU = 64;
-constexpr uint32_t kShiftS = 96;
+constexpr uint32_t kShiftB = PENUMBRA_B(0);
+constexpr uint32_t kShiftT = PENUMBRA_T(0);
+constexpr uint32_t kShiftU = PENUMBRA_U(0);
+constexpr uint32_t kShiftS = PENUMBRA_S(0);
+static_assert(kShiftB < kShiftT && kShiftT < kShiftU && kShiftU < kShiftS,
+              "registerForBinding needs the classes in this order");
 
 struct Register {
   RegisterClass registerClass;

@@ -1,6 +1,7 @@
-// Register-to-binding shift table (engine/rhi/register_shifts.h): HLSL
-// register(tN) is Vulkan binding PENUMBRA_T(N), and so on. Plain macros, so
-// C++, GLSL layout qualifiers and HLSL attributes can all use them.
+// The register-to-binding shift table, defined here once: HLSL register(tN)
+// is Vulkan binding PENUMBRA_T(N), and so on (engine/rhi/register_shifts.h
+// reads the same macros). Plain macros, so C++, GLSL layout qualifiers and
+// HLSL attributes can all use them.
 #ifndef PENUMBRA_BINDINGS_HLSLI
 #define PENUMBRA_BINDINGS_HLSLI
 #define PENUMBRA_B(n) (0 + (n))
