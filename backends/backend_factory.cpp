@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "rhi/validation.h"
 #include "util/error.h"
 #include "vulkan/vulkan_backend.h"
 #ifdef PENUMBRA_HAVE_D3D12
@@ -34,9 +35,9 @@ std::vector<std::string> availableBackends() {
 rhi::DeviceHandle createDevice(const std::string& backend, const rhi::DeviceCreateInfo& info) {
   requireKnown(backend);
 #ifdef PENUMBRA_HAVE_D3D12
-  if (backend == "d3d12") return d3d12::createDevice(info);
+  if (backend == "d3d12") return rhi::validation::wrapDevice(d3d12::createDevice(info));
 #endif
-  return vk::createDevice(info);
+  return rhi::validation::wrapDevice(vk::createDevice(info));
 }
 
 std::vector<rhi::AdapterInfo> listAdapters(const std::string& backend) {

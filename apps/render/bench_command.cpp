@@ -231,7 +231,7 @@ int runBench(const BenchOptions& o) {
              device->backendName());
   fmt::print("scene: {} ({} triangles), {}x{}, {} spp per frame, {} frames each, {} integrator\n",
              scene.name, scene.triangleCount(), width, height, o.sppPerFrame, o.frames,
-             o.integrator == render::Integrator::Path ? "path" : "whitted");
+             render::integratorName(o.integrator));
 
   render::PipelineOptions full;
   full.allEffects = true;
@@ -302,10 +302,8 @@ Command addBenchCommand(CLI::App& app) {
   cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
   cmd->add_option("--device", o->device,
                   "Device index from 'penumbra devices' (default: best with ray tracing)");
-  const std::map<std::string, render::Integrator> integrators{
-      {"path", render::Integrator::Path}, {"whitted", render::Integrator::Whitted}};
   cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
-      ->transform(CLI::CheckedTransformer(integrators))
+      ->transform(CLI::CheckedTransformer(render::integratorsByName()))
       ->default_str("path");
   addDenoiseOption(
       cmd, o->denoise,

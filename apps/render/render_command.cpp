@@ -13,10 +13,11 @@
 #include "progress.h"
 #include "render/denoiser.h"
 #include "render/effect_set.h"
+#include "render/image_size.h"
 #include "render/path_tracer.h"
 #include "render/render_job.h"
 #include "render/render_loop.h"
-#include "render/tonemapper.h"
+#include "render/render_output.h"
 #include "scene/material_row.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
@@ -139,8 +140,9 @@ std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text) {
   if (!std::regex_match(text, m, pattern))
     throw Error(fmt::format("--size '{}': expected WIDTHxHEIGHT, e.g. 512x512", text));
   uint32_t w = std::stoul(m[1]), h = std::stoul(m[2]);
-  if (w == 0 || h == 0 || w > 16384 || h > 16384)
-    throw Error(fmt::format("--size '{}': width and height must be 1..16384", text));
+  if (!render::isValidImageSize(w, h))
+    throw Error(
+        fmt::format("--size '{}': width and height must be 1..{}", text, render::kMaxImageSide));
   return {w, h};
 }
 
@@ -259,19 +261,12 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   const uint64_t rays = loop.rays;
   const rhi::TextureHandle& result = denoiser ? denoiser->output() : tracer.accumulation();
 
+  std::vector<image::ExrLayer> layers;
   if (image::formatFromPath(o.out) == image::FileFormat::Exr) {
-    std::vector<image::ExrLayer> layers =
-        aovLayers(aovs, tracer, denoiser.get(), std::max(1u, tracer.accumulatedSamples()));
+    layers = aovLayers(aovs, tracer, denoiser.get(), std::max(1u, tracer.accumulatedSamples()));
     if (denoiser && !aovs.empty()) layers.push_back({"noisy", {"R", "G", "B"}, tracer.readback()});
-    if (layers.empty())
-      image::saveExr(o.out, tracer.readback(result));
-    else
-      image::saveExrLayers(o.out, tracer.readback(result), layers);
-  } else {
-    render::Tonemapper tonemapper(*device);
-    image::savePng(o.out,
-                   tonemapper.run(result, job.toneMapping.exposure, job.toneMapping.toneOperator));
   }
+  render::saveRender(tracer, result, o.out, job.toneMapping, layers);
   fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
              gpuSeconds * 1e3, gpuSeconds * 1e3 / job.spp);
   if (denoiser)
@@ -348,31 +343,19 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")
       ->check(CLI::Range(0u, 1024u))
       ->capture_default_str();
-  const std::map<std::string, render::Integrator> integrators{
-      {"path", render::Integrator::Path}, {"whitted", render::Integrator::Whitted}};
   cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
-      ->transform(CLI::CheckedTransformer(integrators))
+      ->transform(CLI::CheckedTransformer(render::integratorsByName()))
       ->default_str("path");
-  const std::map<std::string, render::SamplingStrategy> strategies{
-      {"uniform", render::SamplingStrategy::Uniform},
-      {"cosine", render::SamplingStrategy::Cosine},
-      {"bsdf", render::SamplingStrategy::Bsdf},
-      {"nee", render::SamplingStrategy::Nee},
-      {"mis", render::SamplingStrategy::Mis}};
   cmd->add_option("--strategy", o->strategy,
                   "Path sampling: uniform | cosine | bsdf (no light sampling) | nee | mis")
-      ->transform(CLI::CheckedTransformer(strategies))
+      ->transform(CLI::CheckedTransformer(render::strategiesByName()))
       ->default_str("mis");
-  const std::map<std::string, render::MisHeuristic> heuristics{
-      {"power", render::MisHeuristic::Power}, {"balance", render::MisHeuristic::Balance}};
   cmd->add_option("--mis-heuristic", o->heuristic, "MIS weights: power | balance")
-      ->transform(CLI::CheckedTransformer(heuristics))
+      ->transform(CLI::CheckedTransformer(render::misHeuristicsByName()))
       ->default_str("power");
-  const std::map<std::string, render::Sampler> samplers{{"random", render::Sampler::Random},
-                                                        {"sobol", render::Sampler::Sobol}};
   cmd->add_option("--sampler", o->sampler,
                   "Random numbers: random (hashed) | sobol (Owen-scrambled Sobol)")
-      ->transform(CLI::CheckedTransformer(samplers))
+      ->transform(CLI::CheckedTransformer(render::samplersByName()))
       ->default_str("random");
   cmd->add_option("--clamp", o->clamp, "Clamp each sample's radiance to this value (0 = off)")
       ->check(CLI::NonNegativeNumber)

@@ -102,7 +102,7 @@ ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& 
   if (!ImGui_ImplVulkan_Init(&info, renderPass_))
     throw Error("imgui vulkan: ImGui_ImplVulkan_Init failed");
 
-  auto upload = device_.createCommandList();
+  auto upload = device_.createCommandList("ImGui font upload");
   upload->open();
   ImGui_ImplVulkan_CreateFontsTexture(vk::interop::commandBuffer(*upload));
   upload->close();

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "render/image_size.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "viewer_app.h"
@@ -11,8 +12,8 @@ namespace {
 bool parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
   unsigned w = 0, h = 0;
   char extra = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w == 0 || h == 0 || w > 16384 ||
-      h > 16384)
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 ||
+      !penumbra::render::isValidImageSize(w, h))
     return false;
   width = w;
   height = h;

@@ -2,17 +2,13 @@
 
 #include <cmath>
 
+#include "render/camera_model.h"
+
 namespace penumbra::viewer {
 
 Ray cameraRay(const scene::Camera& camera, uint32_t width, uint32_t height, glm::vec2 pixel) {
-  const glm::vec3 forward = glm::normalize(camera.forward);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tanHalfFov = std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f);
-  const float aspect = float(width) / float(height);
-  const float sx = (2.0f * pixel.x / float(width) - 1.0f) * tanHalfFov * aspect;
-  const float sy = (1.0f - 2.0f * pixel.y / float(height)) * tanHalfFov;
-  return {camera.position, glm::normalize(forward + sx * right + sy * up)};
+  const render::CameraModel model = render::cameraModel(camera, width, height);
+  return {camera.position, glm::vec3(render::cameraRayDirection(model, pixel))};
 }
 
 std::optional<PickHit> pick(render::PathTracer& tracer, const scene::Scene& scene, const Ray& ray) {

@@ -18,8 +18,8 @@ struct Ray {
 };
 
 // The ray through `pixel` ((0,0) the top-left corner, pixel centres at +0.5)
-// of an image of width x height, as the shading core's pinhole camera
-// (shaders/shared/camera.hlsli) traces it.
+// of an image of width x height: the engine's camera model
+// (render/camera_model.h), the one the shading core's frame constants are made of.
 Ray cameraRay(const scene::Camera& camera, uint32_t width, uint32_t height, glm::vec2 pixel);
 
 struct PickHit {

@@ -12,7 +12,7 @@
 #include "image/image_io.h"
 #include "picking.h"
 #include "render/render_job.h"
-#include "render/tonemapper.h"
+#include "render/render_output.h"
 #include "scene/material_row.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
@@ -72,7 +72,8 @@ Viewer::Viewer(const ViewerOptions& options)
   ui_ = std::make_unique<ImGuiVulkanRenderer>(*device_, *swapchain_);
   display_ = std::make_unique<render::DisplayPass>(*device_);
   for (uint32_t i = 0; i < options_.framesInFlight; ++i)
-    frameLists_.push_back(device_->createCommandList());
+    frameLists_.push_back(
+        device_->createCommandList(fmt::format("viewer frame {}", frameLists_.size())));
 
   if (!options_.script.empty()) script_ = loadScript(options_.script);
   loadScene(options_.scene);
@@ -310,15 +311,8 @@ void Viewer::changeEnvironment(const std::string& key, const std::string& value)
 }
 
 void Viewer::takeScreenshot(const std::string& path) {
-  const auto format = image::formatFromPath(path);
   image::checkWritable(path);
-  if (format == image::FileFormat::Exr) {
-    image::saveExr(path, tracer_->readback());
-  } else {
-    render::Tonemapper tonemapper(*device_);
-    image::savePng(path, tonemapper.run(tracer_->accumulation(), settings_.toneMapping.exposure,
-                                        settings_.toneMapping.toneOperator));
-  }
+  render::saveRender(*tracer_, tracer_->accumulation(), path, settings_.toneMapping);
   const std::string record = std::filesystem::path(path).replace_extension(".json").string();
   const RenderSize size{tracer_->width(), tracer_->height()};
   // The record holds the scene by name, the material-test row as --vary/--set

@@ -10,6 +10,7 @@
 #include "d3d12_common.h"
 #include "rhi/rhi.h"
 #include "rhi/root_signature_layout.h"
+#include "rhi/shader_table_records.h"
 
 namespace penumbra::d3d12 {
 
@@ -224,14 +225,11 @@ class D3D12BindingSet final : public rhi::IBindingSet {
   std::map<uint32_t, rhi::DescriptorRangeType> rangeTypes_;           // slot -> range type
 };
 
-class D3D12ShaderTable final : public rhi::IShaderTable {
+// The records are rhi::ShaderTableRecords'; this adds the upload into an
+// upload-heap buffer and the DispatchRays ranges.
+class D3D12ShaderTable final : public rhi::ShaderTableRecords {
  public:
   D3D12ShaderTable(D3D12Device& device, std::shared_ptr<D3D12RayTracingPipeline> pipeline, std::string debugName);
-  void setRayGenerationShader(const std::string& exportName, const void* localData, size_t localBytes) override;
-  uint32_t addMissShader(const std::string& exportName, const void* localData, size_t localBytes) override;
-  uint32_t addHitGroup(const std::string& exportName, const void* localData, size_t localBytes) override;
-  void clearMissShaders() override;
-  void clearHitGroups() override;
 
   // Uploads the records if they changed and returns the DispatchRays ranges
   // (width/height/depth left for the caller).
@@ -239,17 +237,9 @@ class D3D12ShaderTable final : public rhi::IShaderTable {
   std::shared_ptr<D3D12Buffer> buffer() const { return buffer_; }
 
  private:
-  struct Record {
-    std::string exportName;
-    std::vector<uint8_t> localData;
-  };
-  Record makeRecord(const std::string& exportName, const void* data, size_t bytes) const;
   D3D12Device& device_;
   std::shared_ptr<D3D12RayTracingPipeline> pipeline_;
   std::string debugName_;
-  Record rayGen_;
-  std::vector<Record> miss_, hit_;
-  bool dirty_ = true;
   std::shared_ptr<D3D12Buffer> buffer_;
   D3D12_DISPATCH_RAYS_DESC dispatch_{};
 };
@@ -267,7 +257,7 @@ class D3D12TimerQuery final : public rhi::ITimerQuery {
 
 class D3D12CommandList final : public rhi::ICommandList {
  public:
-  explicit D3D12CommandList(D3D12Device& device);
+  D3D12CommandList(D3D12Device& device, const std::string& debugName);
   void open() override;
   void close() override;
   void writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) override;
@@ -302,18 +292,13 @@ class D3D12CommandList final : public rhi::ICommandList {
   std::shared_ptr<D3D12Buffer> makeTransientBuffer(uint64_t bytes, rhi::BufferUsage usage,
                                                    rhi::MemoryLocation memory, const char* name);
   void transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets);
-  void bindDescriptorTables(const D3D12RootSignature& rootSignature, const std::vector<rhi::IBindingSet*>& sets,
-                            const char* pipelineKind);
+  void bindDescriptorTables(const D3D12RootSignature& rootSignature, const std::vector<rhi::IBindingSet*>& sets);
   void uavBarrier(ID3D12Resource* resource);
-  void requireOpen(const char* what) const;
   D3D12Device& device_;
   ComPtr<ID3D12CommandAllocator> allocator_;
   ComPtr<ID3D12GraphicsCommandList4> list_;
-  bool recording_ = false;
   const D3D12RootSignature* boundRootSignature_ = nullptr;
   D3D12_DISPATCH_RAYS_DESC boundDispatch_{};
-  bool rayTracingBound_ = false;
-  bool computeBound_ = false;
   std::vector<std::shared_ptr<D3D12Buffer>> transient_;
   std::vector<std::shared_ptr<DescriptorAllocation>> transientDescriptors_;
   uint64_t submissionFence_ = 0;
@@ -333,7 +318,7 @@ class D3D12Device final : public rhi::IDevice {
   rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
   rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
   rhi::TimerQueryHandle createTimerQuery() override;
-  rhi::CommandListHandle createCommandList() override;
+  rhi::CommandListHandle createCommandList(const std::string& debugName) override;
   rhi::SwapchainHandle createSwapchain(const rhi::SwapchainDesc& desc) override;
   void submit(rhi::ICommandList* commandList) override;
   void waitForIdle() override;

@@ -28,26 +28,22 @@ D3D12_RESOURCE_BARRIER transition(ID3D12Resource* resource, D3D12_RESOURCE_STATE
 
 }  // namespace
 
-D3D12CommandList::D3D12CommandList(D3D12Device& device) : device_(device) {
+D3D12CommandList::D3D12CommandList(D3D12Device& device, const std::string& debugName)
+    : device_(device) {
   check(device_.handle()->CreateCommandAllocator(D3D12_COMMAND_LIST_TYPE_DIRECT,
                                                  IID_PPV_ARGS(&allocator_)),
         "CreateCommandAllocator");
-  setName(allocator_.Get(), "command allocator");
+  setName(allocator_.Get(), debugName + " allocator");
   // CreateCommandList1 makes the list closed, so open() can always Reset it.
   check(device_.handle()->CreateCommandList1(0, D3D12_COMMAND_LIST_TYPE_DIRECT,
                                              D3D12_COMMAND_LIST_FLAG_NONE, IID_PPV_ARGS(&list_)),
         "CreateCommandList1 (ID3D12GraphicsCommandList4)");
-  setName(list_.Get(), "command list");
-}
-
-void D3D12CommandList::requireOpen(const char* what) const {
-  if (!recording_) throw Error(fmt::format("d3d12: {} on a command list that is not open", what));
+  setName(list_.Get(), debugName);
 }
 
 // D3D12: fence wait for the list's previous submission (resetting an
 // allocator the GPU still reads is an error) + allocator Reset + list Reset.
 void D3D12CommandList::open() {
-  if (recording_) throw Error("d3d12: open() on a command list that is already open");
   device_.waitForFence(submissionFence_);
   releaseTransientResources();
   check(allocator_->Reset(), "ID3D12CommandAllocator::Reset");
@@ -57,15 +53,11 @@ void D3D12CommandList::open() {
   ID3D12DescriptorHeap* heaps[] = {device_.shaderVisibleHeap().heap(),
                                    device_.samplerHeap().heap()};
   list_->SetDescriptorHeaps(2, heaps);
-  recording_ = true;
-  rayTracingBound_ = computeBound_ = false;
   boundRootSignature_ = nullptr;
 }
 
 void D3D12CommandList::close() {
-  requireOpen("close");
   check(list_->Close(), "ID3D12GraphicsCommandList::Close");
-  recording_ = false;
 }
 
 void D3D12CommandList::releaseTransientResources() {
@@ -98,15 +90,10 @@ void D3D12CommandList::uavBarrier(ID3D12Resource* resource) {
 // UAV barrier when a resource stays in UNORDERED_ACCESS. Upload and readback
 // buffers never change state in D3D12; only the RHI state is recorded.
 void D3D12CommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) {
-  requireOpen("setBufferState");
   auto* b = static_cast<D3D12Buffer*>(buffer);
   const rhi::ResourceState old = buffer->state;
   buffer->state = state;
   if (b->hasFixedState()) return;
-  if (b->isAccelStructStorage())
-    throw Error(
-        fmt::format("d3d12: buffer '{}' holds an acceleration structure; use setAccelStructState",
-                    b->desc().debugName));
   const auto from = toResourceStates(old), to = toResourceStates(state);
   if (from != to) {
     auto barrier = transition(b->resource(), from, to);
@@ -117,7 +104,6 @@ void D3D12CommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState s
 }
 
 void D3D12CommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceState state) {
-  requireOpen("setTextureState");
   auto* t = static_cast<D3D12Texture*>(texture);
   const rhi::ResourceState old = texture->state;
   texture->state = state;
@@ -134,7 +120,6 @@ void D3D12CommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceStat
 // good; ordering a build against later reads (or a read against a rebuild)
 // takes a UAV barrier on the structure.
 void D3D12CommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::ResourceState state) {
-  requireOpen("setAccelStructState");
   const rhi::ResourceState old = as->state;
   as->state = state;
   if (old != rhi::ResourceState::Undefined && (isWriteState(old) || isWriteState(state)))
@@ -143,10 +128,6 @@ void D3D12CommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::Resou
 
 void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes,
                                    uint64_t offset) {
-  requireOpen("writeBuffer");
-  if (offset + bytes > buffer->desc().byteSize)
-    throw Error(fmt::format("d3d12: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)", bytes,
-                            offset, buffer->desc().debugName, buffer->desc().byteSize));
   if (bytes == 0) return;
   auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource,
                                      rhi::MemoryLocation::Upload, "writeBuffer staging");
@@ -159,14 +140,11 @@ void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_
 // D3D12: an upload-heap buffer holding the rows padded to
 // D3D12_TEXTURE_DATA_PITCH_ALIGNMENT (256 bytes), copied with
 // CopyTextureRegion from a placed footprint into subresource 0.
-void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) {
-  requireOpen("writeTexture");
+// `bytes` is the whole texture, tightly packed (checked by the validation layer).
+void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t /*bytes*/) {
   auto* t = static_cast<D3D12Texture*>(texture);
   const auto& d = texture->desc();
   const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
-  if (bytes != rowBytes * d.height)
-    throw Error(fmt::format("d3d12: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes,
-                            d.debugName, d.width, d.height, rowBytes * d.height));
   const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
   // Upload-heap committed resources start 64 KiB aligned, beyond the
   // 512-byte placement alignment footprints need.
@@ -195,7 +173,6 @@ void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, si
 
 void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,
                                   uint64_t srcOffset, uint64_t bytes) {
-  requireOpen("copyBuffer");
   setBufferState(src, rhi::ResourceState::CopySource);
   setBufferState(dst, rhi::ResourceState::CopyDest);
   list_->CopyBufferRegion(static_cast<D3D12Buffer*>(dst)->resource(), dstOffset,
@@ -210,15 +187,10 @@ void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IB
 // repacked with one CopyBufferRegion per row.
 void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst,
                                            uint64_t dstOffset) {
-  requireOpen("copyTextureToBuffer");
   auto* texture = static_cast<D3D12Texture*>(src);
   auto* buffer = static_cast<D3D12Buffer*>(dst);
   const auto& d = src->desc();
   const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
-  const uint64_t bytes = rowBytes * d.height;
-  if (dstOffset + bytes > dst->desc().byteSize)
-    throw Error(fmt::format("d3d12: texture '{}' ({} bytes) does not fit in buffer '{}'",
-                            d.debugName, bytes, dst->desc().debugName));
   setTextureState(src, rhi::ResourceState::CopySource);
 
   const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
@@ -265,10 +237,10 @@ void D3D12CommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst
 // blit there is no conversion, so the formats must match (the D3D12
 // swapchain is RGBA8 for this reason).
 void D3D12CommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
-  requireOpen("copyTexture");
   const auto &d = dst->desc(), &s = src->desc();
-  if (d.width != s.width || d.height != s.height || d.format != s.format)
-    throw Error(fmt::format("d3d12: copyTexture from '{}' to '{}' needs equal sizes and formats",
+  // The validation layer checked the sizes; D3D12 has no format conversion.
+  if (d.format != s.format)
+    throw Error(fmt::format("d3d12: copyTexture from '{}' to '{}' needs equal formats",
                             s.debugName, d.debugName));
   setTextureState(src, rhi::ResourceState::CopySource);
   setTextureState(dst, rhi::ResourceState::CopyDest);
@@ -286,11 +258,7 @@ void D3D12CommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
 // descriptors live until the list has finished on the GPU.
 void D3D12CommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b,
                                          float a) {
-  requireOpen("clearTextureFloat");
   auto* t = static_cast<D3D12Texture*>(texture);
-  if (!hasFlag(t->desc().usage, rhi::TextureUsage::Storage))
-    throw Error(fmt::format("d3d12: clearTextureFloat needs a storage texture; '{}' is not",
-                            t->desc().debugName));
   setTextureState(texture, rhi::ResourceState::UnorderedAccess);
   D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
   uav.Format = t->format();
@@ -308,12 +276,7 @@ void D3D12CommandList::clearTextureFloat(rhi::ITexture* texture, float r, float 
 // D3D12: ClearUnorderedAccessViewUint on a raw (R32_TYPELESS) view of the
 // whole buffer, both handles as for textures.
 void D3D12CommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
-  requireOpen("clearBufferUint");
   auto* b = static_cast<D3D12Buffer*>(buffer);
-  if (b->hasFixedState())
-    throw Error(fmt::format(
-        "d3d12: clearBufferUint needs a device-local buffer; '{}' is an upload/readback buffer",
-        b->desc().debugName));
   setBufferState(buffer, rhi::ResourceState::UnorderedAccess);
   D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
   uav.Format = DXGI_FORMAT_R32_TYPELESS;
@@ -331,11 +294,7 @@ void D3D12CommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
 }
 
 void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
-  requireOpen("buildBottomLevelAccelStruct");
   auto* das = static_cast<D3D12AccelStruct*>(as);
-  if (das->desc().isTopLevel)
-    throw Error(fmt::format("d3d12: '{}' is a top level; use buildTopLevelAccelStruct",
-                            as->desc().debugName));
   for (const auto& g : das->desc().bottomLevelGeometries) {
     if (g.type == rhi::rt::GeometryType::Triangles) {
       setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
@@ -362,18 +321,7 @@ void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
 void D3D12CommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as,
                                                 const rhi::rt::InstanceDesc* instances,
                                                 uint32_t count) {
-  requireOpen("buildTopLevelAccelStruct");
   auto* das = static_cast<D3D12AccelStruct*>(as);
-  if (!das->desc().isTopLevel)
-    throw Error(fmt::format("d3d12: '{}' is a bottom level; use buildBottomLevelAccelStruct",
-                            as->desc().debugName));
-  if (count > das->desc().topLevelMaxInstances)
-    throw Error(fmt::format("d3d12: {} instances exceed '{}' topLevelMaxInstances = {}", count,
-                            as->desc().debugName, das->desc().topLevelMaxInstances));
-  for (uint32_t i = 0; i < count; ++i)
-    if (instances[i].bottomLevelAddress == 0)
-      throw Error(
-          fmt::format("d3d12: instance {} of '{}' has no bottom level", i, as->desc().debugName));
   static_assert(sizeof(rhi::rt::InstanceDesc) == sizeof(D3D12_RAYTRACING_INSTANCE_DESC));
   // Bottom levels built earlier in this list are read by this build; the
   // instances only hold their addresses, so one global UAV barrier orders
@@ -425,72 +373,49 @@ void D3D12CommandList::transitionBindingSets(const std::vector<rhi::IBindingSet*
 }
 
 void D3D12CommandList::bindDescriptorTables(const D3D12RootSignature& rootSignature,
-                                            const std::vector<rhi::IBindingSet*>& sets,
-                                            const char* pipelineKind) {
-  const auto& root = rootSignature.rootLayout();
-  for (const auto& table : root.tables) {
-    const D3D12BindingSet* match = nullptr;
-    for (auto* s : sets)
-      if (s && s->desc().space == table.space) match = static_cast<const D3D12BindingSet*>(s);
-    if (!match)
-      throw Error(fmt::format(
-          "d3d12: the {} pipeline's shaders use space {} but no binding set for it was given",
-          pipelineKind, table.space));
+                                            const std::vector<rhi::IBindingSet*>& sets) {
+  // The validation layer checked that sets[space] is given for every space the
+  // shaders use, made for this layout.
+  for (const auto& table : rootSignature.rootLayout().tables) {
+    const auto* set = static_cast<const D3D12BindingSet*>(sets.at(table.space));
     list_->SetComputeRootDescriptorTable(table.rootParameterIndex,
-                                         match->tableStart(table.rootParameterIndex));
+                                         set->tableStart(table.rootParameterIndex));
   }
 }
 
 // D3D12: SetPipelineState1(state object) + SetComputeRootSignature +
 // SetComputeRootDescriptorTable per space; the shader table is uploaded now.
 void D3D12CommandList::setRayTracingState(const rhi::RayTracingState& state) {
-  requireOpen("setRayTracingState");
   auto* pipeline = static_cast<D3D12RayTracingPipeline*>(state.pipeline);
   auto* table = static_cast<D3D12ShaderTable*>(state.shaderTable);
-  if (!pipeline || !table)
-    throw Error("d3d12: setRayTracingState needs a pipeline and a shader table");
   transitionBindingSets(state.bindingSets);
   boundDispatch_ = table->prepare();
   transient_.push_back(table->buffer());
   list_->SetPipelineState1(pipeline->handle());
   list_->SetComputeRootSignature(pipeline->rootSignature().handle());
-  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets, "ray-tracing");
+  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets);
   boundRootSignature_ = &pipeline->rootSignature();
-  rayTracingBound_ = true;
-  computeBound_ = false;
 }
 
 // D3D12: SetPipelineState + SetComputeRootSignature + descriptor tables.
 void D3D12CommandList::setComputeState(const rhi::ComputeState& state) {
-  requireOpen("setComputeState");
   auto* pipeline = static_cast<D3D12ComputePipeline*>(state.pipeline);
-  if (!pipeline) throw Error("d3d12: setComputeState needs a pipeline");
   transitionBindingSets(state.bindingSets);
   list_->SetPipelineState(pipeline->handle());
   list_->SetComputeRootSignature(pipeline->rootSignature().handle());
-  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets, "compute");
+  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets);
   boundRootSignature_ = &pipeline->rootSignature();
-  computeBound_ = true;
-  rayTracingBound_ = false;
 }
 
 // D3D12: SetComputeRoot32BitConstants into the root-constants parameter.
 void D3D12CommandList::setPushConstants(const void* data, size_t bytes) {
-  requireOpen("setPushConstants");
-  if (!boundRootSignature_) throw Error("d3d12: setPushConstants before a pipeline was bound");
+  // The validation layer checked that a pipeline is bound and `bytes` is what
+  // its shaders declare, so the root layout has the constants.
   const auto& constants = boundRootSignature_->rootLayout().pushConstants;
-  if (!constants)
-    throw Error(
-        "d3d12: setPushConstants but the bound pipeline's shaders declare no push constants");
-  if (bytes % 4 != 0 || bytes / 4 > constants->num32BitValues)
-    throw Error(fmt::format("d3d12: setPushConstants of {} bytes; the shaders declare {}", bytes,
-                            constants->num32BitValues * 4));
   list_->SetComputeRoot32BitConstants(constants->rootParameterIndex, UINT(bytes / 4), data, 0);
 }
 
 void D3D12CommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t depth) {
-  requireOpen("dispatchRays");
-  if (!rayTracingBound_) throw Error("d3d12: dispatchRays without setRayTracingState");
   D3D12_DISPATCH_RAYS_DESC desc = boundDispatch_;
   desc.Width = width;
   desc.Height = height;
@@ -499,21 +424,17 @@ void D3D12CommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t de
 }
 
 void D3D12CommandList::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) {
-  requireOpen("dispatch");
-  if (!computeBound_) throw Error("d3d12: dispatch without setComputeState");
   list_->Dispatch(groupsX, groupsY, groupsZ);
 }
 
 // D3D12: EndQuery(TIMESTAMP) into slot 0; the end query resolves both.
 void D3D12CommandList::beginTimerQuery(rhi::ITimerQuery* query) {
-  requireOpen("beginTimerQuery");
   list_->EndQuery(static_cast<D3D12TimerQuery*>(query)->heap(), D3D12_QUERY_TYPE_TIMESTAMP, 0);
 }
 
 // D3D12: EndQuery(TIMESTAMP) into slot 1 + ResolveQueryData into the
 // query's readback buffer.
 void D3D12CommandList::endTimerQuery(rhi::ITimerQuery* query) {
-  requireOpen("endTimerQuery");
   auto* q = static_cast<D3D12TimerQuery*>(query);
   list_->EndQuery(q->heap(), D3D12_QUERY_TYPE_TIMESTAMP, 1);
   list_->ResolveQueryData(q->heap(), D3D12_QUERY_TYPE_TIMESTAMP, 0, 2, q->results().resource(), 0);

@@ -135,7 +135,9 @@ rhi::BindingSetHandle D3D12Device::createBindingSet(const rhi::BindingSetDesc& d
 
 rhi::TimerQueryHandle D3D12Device::createTimerQuery() { return std::make_shared<D3D12TimerQuery>(*this); }
 
-rhi::CommandListHandle D3D12Device::createCommandList() { return std::make_shared<D3D12CommandList>(*this); }
+rhi::CommandListHandle D3D12Device::createCommandList(const std::string& debugName) {
+  return std::make_shared<D3D12CommandList>(*this, debugName);
+}
 
 rhi::SwapchainHandle D3D12Device::createSwapchain(const rhi::SwapchainDesc& desc) {
   return std::make_shared<D3D12Swapchain>(*this, desc);

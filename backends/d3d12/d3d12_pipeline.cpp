@@ -115,9 +115,6 @@ D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBinding
 
 // D3D12: CreateComputePipelineState with the global root signature.
 D3D12ComputePipeline::D3D12ComputePipeline(D3D12Device& device, const rhi::ComputePipelineDesc& desc) {
-  if (desc.shader.stage != rhi::ShaderStage::Compute)
-    throw Error(fmt::format("d3d12: compute pipeline '{}': '{}' is not a compute shader", desc.debugName,
-                            desc.shader.exportName));
   const D3D12_SHADER_BYTECODE bytecode = dxilOf(desc.shader);
   rhi::PipelineBindingLayout layout;
   rhi::mergeBindingLayout(layout, desc.shader.bindingLayout, desc.shader.exportName);
@@ -137,14 +134,6 @@ D3D12ComputePipeline::D3D12ComputePipeline(D3D12Device& device, const rhi::Compu
 // their export associations for shaders that read shader-record data.
 D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi::RayTracingPipelineDesc& desc)
     : device_(device), desc_(desc) {
-  const auto& adapter = device_.adapter();
-  if (desc.maxRecursionDepth > adapter.maxRecursionDepth)
-    throw Error(fmt::format("d3d12: pipeline '{}' asks for recursion depth {} but {} allows {}", desc.debugName,
-                            desc.maxRecursionDepth, adapter.name, adapter.maxRecursionDepth));
-  if (desc.maxAttributeBytes > D3D12_RAYTRACING_MAX_ATTRIBUTE_SIZE_IN_BYTES)
-    throw Error(fmt::format("d3d12: pipeline '{}': {} attribute bytes exceed DXR's {}", desc.debugName,
-                            desc.maxAttributeBytes, D3D12_RAYTRACING_MAX_ATTRIBUTE_SIZE_IN_BYTES));
-
   // Every pointer in a subobject must stay valid until CreateStateObject:
   // std::list keeps element addresses stable as it grows.
   std::list<D3D12_EXPORT_DESC> exports;
@@ -161,8 +150,6 @@ D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi:
   rhi::PipelineBindingLayout layout;
   std::map<std::string, uint32_t> shaderRecordBytes;
   for (const auto& shader : desc.shaders) {
-    if (shader.stage == rhi::ShaderStage::Compute)
-      throw Error(fmt::format("d3d12: pipeline '{}': '{}' is a compute shader", desc.debugName, shader.exportName));
     const D3D12_SHADER_BYTECODE bytecode = dxilOf(shader);
     const std::wstring name = exportIdentifier(shader.exportName);
     for (const auto& [other, otherName] : d3dNames_)
@@ -186,18 +173,11 @@ D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi:
       localRootBytes_[shader.exportName] = shader.shaderRecordBytes;
   }
 
-  auto import = [&](const std::string& shader, const rhi::HitGroupDesc& group) -> LPCWSTR {
-    if (shader.empty()) return nullptr;
-    auto it = d3dNames_.find(shader);
-    if (it == d3dNames_.end())
-      throw Error(fmt::format("d3d12: pipeline '{}': hit group '{}' names unknown shader '{}'", desc.debugName,
-                              group.exportName, shader));
-    return it->second.c_str();
+  // The validation layer checked that every name is a shader of the right stage.
+  auto import = [&](const std::string& shader) -> LPCWSTR {
+    return shader.empty() ? nullptr : d3dNames_.at(shader).c_str();
   };
   for (const auto& group : desc.hitGroups) {
-    if (group.isProcedural && group.intersection.empty())
-      throw Error(fmt::format("d3d12: pipeline '{}': procedural hit group '{}' has no intersection shader",
-                              desc.debugName, group.exportName));
     const std::wstring name = exportIdentifier(group.exportName);
     for (const auto& [other, otherName] : d3dNames_)
       if (otherName == name)
@@ -207,9 +187,9 @@ D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi:
     auto& hg = hitGroups.emplace_back();
     hg.HitGroupExport = wide(name);
     hg.Type = group.isProcedural ? D3D12_HIT_GROUP_TYPE_PROCEDURAL_PRIMITIVE : D3D12_HIT_GROUP_TYPE_TRIANGLES;
-    hg.ClosestHitShaderImport = import(group.closestHit, group);
-    hg.AnyHitShaderImport = import(group.anyHit, group);
-    hg.IntersectionShaderImport = import(group.intersection, group);
+    hg.ClosestHitShaderImport = import(group.closestHit);
+    hg.AnyHitShaderImport = import(group.anyHit);
+    hg.IntersectionShaderImport = import(group.intersection);
     subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_HIT_GROUP, &hg});
     // A hit group's record serves all its shaders: the largest of theirs.
     uint32_t bytes = 0;
@@ -296,7 +276,6 @@ rhi::ShaderTableHandle D3D12RayTracingPipeline::createShaderTable(const std::str
 D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc& desc,
                                  const D3D12RootSignature& rootSignature)
     : desc_(desc) {
-  rhi::validateBindingSet(desc, rootSignature.bindingLayout());
   const auto& root = rootSignature.rootLayout();
   for (const auto& table : root.tables) {
     if (table.space != desc.space) continue;
@@ -329,16 +308,9 @@ D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc&
       }
       case rhi::ResourceType::StorageBuffer: {
         auto* buffer = static_cast<D3D12Buffer*>(item.buffer.get());
-        const uint32_t stride = layoutItem->structureStride;
-        if (stride == 0 || buffer->desc().byteSize < stride)
-          throw Error(fmt::format("{}: buffer '{}' ({} bytes) at slot {} ('{}') holds no whole {}-byte element",
-                                  desc.debugName, buffer->desc().debugName, buffer->desc().byteSize, item.slot,
-                                  layoutItem->name, stride));
+        const uint32_t stride = layoutItem->structureStride;  // > 0: checked by the validation layer
         const UINT elements = UINT(buffer->desc().byteSize / stride);
         if (range->type == rhi::DescriptorRangeType::UAV) {
-          if (buffer->hasFixedState())
-            throw Error(fmt::format("{}: buffer '{}' at slot {} is written by shaders but lives in an upload or "
-                                    "readback heap", desc.debugName, buffer->desc().debugName, item.slot));
           D3D12_UNORDERED_ACCESS_VIEW_DESC uav{};
           uav.ViewDimension = D3D12_UAV_DIMENSION_BUFFER;
           uav.Buffer.NumElements = elements;
@@ -359,9 +331,6 @@ D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc&
         D3D12_CONSTANT_BUFFER_VIEW_DESC cbv{};
         cbv.BufferLocation = buffer->deviceAddress();
         cbv.SizeInBytes = UINT(buffer->resourceBytes());
-        if (!hasFlag(buffer->desc().usage, rhi::BufferUsage::ConstantBuffer))
-          throw Error(fmt::format("{}: buffer '{}' at slot {} lacks BufferUsage::ConstantBuffer", desc.debugName,
-                                  buffer->desc().debugName, item.slot));
         d->CreateConstantBufferView(&cbv, handle);
         break;
       }

@@ -81,8 +81,6 @@ D3D12_HEAP_PROPERTIES heapProperties(D3D12_HEAP_TYPE type) {
 // readback heaps in COPY_DEST; acceleration-structure storage in
 // RAYTRACING_ACCELERATION_STRUCTURE - as D3D12 requires of each.
 D3D12Buffer::D3D12Buffer(D3D12Device& device, const rhi::BufferDesc& desc) : desc_(desc) {
-  if (desc.byteSize == 0)
-    throw Error(fmt::format("d3d12: buffer '{}' has zero size", desc.debugName));
   resourceBytes_ = desc.byteSize;
   // CBVs cover whole 256-byte units (D3D12_CONSTANT_BUFFER_DATA_PLACEMENT_ALIGNMENT).
   if (hasFlag(desc.usage, rhi::BufferUsage::ConstantBuffer))
@@ -146,10 +144,6 @@ DXGI_FORMAT D3D12Texture::format() const {
 // D3D12: CreateCommittedResource (TEXTURE2D, one mip) on a DEFAULT heap;
 // storage textures allow unordered access.
 D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : desc_(desc) {
-  // sRGB formats have no UAV support in D3D12 (nor storage-image support in Vulkan).
-  if (desc.format == rhi::Format::RGBA8_SRGB && hasFlag(desc.usage, rhi::TextureUsage::Storage))
-    throw Error(fmt::format("d3d12: texture '{}': RGBA8_SRGB cannot have TextureUsage::Storage",
-                            desc.debugName));
   D3D12_RESOURCE_DESC rd{};
   rd.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;
   rd.Width = desc.width;
@@ -223,10 +217,6 @@ D3D12Sampler::D3D12Sampler(const rhi::SamplerDesc& desc) : desc_(desc) {
 // the command list.
 D3D12AccelStruct::D3D12AccelStruct(D3D12Device& device, const rhi::rt::AccelStructDesc& desc)
     : desc_(desc) {
-  if (desc.isTopLevel && desc.topLevelMaxInstances == 0)
-    throw Error(fmt::format("d3d12: top-level '{}' has topLevelMaxInstances = 0", desc.debugName));
-  if (!desc.isTopLevel && desc.bottomLevelGeometries.empty())
-    throw Error(fmt::format("d3d12: bottom-level '{}' has no geometry", desc.debugName));
   AccelStructBuildInputs inputs = buildInputs(0, desc.topLevelMaxInstances);
   D3D12_RAYTRACING_ACCELERATION_STRUCTURE_PREBUILD_INFO info{};
   device.handle()->GetRaytracingAccelerationStructurePrebuildInfo(&inputs.inputs, &info);
@@ -269,9 +259,6 @@ AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress,
       g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_NO_DUPLICATE_ANYHIT_INVOCATION;
     if (geo.type == rhi::rt::GeometryType::Triangles) {
       const auto& t = geo.triangles;
-      if (!t.vertexBuffer)
-        throw Error(
-            fmt::format("d3d12: '{}' has a triangle geometry without vertices", desc_.debugName));
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_TRIANGLES;
       auto& tri = g.Triangles;
       tri.Transform3x4 =
@@ -289,9 +276,6 @@ AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress,
       }
     } else {
       const auto& a = geo.aabbs;
-      if (!a.buffer)
-        throw Error(
-            fmt::format("d3d12: '{}' has an AABB geometry without a buffer", desc_.debugName));
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_PROCEDURAL_PRIMITIVE_AABBS;
       g.AABBs.AABBCount = a.count;
       g.AABBs.AABBs.StartAddress = a.buffer->deviceAddress() + a.offset;

@@ -13,8 +13,6 @@ D3D12Swapchain::D3D12Swapchain(D3D12Device& device, const rhi::SwapchainDesc& de
   if (desc_.window.system != rhi::WindowSystem::Win32 || !desc_.window.window)
     throw Error(fmt::format("d3d12: a swapchain needs a Win32 window (got a {} window)",
                             rhi::windowSystemName(desc_.window.system)));
-  if (desc_.framesInFlight < 1 || desc_.framesInFlight > 4)
-    throw Error(fmt::format("d3d12: {} frames in flight is outside 1..4", desc_.framesInFlight));
   window_ = static_cast<HWND>(desc_.window.window);
 
   ComPtr<IDXGIFactory5> factory5;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rhi/rhi.h"
+#include "rhi/shader_table_records.h"
 #include "vulkan_functions.h"
 
 namespace penumbra::vk {
@@ -201,16 +202,12 @@ class VulkanBindingSet final : public rhi::IBindingSet {
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };
 
-class VulkanShaderTable final : public rhi::IShaderTable {
+// The records are rhi::ShaderTableRecords'; this adds the upload into a
+// buffer aligned to shaderGroupBaseAlignment and the strided regions.
+class VulkanShaderTable final : public rhi::ShaderTableRecords {
  public:
   VulkanShaderTable(VulkanDevice& device, std::shared_ptr<VulkanRayTracingPipeline> pipeline,
                     std::string debugName);
-  void setRayGenerationShader(const std::string& exportName, const void* localData,
-                              size_t localBytes) override;
-  uint32_t addMissShader(const std::string& exportName, const void* localData, size_t localBytes) override;
-  uint32_t addHitGroup(const std::string& exportName, const void* localData, size_t localBytes) override;
-  void clearMissShaders() override;
-  void clearHitGroups() override;
 
   // Uploads the records if they changed and returns the regions to trace with.
   struct Regions {
@@ -220,17 +217,9 @@ class VulkanShaderTable final : public rhi::IShaderTable {
   std::shared_ptr<VulkanBuffer> buffer() const { return buffer_; }
 
  private:
-  struct Record {
-    std::string exportName;
-    std::vector<uint8_t> localData;
-  };
-  Record makeRecord(const std::string& exportName, const void* data, size_t bytes) const;
   VulkanDevice& device_;
   std::shared_ptr<VulkanRayTracingPipeline> pipeline_;
   std::string debugName_;
-  Record rayGen_;
-  std::vector<Record> miss_, hit_;
-  bool dirty_ = true;
   std::shared_ptr<VulkanBuffer> buffer_;
   Regions regions_;
 };
@@ -248,7 +237,7 @@ class VulkanTimerQuery final : public rhi::ITimerQuery {
 
 class VulkanCommandList final : public rhi::ICommandList {
  public:
-  explicit VulkanCommandList(VulkanDevice& device);
+  VulkanCommandList(VulkanDevice& device, const std::string& debugName);
   ~VulkanCommandList() override;
   void open() override;
   void close() override;
@@ -284,17 +273,13 @@ class VulkanCommandList final : public rhi::ICommandList {
                                                     rhi::MemoryLocation memory, uint64_t alignment,
                                                     const char* name);
   void transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets);
-  void requireOpen(const char* what) const;
   VulkanDevice& device_;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
-  bool recording_ = false;
   VkPipelineLayout boundLayout_ = VK_NULL_HANDLE;
   VkShaderStageFlags boundStages_ = 0;
   VulkanShaderTable::Regions boundRegions_;
-  bool rayTracingBound_ = false;
-  bool computeBound_ = false;
   std::vector<std::shared_ptr<VulkanBuffer>> transient_;
 };
 
@@ -315,7 +300,7 @@ class VulkanDevice final : public rhi::IDevice {
   rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
   rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
   rhi::TimerQueryHandle createTimerQuery() override;
-  rhi::CommandListHandle createCommandList() override;
+  rhi::CommandListHandle createCommandList(const std::string& debugName) override;
   rhi::SwapchainHandle createSwapchain(const rhi::SwapchainDesc& desc) override;
   void submit(rhi::ICommandList* commandList) override;
   // submit() that also waits for and signals semaphores (the swapchain's).

@@ -89,7 +89,8 @@ bool needsBarrier(rhi::ResourceState from, rhi::ResourceState to) {
 
 }  // namespace
 
-VulkanCommandList::VulkanCommandList(VulkanDevice& device) : device_(device) {
+VulkanCommandList::VulkanCommandList(VulkanDevice& device, const std::string& debugName)
+    : device_(device) {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.queueFamilyIndex = device_.queueFamily();
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
@@ -103,16 +104,13 @@ VulkanCommandList::VulkanCommandList(VulkanDevice& device) : device_(device) {
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
   check(vkCreateFence(device_.handle(), &fenceInfo, nullptr, &fence_), "vkCreateFence");
+  device_.setName(VK_OBJECT_TYPE_COMMAND_BUFFER, uint64_t(commandBuffer_), debugName);
 }
 
 VulkanCommandList::~VulkanCommandList() {
   vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX);
   vkDestroyFence(device_.handle(), fence_, nullptr);
   vkDestroyCommandPool(device_.handle(), pool_, nullptr);
-}
-
-void VulkanCommandList::requireOpen(const char* what) const {
-  if (!recording_) throw Error(fmt::format("vulkan: {} on a command list that is not open", what));
 }
 
 void VulkanCommandList::open() {
@@ -123,15 +121,11 @@ void VulkanCommandList::open() {
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(commandBuffer_, &begin), "vkBeginCommandBuffer");
-  recording_ = true;
-  rayTracingBound_ = computeBound_ = false;
   boundLayout_ = VK_NULL_HANDLE;
 }
 
 void VulkanCommandList::close() {
-  requireOpen("close");
   check(vkEndCommandBuffer(commandBuffer_), "vkEndCommandBuffer");
-  recording_ = false;
 }
 
 std::shared_ptr<VulkanBuffer> VulkanCommandList::makeTransientBuffer(uint64_t bytes,
@@ -150,7 +144,6 @@ std::shared_ptr<VulkanBuffer> VulkanCommandList::makeTransientBuffer(uint64_t by
 }
 
 void VulkanCommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) {
-  requireOpen("setBufferState");
   if (!needsBarrier(buffer->state, state)) return;
   auto from = stageAccess(buffer->state), to = stageAccess(state);
   // Buffers and acceleration structures share one global memory barrier
@@ -164,7 +157,6 @@ void VulkanCommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState 
 }
 
 void VulkanCommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::ResourceState state) {
-  requireOpen("setAccelStructState");
   if (!needsBarrier(as->state, state)) return;
   auto from = stageAccess(as->state), to = stageAccess(state);
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -176,7 +168,6 @@ void VulkanCommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::Reso
 }
 
 void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceState state) {
-  requireOpen("setTextureState");
   if (!needsBarrier(texture->state, state)) return;
   auto* t = static_cast<VulkanTexture*>(texture);
   auto from = stageAccess(texture->state), to = stageAccess(state);
@@ -195,10 +186,6 @@ void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceSta
 
 void VulkanCommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes,
                                     uint64_t offset) {
-  requireOpen("writeBuffer");
-  if (offset + bytes > buffer->desc().byteSize)
-    throw Error(fmt::format("vulkan: writeBuffer of {} bytes at {} overflows '{}' ({} bytes)",
-                            bytes, offset, buffer->desc().debugName, buffer->desc().byteSize));
   if (bytes == 0) return;
   auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource,
                                      rhi::MemoryLocation::Upload, 0, "writeBuffer staging");
@@ -210,12 +197,7 @@ void VulkanCommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size
 }
 
 void VulkanCommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t bytes) {
-  requireOpen("writeTexture");
   const auto& d = texture->desc();
-  const uint64_t expected = uint64_t(d.width) * d.height * rhi::formatByteSize(d.format);
-  if (bytes != expected)
-    throw Error(fmt::format("vulkan: writeTexture of {} bytes into '{}' ({}x{}, {} bytes)", bytes,
-                            d.debugName, d.width, d.height, expected));
   auto staging = makeTransientBuffer(bytes, rhi::BufferUsage::CopySource,
                                      rhi::MemoryLocation::Upload, 0, "writeTexture staging");
   std::memcpy(staging->mappedData(), data, bytes);
@@ -231,7 +213,6 @@ void VulkanCommandList::writeTexture(rhi::ITexture* texture, const void* data, s
 
 void VulkanCommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,
                                    uint64_t srcOffset, uint64_t bytes) {
-  requireOpen("copyBuffer");
   setBufferState(src, rhi::ResourceState::CopySource);
   setBufferState(dst, rhi::ResourceState::CopyDest);
   VkBufferCopy region{srcOffset, dstOffset, bytes};
@@ -244,12 +225,7 @@ void VulkanCommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::I
 
 void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* dst,
                                             uint64_t dstOffset) {
-  requireOpen("copyTextureToBuffer");
   const auto& d = src->desc();
-  const uint64_t bytes = uint64_t(d.width) * d.height * rhi::formatByteSize(d.format);
-  if (dstOffset + bytes > dst->desc().byteSize)
-    throw Error(fmt::format("vulkan: texture '{}' ({} bytes) does not fit in buffer '{}'",
-                            d.debugName, bytes, dst->desc().debugName));
   setTextureState(src, rhi::ResourceState::CopySource);
   setBufferState(dst, rhi::ResourceState::CopyDest);
   VkBufferImageCopy region{};
@@ -264,14 +240,7 @@ void VulkanCommandList::copyTextureToBuffer(rhi::ITexture* src, rhi::IBuffer* ds
 }
 
 void VulkanCommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
-  requireOpen("copyTexture");
   const auto &d = dst->desc(), &s = src->desc();
-  if (d.width != s.width || d.height != s.height)
-    throw Error(fmt::format("vulkan: copyTexture from '{}' ({}x{}) to '{}' ({}x{}): sizes differ",
-                            s.debugName, s.width, s.height, d.debugName, d.width, d.height));
-  if (rhi::formatByteSize(d.format) != rhi::formatByteSize(s.format))
-    throw Error(fmt::format("vulkan: copyTexture from '{}' to '{}': formats differ in size",
-                            s.debugName, d.debugName));
   setTextureState(src, rhi::ResourceState::CopySource);
   setTextureState(dst, rhi::ResourceState::CopyDest);
   VkImage from = static_cast<VulkanTexture*>(src)->image();
@@ -297,7 +266,6 @@ void VulkanCommandList::copyTexture(rhi::ITexture* dst, rhi::ITexture* src) {
 
 void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float g, float b,
                                           float a) {
-  requireOpen("clearTextureFloat");
   setTextureState(texture, rhi::ResourceState::CopyDest);
   VkClearColorValue color{};
   color.float32[0] = r;
@@ -310,18 +278,13 @@ void VulkanCommandList::clearTextureFloat(rhi::ITexture* texture, float r, float
 }
 
 void VulkanCommandList::clearBufferUint(rhi::IBuffer* buffer, uint32_t value) {
-  requireOpen("clearBufferUint");
   setBufferState(buffer, rhi::ResourceState::CopyDest);
   vkCmdFillBuffer(commandBuffer_, static_cast<VulkanBuffer*>(buffer)->handle(), 0, VK_WHOLE_SIZE,
                   value);
 }
 
 void VulkanCommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
-  requireOpen("buildBottomLevelAccelStruct");
   auto* vas = static_cast<VulkanAccelStruct*>(as);
-  if (vas->desc().isTopLevel)
-    throw Error(fmt::format("vulkan: '{}' is a top level; use buildTopLevelAccelStruct",
-                            as->desc().debugName));
   for (const auto& g : vas->desc().bottomLevelGeometries) {
     if (g.type == rhi::rt::GeometryType::Triangles) {
       setBufferState(g.triangles.vertexBuffer, rhi::ResourceState::AccelStructBuildInput);
@@ -346,18 +309,7 @@ void VulkanCommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
 void VulkanCommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as,
                                                  const rhi::rt::InstanceDesc* instances,
                                                  uint32_t count) {
-  requireOpen("buildTopLevelAccelStruct");
   auto* vas = static_cast<VulkanAccelStruct*>(as);
-  if (!vas->desc().isTopLevel)
-    throw Error(fmt::format("vulkan: '{}' is a bottom level; use buildBottomLevelAccelStruct",
-                            as->desc().debugName));
-  if (count > vas->desc().topLevelMaxInstances)
-    throw Error(fmt::format("vulkan: {} instances exceed '{}' topLevelMaxInstances = {}", count,
-                            as->desc().debugName, vas->desc().topLevelMaxInstances));
-  for (uint32_t i = 0; i < count; ++i)
-    if (instances[i].bottomLevelAddress == 0)
-      throw Error(
-          fmt::format("vulkan: instance {} of '{}' has no bottom level", i, as->desc().debugName));
   // Bottom levels built earlier in this list are read by this build; the
   // instances only hold their addresses, so one global barrier covers them.
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -414,11 +366,8 @@ void VulkanCommandList::transitionBindingSets(const std::vector<rhi::IBindingSet
 }
 
 void VulkanCommandList::setRayTracingState(const rhi::RayTracingState& state) {
-  requireOpen("setRayTracingState");
   auto* pipeline = static_cast<VulkanRayTracingPipeline*>(state.pipeline);
   auto* table = static_cast<VulkanShaderTable*>(state.shaderTable);
-  if (!pipeline || !table)
-    throw Error("vulkan: setRayTracingState needs a pipeline and a shader table");
   transitionBindingSets(state.bindingSets);
   boundRegions_ = table->prepare();
   transient_.push_back(table->buffer());
@@ -431,14 +380,10 @@ void VulkanCommandList::setRayTracingState(const rhi::RayTracingState& state) {
                             nullptr);
   boundLayout_ = pipeline->layout().handle();
   boundStages_ = pipeline->layout().stages();
-  rayTracingBound_ = true;
-  computeBound_ = false;
 }
 
 void VulkanCommandList::setComputeState(const rhi::ComputeState& state) {
-  requireOpen("setComputeState");
   auto* pipeline = static_cast<VulkanComputePipeline*>(state.pipeline);
-  if (!pipeline) throw Error("vulkan: setComputeState needs a pipeline");
   transitionBindingSets(state.bindingSets);
   vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline->handle());
   std::vector<VkDescriptorSet> sets;
@@ -449,38 +394,28 @@ void VulkanCommandList::setComputeState(const rhi::ComputeState& state) {
                             nullptr);
   boundLayout_ = pipeline->layout().handle();
   boundStages_ = pipeline->layout().stages();
-  computeBound_ = true;
-  rayTracingBound_ = false;
 }
 
 void VulkanCommandList::setPushConstants(const void* data, size_t bytes) {
-  requireOpen("setPushConstants");
-  if (!boundLayout_) throw Error("vulkan: setPushConstants before a pipeline was bound");
   vkCmdPushConstants(commandBuffer_, boundLayout_, boundStages_, 0, uint32_t(bytes), data);
 }
 
 void VulkanCommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t depth) {
-  requireOpen("dispatchRays");
-  if (!rayTracingBound_) throw Error("vulkan: dispatchRays without setRayTracingState");
   vkCmdTraceRaysKHR(commandBuffer_, &boundRegions_.rayGen, &boundRegions_.miss, &boundRegions_.hit,
                     &boundRegions_.callable, width, height, depth);
 }
 
 void VulkanCommandList::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) {
-  requireOpen("dispatch");
-  if (!computeBound_) throw Error("vulkan: dispatch without setComputeState");
   vkCmdDispatch(commandBuffer_, groupsX, groupsY, groupsZ);
 }
 
 void VulkanCommandList::beginTimerQuery(rhi::ITimerQuery* query) {
-  requireOpen("beginTimerQuery");
   auto* q = static_cast<VulkanTimerQuery*>(query);
   vkCmdResetQueryPool(commandBuffer_, q->pool(), 0, 2);
   vkCmdWriteTimestamp(commandBuffer_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, q->pool(), 0);
 }
 
 void VulkanCommandList::endTimerQuery(rhi::ITimerQuery* query) {
-  requireOpen("endTimerQuery");
   auto* q = static_cast<VulkanTimerQuery*>(query);
   vkCmdWriteTimestamp(commandBuffer_, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, q->pool(), 1);
 }

@@ -224,8 +224,8 @@ rhi::TimerQueryHandle VulkanDevice::createTimerQuery() {
   return std::make_shared<VulkanTimerQuery>(*this);
 }
 
-rhi::CommandListHandle VulkanDevice::createCommandList() {
-  return std::make_shared<VulkanCommandList>(*this);
+rhi::CommandListHandle VulkanDevice::createCommandList(const std::string& debugName) {
+  return std::make_shared<VulkanCommandList>(*this, debugName);
 }
 
 rhi::SwapchainHandle VulkanDevice::createSwapchain(const rhi::SwapchainDesc& desc) {

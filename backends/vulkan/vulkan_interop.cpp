@@ -1,5 +1,6 @@
 #include "vulkan_interop.h"
 
+#include "rhi/validation.h"
 #include "util/error.h"
 #include "vulkan_backend.h"
 #include "vulkan_swapchain.h"
@@ -8,7 +9,7 @@ namespace penumbra::vk::interop {
 namespace {
 template <class Derived, class Base>
 Derived& backendObject(Base& object, const char* what) {
-  auto* derived = dynamic_cast<Derived*>(&object);
+  auto* derived = dynamic_cast<Derived*>(&rhi::validation::backendObject(object));
   if (!derived) throw Error(std::string("vulkan interop: the ") + what + " is not a Vulkan one");
   return *derived;
 }
@@ -31,7 +32,9 @@ VkCommandBuffer commandBuffer(rhi::ICommandList& commandList) {
 }
 
 VkImageView imageView(rhi::ITexture& texture) {
-  return backendObject<VulkanTexture>(texture, "texture").view();
+  auto* vkTexture = dynamic_cast<VulkanTexture*>(&texture);
+  if (!vkTexture) throw Error("vulkan interop: the texture is not a Vulkan one");
+  return vkTexture->view();
 }
 
 VkFormat swapchainFormat(rhi::ISwapchain& swapchain) {

@@ -14,24 +14,36 @@ namespace {
 
 VkDescriptorType toDescriptorType(rhi::ResourceType type) {
   switch (type) {
-    case rhi::ResourceType::AccelStruct: return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-    case rhi::ResourceType::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    case rhi::ResourceType::ConstantBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    case rhi::ResourceType::StorageTexture: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    case rhi::ResourceType::SampledTexture: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    case rhi::ResourceType::Sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
+    case rhi::ResourceType::AccelStruct:
+      return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    case rhi::ResourceType::StorageBuffer:
+      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case rhi::ResourceType::ConstantBuffer:
+      return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case rhi::ResourceType::StorageTexture:
+      return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case rhi::ResourceType::SampledTexture:
+      return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case rhi::ResourceType::Sampler:
+      return VK_DESCRIPTOR_TYPE_SAMPLER;
   }
   return VK_DESCRIPTOR_TYPE_MAX_ENUM;
 }
 
 VkShaderStageFlagBits toVkStage(rhi::ShaderStage stage) {
   switch (stage) {
-    case rhi::ShaderStage::Compute: return VK_SHADER_STAGE_COMPUTE_BIT;
-    case rhi::ShaderStage::RayGeneration: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
-    case rhi::ShaderStage::Miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
-    case rhi::ShaderStage::ClosestHit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
-    case rhi::ShaderStage::AnyHit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
-    case rhi::ShaderStage::Intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    case rhi::ShaderStage::Compute:
+      return VK_SHADER_STAGE_COMPUTE_BIT;
+    case rhi::ShaderStage::RayGeneration:
+      return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    case rhi::ShaderStage::Miss:
+      return VK_SHADER_STAGE_MISS_BIT_KHR;
+    case rhi::ShaderStage::ClosestHit:
+      return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+    case rhi::ShaderStage::AnyHit:
+      return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+    case rhi::ShaderStage::Intersection:
+      return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
   }
   return VK_SHADER_STAGE_ALL;
 }
@@ -104,7 +116,8 @@ VulkanPipelineLayout::~VulkanPipelineLayout() {
   for (auto l : setLayouts_) vkDestroyDescriptorSetLayout(device_.handle(), l, nullptr);
 }
 
-VulkanComputePipeline::VulkanComputePipeline(VulkanDevice& device, const rhi::ComputePipelineDesc& desc)
+VulkanComputePipeline::VulkanComputePipeline(VulkanDevice& device,
+                                             const rhi::ComputePipelineDesc& desc)
     : device_(device) {
   rhi::PipelineBindingLayout reflected;
   rhi::mergeBindingLayout(reflected, desc.shader.bindingLayout, desc.shader.exportName);
@@ -117,7 +130,8 @@ VulkanComputePipeline::VulkanComputePipeline(VulkanDevice& device, const rhi::Co
   info.stage.module = module;
   info.stage.pName = desc.shader.entryPoint.c_str();
   info.layout = layout_->handle();
-  VkResult r = vkCreateComputePipelines(device_.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
+  VkResult r =
+      vkCreateComputePipelines(device_.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
   vkDestroyShaderModule(device_.handle(), module, nullptr);
   check(r, "vkCreateComputePipelines");
   device_.setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), desc.debugName);
@@ -131,10 +145,6 @@ VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
                                                    const rhi::RayTracingPipelineDesc& desc)
     : device_(device), desc_(desc) {
   const auto& adapter = device_.adapter();
-  if (desc.maxRecursionDepth > adapter.maxRecursionDepth)
-    throw Error(fmt::format("vulkan: pipeline '{}' asks for recursion depth {} but {} allows {}",
-                            desc.debugName, desc.maxRecursionDepth, adapter.name,
-                            adapter.maxRecursionDepth));
 
   rhi::PipelineBindingLayout reflected;
   std::map<std::string, uint32_t> stageIndex;
@@ -142,12 +152,7 @@ VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
   std::vector<VkShaderModule> modules;
   VkShaderStageFlags usedStages = 0;
   for (const auto& shader : desc.shaders) {
-    if (shader.stage == rhi::ShaderStage::Compute)
-      throw Error(fmt::format("vulkan: pipeline '{}': '{}' is a compute shader", desc.debugName,
-                              shader.exportName));
-    if (!stageIndex.emplace(shader.exportName, uint32_t(stages.size())).second)
-      throw Error(fmt::format("vulkan: pipeline '{}': export name '{}' used twice",
-                              desc.debugName, shader.exportName));
+    stageIndex.emplace(shader.exportName, uint32_t(stages.size()));
     rhi::mergeBindingLayout(reflected, shader.bindingLayout, shader.exportName);
     modules.push_back(createModule(device_, shader));
     VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -158,12 +163,10 @@ VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
     usedStages |= s.stage;
   }
 
-  auto destroyModules = [&] {
-    for (auto m : modules) vkDestroyShaderModule(device_.handle(), m, nullptr);
-  };
   std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
   auto newGroup = [](VkRayTracingShaderGroupTypeKHR type) {
-    VkRayTracingShaderGroupCreateInfoKHR g{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+    VkRayTracingShaderGroupCreateInfoKHR g{
+        VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
     g.type = type;
     g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader =
         VK_SHADER_UNUSED_KHR;
@@ -177,32 +180,17 @@ VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
       groups.push_back(g);
     }
   }
-  auto lookup = [&](const std::string& name, const std::string& group) {
-    if (name.empty()) return VK_SHADER_UNUSED_KHR;
-    auto it = stageIndex.find(name);
-    if (it == stageIndex.end()) {
-      destroyModules();
-      throw Error(fmt::format("vulkan: pipeline '{}': hit group '{}' names unknown shader '{}'",
-                              desc.debugName, group, name));
-    }
-    return it->second;
+  // The validation layer checked that every name is a shader of the right stage.
+  auto lookup = [&](const std::string& name) {
+    return name.empty() ? VK_SHADER_UNUSED_KHR : stageIndex.at(name);
   };
   for (const auto& hg : desc.hitGroups) {
     auto g = newGroup(hg.isProcedural ? VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR
                                       : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR);
-    g.closestHitShader = lookup(hg.closestHit, hg.exportName);
-    g.anyHitShader = lookup(hg.anyHit, hg.exportName);
-    g.intersectionShader = lookup(hg.intersection, hg.exportName);
-    if (hg.isProcedural && g.intersectionShader == VK_SHADER_UNUSED_KHR) {
-      destroyModules();
-      throw Error(fmt::format("vulkan: pipeline '{}': procedural hit group '{}' has no "
-                              "intersection shader", desc.debugName, hg.exportName));
-    }
-    if (!groupIndex_.emplace(hg.exportName, uint32_t(groups.size())).second) {
-      destroyModules();
-      throw Error(fmt::format("vulkan: pipeline '{}': export name '{}' used twice",
-                              desc.debugName, hg.exportName));
-    }
+    g.closestHitShader = lookup(hg.closestHit);
+    g.anyHitShader = lookup(hg.anyHit);
+    g.intersectionShader = lookup(hg.intersection);
+    groupIndex_.emplace(hg.exportName, uint32_t(groups.size()));
     groups.push_back(g);
   }
 
@@ -216,15 +204,16 @@ VulkanRayTracingPipeline::VulkanRayTracingPipeline(VulkanDevice& device,
   info.layout = layout_->handle();
   VkResult r = vkCreateRayTracingPipelinesKHR(device_.handle(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1,
                                               &info, nullptr, &pipeline_);
-  destroyModules();
+  for (auto m : modules) vkDestroyShaderModule(device_.handle(), m, nullptr);
   check(r, "vkCreateRayTracingPipelinesKHR");
   device_.setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), desc.debugName);
 
   const uint32_t handleSize = adapter.shaderTable.handleSize;
   groupHandles_.resize(size_t(handleSize) * groups.size());
-  check(vkGetRayTracingShaderGroupHandlesKHR(device_.handle(), pipeline_, 0, uint32_t(groups.size()),
-                                             groupHandles_.size(), groupHandles_.data()),
-        "vkGetRayTracingShaderGroupHandlesKHR");
+  check(
+      vkGetRayTracingShaderGroupHandlesKHR(device_.handle(), pipeline_, 0, uint32_t(groups.size()),
+                                           groupHandles_.size(), groupHandles_.data()),
+      "vkGetRayTracingShaderGroupHandlesKHR");
 }
 
 VulkanRayTracingPipeline::~VulkanRayTracingPipeline() {
@@ -246,7 +235,6 @@ rhi::ShaderTableHandle VulkanRayTracingPipeline::createShaderTable(const std::st
 VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDesc& desc,
                                    const VulkanPipelineLayout& layout)
     : device_(device), desc_(desc) {
-  rhi::validateBindingSet(desc, layout.bindingLayout());
   if (desc.space < layout.bindingLayout().spaces.size())
     layoutItems_ = layout.bindingLayout().spaces[desc.space].items;
 
@@ -254,7 +242,8 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
   // full capacity of unbounded ones) included, whatever the set writes.
   std::vector<VkDescriptorPoolSize> sizes;
   if (desc.space < layout.bindingLayout().spaces.size())
-    for (const auto& b : layout.setBindings(desc.space)) sizes.push_back({b.descriptorType, b.descriptorCount});
+    for (const auto& b : layout.setBindings(desc.space))
+      sizes.push_back({b.descriptorType, b.descriptorCount});
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = uint32_t(sizes.size());
@@ -264,7 +253,8 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
     poolInfo.poolSizeCount = 1;
     poolInfo.pPoolSizes = &dummy;
   }
-  check(vkCreateDescriptorPool(device_.handle(), &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+  check(vkCreateDescriptorPool(device_.handle(), &poolInfo, nullptr, &pool_),
+        "vkCreateDescriptorPool");
   VkDescriptorSetLayout setLayout = layout.setLayout(desc.space);
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   alloc.descriptorPool = pool_;
@@ -322,16 +312,16 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
         w.descriptorCount = uint32_t(item.textures.size());
         w.pImageInfo = imageInfos.data() + imageInfos.size();
         for (const auto& texture : item.textures)
-          imageInfos.push_back(
-              {VK_NULL_HANDLE, static_cast<VulkanTexture*>(texture.get())->view(), VK_IMAGE_LAYOUT_GENERAL});
+          imageInfos.push_back({VK_NULL_HANDLE, static_cast<VulkanTexture*>(texture.get())->view(),
+                                VK_IMAGE_LAYOUT_GENERAL});
         break;
       }
       case rhi::ResourceType::Sampler: {
         w.descriptorCount = uint32_t(item.samplerHandles.size());
         w.pImageInfo = imageInfos.data() + imageInfos.size();
         for (const auto& sampler : item.samplerHandles)
-          imageInfos.push_back({static_cast<VulkanSampler*>(sampler.get())->handle(), VK_NULL_HANDLE,
-                                VK_IMAGE_LAYOUT_UNDEFINED});
+          imageInfos.push_back({static_cast<VulkanSampler*>(sampler.get())->handle(),
+                                VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED});
         break;
       }
     }
@@ -340,7 +330,9 @@ VulkanBindingSet::VulkanBindingSet(VulkanDevice& device, const rhi::BindingSetDe
   vkUpdateDescriptorSets(device_.handle(), uint32_t(writes.size()), writes.data(), 0, nullptr);
 }
 
-VulkanBindingSet::~VulkanBindingSet() { vkDestroyDescriptorPool(device_.handle(), pool_, nullptr); }
+VulkanBindingSet::~VulkanBindingSet() {
+  vkDestroyDescriptorPool(device_.handle(), pool_, nullptr);
+}
 
 bool VulkanBindingSet::isWritable(uint32_t slot) const {
   for (const auto& item : layoutItems_)
@@ -353,61 +345,10 @@ VulkanShaderTable::VulkanShaderTable(VulkanDevice& device,
                                      std::string debugName)
     : device_(device), pipeline_(std::move(pipeline)), debugName_(std::move(debugName)) {}
 
-VulkanShaderTable::Record VulkanShaderTable::makeRecord(const std::string& exportName,
-                                                        const void* data, size_t bytes) const {
-  pipeline_->groupHandle(exportName);  // throws on an unknown name, now rather than at dispatch
-  Record r{exportName, {}};
-  if (bytes > 0) {
-    const auto* p = static_cast<const uint8_t*>(data);
-    r.localData.assign(p, p + bytes);
-  }
-  return r;
-}
-
-void VulkanShaderTable::setRayGenerationShader(const std::string& exportName, const void* localData,
-                                               size_t localBytes) {
-  rayGen_ = makeRecord(exportName, localData, localBytes);
-  dirty_ = true;
-}
-
-uint32_t VulkanShaderTable::addMissShader(const std::string& exportName, const void* localData,
-                                          size_t localBytes) {
-  miss_.push_back(makeRecord(exportName, localData, localBytes));
-  dirty_ = true;
-  return uint32_t(miss_.size() - 1);
-}
-
-uint32_t VulkanShaderTable::addHitGroup(const std::string& exportName, const void* localData,
-                                        size_t localBytes) {
-  hit_.push_back(makeRecord(exportName, localData, localBytes));
-  dirty_ = true;
-  return uint32_t(hit_.size() - 1);
-}
-
-void VulkanShaderTable::clearMissShaders() {
-  miss_.clear();
-  dirty_ = true;
-}
-
-void VulkanShaderTable::clearHitGroups() {
-  hit_.clear();
-  dirty_ = true;
-}
-
 VulkanShaderTable::Regions VulkanShaderTable::prepare() {
-  if (!dirty_) return regions_;
-  if (rayGen_.exportName.empty())
-    throw Error(fmt::format("vulkan: shader table '{}' has no ray generation shader", debugName_));
-  auto maxLocal = [](const std::vector<Record>& records) {
-    uint32_t m = 0;
-    for (const auto& r : records) m = std::max(m, uint32_t(r.localData.size()));
-    return m;
-  };
+  if (!changed()) return regions_;
   const auto& align = device_.adapter().shaderTable;
-  const rhi::ShaderTableLayout layout = rhi::computeShaderTableLayout(
-      align, uint32_t(rayGen_.localData.size()), uint32_t(miss_.size()), maxLocal(miss_),
-      uint32_t(hit_.size()), maxLocal(hit_));
-
+  const rhi::ShaderTableLayout layout = recordLayout(align);
   rhi::BufferDesc desc;
   desc.byteSize = layout.totalBytes;
   desc.usage = rhi::BufferUsage::ShaderTable;
@@ -416,16 +357,8 @@ VulkanShaderTable::Regions VulkanShaderTable::prepare() {
   // A fresh buffer each time the records change: a list still in flight keeps
   // the old one alive (VulkanCommandList holds it).
   buffer_ = std::make_shared<VulkanBuffer>(device_, desc, align.tableAlignment);
-  auto* base = static_cast<uint8_t*>(buffer_->mappedData());
-  std::memset(base, 0, layout.totalBytes);
-  auto write = [&](const rhi::ShaderTableRegion& region, uint32_t i, const Record& r) {
-    uint8_t* dst = base + region.offset + region.stride * i;
-    std::memcpy(dst, pipeline_->groupHandle(r.exportName), align.handleSize);
-    if (!r.localData.empty()) std::memcpy(dst + align.handleSize, r.localData.data(), r.localData.size());
-  };
-  write(layout.rayGeneration, 0, rayGen_);
-  for (uint32_t i = 0; i < miss_.size(); ++i) write(layout.miss, i, miss_[i]);
-  for (uint32_t i = 0; i < hit_.size(); ++i) write(layout.hitGroup, i, hit_[i]);
+  writeRecords(static_cast<uint8_t*>(buffer_->mappedData()), layout, align.handleSize,
+               [&](const std::string& name) { return pipeline_->groupHandle(name); });
 
   const uint64_t address = buffer_->deviceAddress();
   auto region = [&](const rhi::ShaderTableRegion& r) {
@@ -439,7 +372,6 @@ VulkanShaderTable::Regions VulkanShaderTable::prepare() {
   regions_.rayGen = region(layout.rayGeneration);
   regions_.miss = region(layout.miss);
   regions_.hit = region(layout.hitGroup);
-  dirty_ = false;
   return regions_;
 }
 

@@ -35,8 +35,6 @@ VkFormat toVkFormat(rhi::Format format) {
 // that address lies inside the VkBuffer.
 VulkanBuffer::VulkanBuffer(VulkanDevice& device, const rhi::BufferDesc& desc, uint64_t alignment)
     : device_(device), desc_(desc) {
-  if (desc.byteSize == 0)
-    throw Error(fmt::format("vulkan: buffer '{}' has zero size", desc.debugName));
   using rhi::BufferUsage;
   VkBufferUsageFlags usage = VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -112,10 +110,6 @@ void* VulkanBuffer::mappedData() {
 VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
     : device_(device), desc_(desc) {
   using rhi::TextureUsage;
-  // Neither API can write sRGB textures from shaders (no storage sRGB formats).
-  if (desc.format == rhi::Format::RGBA8_SRGB && hasFlag(desc.usage, TextureUsage::Storage))
-    throw Error(fmt::format("vulkan: texture '{}': RGBA8_SRGB cannot have TextureUsage::Storage",
-                            desc.debugName));
   VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (hasFlag(desc.usage, TextureUsage::Storage)) usage |= VK_IMAGE_USAGE_STORAGE_BIT;
   if (hasFlag(desc.usage, TextureUsage::Sampled)) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
@@ -215,10 +209,6 @@ VulkanSampler::~VulkanSampler() {
 
 VulkanAccelStruct::VulkanAccelStruct(VulkanDevice& device, const rhi::rt::AccelStructDesc& desc)
     : device_(device), desc_(desc) {
-  if (desc.isTopLevel && desc.topLevelMaxInstances == 0)
-    throw Error(fmt::format("vulkan: top-level '{}' has topLevelMaxInstances = 0", desc.debugName));
-  if (!desc.isTopLevel && desc.bottomLevelGeometries.empty())
-    throw Error(fmt::format("vulkan: bottom-level '{}' has no geometry", desc.debugName));
   AccelStructBuildInputs inputs = buildInputs(0, desc.topLevelMaxInstances);
   VkAccelerationStructureBuildSizesInfoKHR sizes{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
@@ -275,9 +265,6 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
       uint32_t primitives = 0;
       if (geo.type == rhi::rt::GeometryType::Triangles) {
         const auto& t = geo.triangles;
-        if (!t.vertexBuffer)
-          throw Error(fmt::format("vulkan: '{}' has a triangle geometry without vertices",
-                                  desc_.debugName));
         g.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
         auto& tri = g.geometry.triangles;
         tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
@@ -298,9 +285,6 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
         }
       } else {
         const auto& a = geo.aabbs;
-        if (!a.buffer)
-          throw Error(
-              fmt::format("vulkan: '{}' has an AABB geometry without a buffer", desc_.debugName));
         g.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
         g.geometry.aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
         g.geometry.aabbs.data.deviceAddress = a.buffer->deviceAddress() + a.offset;

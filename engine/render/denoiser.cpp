@@ -4,6 +4,7 @@
 
 #include "denoiser_shared.h"
 #include "penumbra_shaders.h"
+#include "render/image_size.h"
 #include "util/error.h"
 
 namespace penumbra::render {
@@ -28,13 +29,12 @@ const char* denoiseModeName(DenoiseMode mode) {
 
 Denoiser::Denoiser(rhi::IDevice& device, uint32_t width, uint32_t height)
     : device_(device), width_(width), height_(height) {
-  if (width == 0 || height == 0 || width > 16384 || height > 16384)
-    throw Error(fmt::format("denoiser: image size {}x{} is outside 1..16384", width, height));
+  requireValidImageSize("denoiser", width, height);
   rhi::ComputePipelineDesc desc;
   desc.shader = shaders::shaderDesc("denoise.comp");
   desc.debugName = "denoiser";
   pipeline_ = device_.createComputePipeline(desc);
-  commandList_ = device_.createCommandList();
+  commandList_ = device_.createCommandList("denoiser");
   timer_ = device_.createTimerQuery();
 
   rhi::BufferDesc frame;

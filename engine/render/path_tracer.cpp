@@ -16,8 +16,11 @@
 #include "path_tracer_shared.h"
 #include "payloads_shared.h"
 #include "penumbra_shaders.h"
+#include "render/camera_model.h"
 #include "render/effect_set.h"
+#include "render/emitter_table.h"
 #include "render/environment_map.h"
+#include "render/image_size.h"
 #include "render/implicit_geometry.h"
 #include "render/scene_textures.h"
 #include "util/error.h"
@@ -171,76 +174,6 @@ gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& ren
   return p;
 }
 
-// An instance of an emissive mesh, as the emissive-triangle table needs it:
-// kept in world space so that the table can be placed again about another
-// render origin (PathTracer::rebase).
-struct EmitterSource {
-  glm::dmat4 objectToWorld{1.0};
-  bool mirrored = false;             // the transform reverses the winding
-  std::vector<glm::vec3> positions;  // object space, three per triangle
-  std::vector<glm::vec2> uvs;        // the emission texture's, three per triangle
-  glm::vec3 emission{0.0f};
-  float emissionTextureBits = 0.0f;  // PT_NO_TEXTURE or the texture's index, as float bits
-  double luminance = 0.0;            // of the mean emission: power = area x luminance
-};
-
-// The emissive triangles of every source in render space (toRenderSpace),
-// chosen for NEE in proportion to power (area x luminance); `sampledCount`
-// becomes the number NEE samples (0 when no triangle has power).
-std::vector<gpu::EmissiveTriangle> placeEmitters(const std::vector<EmitterSource>& sources,
-                                                 const glm::dmat4& toRenderSpace,
-                                                 uint32_t& sampledCount) {
-  std::vector<gpu::EmissiveTriangle> emissive;
-  std::vector<double> power;
-  for (const EmitterSource& source : sources) {
-    const glm::dmat4 objectToRender = toRenderSpace * source.objectToWorld;
-    for (size_t t = 0; t < source.positions.size(); t += 3) {
-      glm::vec3 p[3];
-      glm::vec2 uv[3];
-      for (size_t k = 0; k < 3; ++k) {
-        p[k] = glm::vec3(objectToRender * glm::dvec4(glm::dvec3(source.positions[t + k]), 1.0));
-        uv[k] = source.uvs[t + k];
-      }
-      // A mirroring transform reverses the winding of the placed corners;
-      // swapping two keeps the emitting side the mesh's front.
-      if (source.mirrored) {
-        std::swap(p[1], p[2]);
-        std::swap(uv[1], uv[2]);
-      }
-      const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-      emissive.push_back({toFloat4(p[0]),
-                          toFloat4(p[1], area),
-                          toFloat4(p[2], source.emissionTextureBits),
-                          toFloat4(source.emission),
-                          {uv[0].x, uv[0].y, uv[1].x, uv[1].y},
-                          {uv[2].x, uv[2].y, 0.0f, 0.0f}});
-      power.push_back(area > 0.0f ? area * source.luminance : 0.0);
-    }
-  }
-  double totalPower = 0;
-  for (double p : power) totalPower += p;
-  double cumulative = 0;
-  for (size_t i = 0; i < emissive.size(); ++i) {
-    const double pmf = totalPower > 0 ? power[i] / totalPower : 0.0;
-    cumulative += pmf;
-    emissive[i].p0.w = float(pmf);
-    emissive[i].radiance.w = float(cumulative);
-  }
-  // Degenerate (zero-area) emitters get probability 0 and are never chosen;
-  // the last cumulative value is exactly 1 so the search always ends in range.
-  if (!emissive.empty() && totalPower > 0) {
-    for (size_t i = emissive.size(); i-- > 0;) {
-      if (emissive[i].p0.w > 0) {
-        emissive[i].radiance.w = 1.0f;
-        for (size_t j = i + 1; j < emissive.size(); ++j) emissive[j].radiance.w = 1.0f;
-        break;
-      }
-    }
-  }
-  sampledCount = totalPower > 0 ? uint32_t(emissive.size()) : 0;
-  return emissive;
-}
-
 // The whole of `values` into `buffer`; nothing for an empty list.
 template <class T>
 void writeAll(rhi::ICommandList& cmd, const rhi::BufferHandle& buffer,
@@ -321,12 +254,11 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
       options_(options),
       camera_(scene.camera),
       renderOrigin_(renderOriginNear(scene.camera.position)) {
-  if (width == 0 || height == 0 || width > 16384 || height > 16384)
-    throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
+  requireValidImageSize("path tracer", width, height);
   scene::validate(scene);
   sceneEffects_ = deriveEffects(scene);
   pipelineEffects_ = options.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
-  commandList_ = device_.createCommandList();
+  commandList_ = device_.createCommandList("path tracer");
   createAccumulation();
 
   rhi::BufferDesc counter;
@@ -363,8 +295,7 @@ void PathTracer::createAccumulation() {
 }
 
 void PathTracer::resize(uint32_t width, uint32_t height) {
-  if (width == 0 || height == 0 || width > 16384 || height > 16384)
-    throw Error(fmt::format("path tracer: image size {}x{} is outside 1..16384", width, height));
+  requireValidImageSize("path tracer", width, height);
   if (width == width_ && height == height_) return;
   // The binding sets hold the old image; frames still reading it finish first.
   device_.waitForIdle();
@@ -524,28 +455,7 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = emissiveTriangles;
       emissiveTriangles += uint32_t(mesh.indices.size() / 3);
-      EmitterSource source;
-      source.objectToWorld = inst.transform;
-      source.mirrored = glm::determinant(glm::dmat3(inst.transform)) < 0.0;
-      // A textured emitter is chosen by its mean radiance; the shader
-      // multiplies the texture in where it samples.
-      const bool textured = material.emissiveTexture != scene::Material::kNoTexture;
-      const scene::TextureRef* emissionRef =
-          textured ? &scene.textureRefs[material.emissiveTexture] : nullptr;
-      const glm::vec3 meanEmission =
-          textured ? material.emission * meanLinearColor(scene.textures[emissionRef->texture])
-                   : material.emission;
-      source.luminance =
-          0.2126 * meanEmission.x + 0.7152 * meanEmission.y + 0.0722 * meanEmission.z;
-      source.emission = material.emission;
-      const uint32_t emissionTexture = textured ? material.emissiveTexture : PT_NO_TEXTURE;
-      std::memcpy(&source.emissionTextureBits, &emissionTexture, sizeof(float));
-      const auto& uvSet = emissionRef && emissionRef->texCoord == 1 ? mesh.uv1 : mesh.uv0;
-      for (uint32_t vertex : mesh.indices) {
-        source.positions.push_back(mesh.positions[vertex]);
-        source.uvs.push_back(uvSet.empty() ? glm::vec2(0.0f) : uvSet[vertex]);
-      }
-      placement_->emitters.push_back(std::move(source));
+      placement_->emitters.push_back(emitterSource(scene, inst));
     }
     placement_->meshInstanceToWorld.push_back(inst.transform);
     instances.push_back(data);
@@ -556,8 +466,9 @@ void PathTracer::uploadScene(const scene::Scene& scene) {
         0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION, glm::dmat4(1.0)));
   }
   placement_->instances = instances;
-  const std::vector<gpu::EmissiveTriangle> emissive =
-      placeEmitters(placement_->emitters, toRenderSpace, emissiveTriangleCount_);
+  const EmitterTable emitterTable = placeEmitters(placement_->emitters, toRenderSpace);
+  const std::vector<gpu::EmissiveTriangle>& emissive = emitterTable.triangles;
+  emissiveTriangleCount_ = emitterTable.sampledCount;
 
   using rhi::BufferUsage;
   auto& s = *scene_;
@@ -856,8 +767,9 @@ void PathTracer::rebase(const glm::dvec3& origin) {
   std::vector<gpu::InstanceData> instances = w.instances;
   for (size_t i = 0; i < w.meshInstanceToWorld.size(); ++i)
     placeInstance(instances[i], toRenderSpace * w.meshInstanceToWorld[i]);
-  const std::vector<gpu::EmissiveTriangle> emissive =
-      placeEmitters(w.emitters, toRenderSpace, emissiveTriangleCount_);
+  const EmitterTable emitterTable = placeEmitters(w.emitters, toRenderSpace);
+  const std::vector<gpu::EmissiveTriangle>& emissive = emitterTable.triangles;
+  emissiveTriangleCount_ = emitterTable.sampledCount;
   std::vector<gpu::PointLight> pointLights;
   for (const auto& l : w.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
   const ImplicitLayout implicits = implicitLayoutInRenderSpace();
@@ -926,13 +838,11 @@ bool PathTracer::rebuildPipelinesFor(uint32_t effects) {
 
 CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t height,
                         const glm::dvec3& renderOrigin) {
-  const glm::vec3 forward = glm::normalize(camera.forward);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  return {toFloat4(glm::vec3(camera.position - renderOrigin),
-                   std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f)),
-          toFloat4(right, float(width) / float(height)), toFloat4(up, camera.apertureRadius),
-          toFloat4(forward, camera.focusDistance)};
+  const CameraModel m = cameraModel(camera, width, height);
+  return {toFloat4(glm::vec3(m.position - renderOrigin), float(m.tanHalfFov)),
+          toFloat4(glm::vec3(m.right), float(m.aspect)),
+          toFloat4(glm::vec3(m.up), camera.apertureRadius),
+          toFloat4(glm::vec3(m.forward), camera.focusDistance)};
 }
 
 uint32_t frameFlags(const PathTracerSettings& s) {

@@ -205,6 +205,7 @@ class PathTracer {
   // Any of this tracer's images (accumulation or a guide buffer), RGBA float.
   image::Image readback(const rhi::TextureHandle& texture);
   const rhi::TextureHandle& accumulation() const { return accumulation_; }
+  rhi::IDevice& device() const { return device_; }
   const GuideBuffers& guides() const { return guides_; }
   // Whether the guide buffers hold the running means of every sample of the
   // current mean (each of its frames had PathTracerSettings::writeGuides).

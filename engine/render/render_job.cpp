@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "render/image_size.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -201,6 +202,24 @@ std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
 }
 std::optional<Sampler> parseSampler(std::string_view name) {
   return parseName(kSamplers, name);
+}
+template <class Enum, size_t N>
+std::map<std::string, Enum> byName(const Named<Enum> (&table)[N]) {
+  std::map<std::string, Enum> names;
+  for (const auto& entry : table) names.emplace(entry.name, entry.value);
+  return names;
+}
+std::map<std::string, Integrator> integratorsByName() {
+  return byName(kIntegrators);
+}
+std::map<std::string, SamplingStrategy> strategiesByName() {
+  return byName(kStrategies);
+}
+std::map<std::string, MisHeuristic> misHeuristicsByName() {
+  return byName(kHeuristics);
+}
+std::map<std::string, Sampler> samplersByName() {
+  return byName(kSamplers);
 }
 
 const char* materialModelName(scene::MaterialModel model) {
@@ -433,8 +452,8 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
     for (size_t i = 0; i < materials.size(); ++i)
       job.materials.push_back(overrideFromJson(materials[i], fmt::format("materials[{}]", i), r));
   }
-  if (job.width < 1 || job.width > 16384 || job.height < 1 || job.height > 16384)
-    r.fail("width/height", "must be 1..16384");
+  if (!isValidImageSize(job.width, job.height))
+    r.fail("width/height", fmt::format("must be 1..{}", kMaxImageSide));
   if (job.spp < 1) r.fail("spp", "must be at least 1");
   if (job.sppPerFrame < 1 || job.sppPerFrame > PathTracer::kMaxSamplesPerFrame)
     r.fail("sppPerFrame", "must be 1..16");

@@ -30,6 +30,7 @@
 // another scene fails instead of recolouring the wrong objects. Emission is
 // not editable (emitters are tabulated when the scene loads), and textures and
 // alpha stay the scene's.
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -84,6 +85,9 @@ struct RenderJob {
   EnvironmentChoice environment;
 };
 
+// Each choice's names, in one table per enum (render_job.cpp), read by
+// settings files, the command line (the *ByName maps feed CLI11's
+// CheckedTransformer), studies and the viewer.
 const char* integratorName(Integrator integrator);
 const char* strategyName(SamplingStrategy strategy);
 const char* misHeuristicName(MisHeuristic heuristic);
@@ -92,6 +96,10 @@ std::optional<Integrator> parseIntegrator(std::string_view name);
 std::optional<SamplingStrategy> parseStrategy(std::string_view name);
 std::optional<MisHeuristic> parseMisHeuristic(std::string_view name);
 std::optional<Sampler> parseSampler(std::string_view name);
+std::map<std::string, Integrator> integratorsByName();
+std::map<std::string, SamplingStrategy> strategiesByName();
+std::map<std::string, MisHeuristic> misHeuristicsByName();
+std::map<std::string, Sampler> samplersByName();
 
 const char* materialModelName(scene::MaterialModel model);
 std::optional<scene::MaterialModel> parseMaterialModel(std::string_view name);

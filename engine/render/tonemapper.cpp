@@ -13,7 +13,7 @@ Tonemapper::Tonemapper(rhi::IDevice& device) : device_(device) {
   desc.shader = shaders::shaderDesc("tonemap.comp");
   desc.debugName = "tonemap";
   pipeline_ = device_.createComputePipeline(desc);
-  commandList_ = device_.createCommandList();
+  commandList_ = device_.createCommandList("tone map");
 }
 
 image::Image8 Tonemapper::run(const rhi::TextureHandle& hdr, float exposure,

@@ -72,7 +72,10 @@ class IDevice {
   // Vulkan: vkAllocateDescriptorSets + vkUpdateDescriptorSets.
   virtual BindingSetHandle createBindingSet(const BindingSetDesc& desc, const IPipeline& pipeline) = 0;
   virtual TimerQueryHandle createTimerQuery() = 0;
-  virtual CommandListHandle createCommandList() = 0;
+  // The name appears in the validation layer's errors and the API's debug tools.
+  // D3D12: CreateCommandAllocator + CreateCommandList + SetName.
+  // Vulkan: vkCreateCommandPool + vkAllocateCommandBuffers + vkSetDebugUtilsObjectNameEXT.
+  virtual CommandListHandle createCommandList(const std::string& debugName = "command list") = 0;
   // Only on a device created with DeviceCreateInfo::presentWindow.
   // D3D12: IDXGIFactory4::CreateSwapChainForHwnd (flip model) on the device's queue.
   // Vulkan: vkCreate{Xlib,Wayland,Win32}SurfaceKHR + vkCreateSwapchainKHR.

@@ -28,6 +28,37 @@ const char* resourceTypeName(ResourceType type) {
   return "?";
 }
 
+const char* resourceStateName(ResourceState state) {
+  switch (state) {
+    case ResourceState::Undefined: return "Undefined";
+    case ResourceState::ShaderResource: return "ShaderResource";
+    case ResourceState::UnorderedAccess: return "UnorderedAccess";
+    case ResourceState::ConstantBuffer: return "ConstantBuffer";
+    case ResourceState::CopySource: return "CopySource";
+    case ResourceState::CopyDest: return "CopyDest";
+    case ResourceState::AccelStructBuildInput: return "AccelStructBuildInput";
+    case ResourceState::AccelStructWrite: return "AccelStructWrite";
+    case ResourceState::AccelStructRead: return "AccelStructRead";
+    case ResourceState::ShaderTable: return "ShaderTable";
+    case ResourceState::HostRead: return "HostRead";
+    case ResourceState::RenderTarget: return "RenderTarget";
+    case ResourceState::Present: return "Present";
+  }
+  return "?";
+}
+
+const char* shaderStageName(ShaderStage stage) {
+  switch (stage) {
+    case ShaderStage::Compute: return "compute";
+    case ShaderStage::RayGeneration: return "ray generation";
+    case ShaderStage::Miss: return "miss";
+    case ShaderStage::ClosestHit: return "closest hit";
+    case ShaderStage::AnyHit: return "any hit";
+    case ShaderStage::Intersection: return "intersection";
+  }
+  return "?";
+}
+
 const char* windowSystemName(WindowSystem system) {
   switch (system) {
     case WindowSystem::None: return "none";

@@ -73,6 +73,7 @@ enum class ResourceState : uint8_t {
                          // Vulkan COLOR_ATTACHMENT_OPTIMAL
   Present,               // a back buffer handed to the swapchain; D3D12 PRESENT, Vulkan PRESENT_SRC_KHR
 };
+const char* resourceStateName(ResourceState state);
 
 enum class ShaderStage : uint8_t {
   Compute,
@@ -82,5 +83,6 @@ enum class ShaderStage : uint8_t {
   AnyHit,
   Intersection,
 };
+const char* shaderStageName(ShaderStage stage);
 
 }  // namespace penumbra::rhi

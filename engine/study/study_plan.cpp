@@ -26,8 +26,8 @@ render::PathTracerSettings Technique::settings(uint32_t seed) const {
 
 std::string Technique::label() const {
   const Technique defaults;
-  std::string name =
-      integrator == render::Integrator::Whitted ? "whitted" : render::strategyName(strategy);
+  std::string name = integrator == render::Integrator::Whitted ? render::integratorName(integrator)
+                                                               : render::strategyName(strategy);
   if (integrator == render::Integrator::Path && heuristic != defaults.heuristic)
     name += fmt::format(" {}", render::misHeuristicName(heuristic));
   if (sampler != defaults.sampler) name += fmt::format(" {}", render::samplerName(sampler));

@@ -1,12 +1,12 @@
 #pragma once
 // Helpers of the renderer tests: render a scene on the test device, the
-// camera rays the renderer traces for a pixel, and the pinhole camera of
-// shaders/shared/camera.hlsli in double precision.
+// camera rays the renderer traces for a pixel (the engine's camera model).
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
 
 #include "image/image.h"
+#include "render/camera_model.h"
 #include "render/path_tracer.h"
 #include "test_device.h"
 
@@ -20,18 +20,11 @@ inline image::Image renderScene(rhi::IDevice& device, const scene::Scene& scene,
 }
 
 // The direction of the camera ray through film position `film` (pixels, (0,0)
-// the top-left corner), exactly as shaders/shared/camera.hlsli computes it
-// from the frame constants PathTracer::renderFrame derives from the camera.
+// the top-left corner): the engine's one camera model (render/camera_model.h),
+// which fills the frame constants shaders/shared/camera.hlsli reads.
 inline glm::vec3 cameraRayDirection(const scene::Camera& c, uint32_t width, uint32_t height,
                                     glm::vec2 film) {
-  const glm::vec3 forward = glm::normalize(c.forward);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tanHalfFov = std::tan(glm::radians(c.verticalFovDegrees) * 0.5f);
-  const float aspect = float(width) / float(height);
-  const float sx = (2.0f * film.x / float(width) - 1.0f) * tanHalfFov * aspect;
-  const float sy = (1.0f - 2.0f * film.y / float(height)) * tanHalfFov;
-  return glm::normalize(forward + sx * right + sy * up);
+  return glm::vec3(render::cameraRayDirection(render::cameraModel(c, width, height), film));
 }
 
 // The rays a pixel's jittered samples can take lie between its corners; a
@@ -44,36 +37,15 @@ inline std::vector<glm::vec2> pixelFootprint(uint32_t x, uint32_t y) {
   return points;
 }
 
-struct CameraFrame {
-  glm::dvec3 position, right, up, forward;
-  double tanHalfFov;
-};
-
-inline CameraFrame cameraFrame(const scene::Camera& c) {
-  const glm::dvec3 f = glm::normalize(glm::dvec3(c.forward));
-  const glm::dvec3 r = glm::normalize(glm::cross(f, glm::dvec3(c.up)));
-  return {glm::dvec3(c.position), r, glm::cross(r, f), f,
-          std::tan(glm::radians(double(c.verticalFovDegrees)) * 0.5)};
-}
-
 // Film position (pixels, (0,0) the top-left corner) whose ray sees world point p.
 inline glm::dvec2 projectToFilm(const scene::Camera& camera, glm::dvec3 p, uint32_t w, uint32_t h) {
-  const CameraFrame c = cameraFrame(camera);
-  const glm::dvec3 d = p - c.position;
-  const double aspect = double(w) / double(h);
-  const double sx = glm::dot(d, c.right) / glm::dot(d, c.forward) / (c.tanHalfFov * aspect);
-  const double sy = glm::dot(d, c.up) / glm::dot(d, c.forward) / c.tanHalfFov;
-  return {(sx + 1.0) * 0.5 * w, (1.0 - sy) * 0.5 * h};
+  return render::projectToFilm(render::cameraModel(camera, w, h), p);
 }
 
-// Unit direction of the camera ray through a film position.
+// Unit direction of the camera ray through a film position, in double.
 inline glm::dvec3 cameraRayDirection(const scene::Camera& camera, glm::dvec2 film, uint32_t w,
                                      uint32_t h) {
-  const CameraFrame c = cameraFrame(camera);
-  const double aspect = double(w) / double(h);
-  const double sx = (2.0 * film.x / w - 1.0) * c.tanHalfFov * aspect;
-  const double sy = (1.0 - 2.0 * film.y / h) * c.tanHalfFov;
-  return glm::normalize(c.forward + sx * c.right + sy * c.up);
+  return render::cameraRayDirection(render::cameraModel(camera, w, h), film);
 }
 
 }  // namespace penumbra::test
