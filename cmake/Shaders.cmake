@@ -1,7 +1,7 @@
 # penumbra_add_shaders(TARGET name NAMESPACE ns INCLUDE_DIRS dirs...
 #                      [STAGES files... HLSL_INCLUDE_DIRS dirs...]
 #                      [SOURCES files...]
-#                      [EFFECT_VARIANTS stage bits [stage bits ...]])
+#                      [EFFECT_VARIANTS stage bits masks [stage bits masks ...]])
 #
 # Builds every entry point and embeds the results in a static library.
 #
@@ -32,8 +32,9 @@
 # where `name` is the source file name, e.g. "path_trace.rgen".
 #
 # EFFECT_VARIANTS (shaders/shared/effects.h): each listed stage is also built
-# once per proper subset M of `bits` with -DPT_EFFECTS=M, named
-# "<stem>.e<M>.<ext>" (path_trace.e5.rgen); the plain name holds every effect.
+# once per mask M of `masks` (comma separated, each a proper subset of
+# `bits`) with -DPT_EFFECTS=M, named "<stem>.e<M>.<ext>" (path_trace.e5.rgen);
+# the plain name holds every effect.
 
 # --- DXC: Windows SDK, Vulkan SDK, PATH, or -DDXC_EXECUTABLE=... -------------
 set(DXC_EXECUTABLE "" CACHE FILEPATH "DirectX Shader Compiler used to build the D3D12 backend's DXIL")
@@ -138,16 +139,18 @@ function(penumbra_add_shaders)
   endforeach()
   set(variant_args ${ARG_EFFECT_VARIANTS})
   while(variant_args)
-    list(POP_FRONT variant_args src bits)
+    list(POP_FRONT variant_args src bits masks)
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME)
     string(REGEX REPLACE "^([^.]+)\\.(.*)$" "\\1" stem ${name})
     string(REGEX REPLACE "^([^.]+)\\.(.*)$" "\\2" ext ${name})
-    foreach(mask RANGE ${bits})
+    string(REPLACE "," ";" masks "${masks}")
+    foreach(mask ${masks})
       math(EXPR inside "${mask} & ${bits}")
-      if(inside EQUAL mask AND NOT mask EQUAL bits)
-        list(APPEND jobs "${abs}|${stem}.e${mask}.${ext}|${mask}|stage")
+      if(NOT inside EQUAL mask OR mask EQUAL bits)
+        message(FATAL_ERROR "penumbra_add_shaders: variant ${mask} of ${name} is not a proper subset of its bits ${bits}")
       endif()
+      list(APPEND jobs "${abs}|${stem}.e${mask}.${ext}|${mask}|stage")
     endforeach()
   endwhile()
 

@@ -2,11 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
 #include <iterator>
 
 #include "effects.h"
+#include "penumbra_shaders.h"
 #include "util/error.h"
+#include "util/log.h"
 
 namespace penumbra::render {
 namespace {
@@ -115,10 +118,27 @@ std::vector<std::string> featureNames(uint32_t features) {
 std::string effectVariant(std::string_view shader, uint32_t effects) {
   for (const auto& entry : kVariantBits) {
     if (entry.shader != shader) continue;
-    const uint32_t mask = effects & entry.bits;
-    if (mask == entry.bits) return std::string(shader);
+    const uint32_t wanted = effects & entry.bits;
     const auto dot = shader.find('.');
-    return fmt::format("{}.e{}{}", shader.substr(0, dot), mask, shader.substr(dot));
+    auto name = [&](uint32_t mask) {
+      if (mask == entry.bits) return std::string(shader);
+      return fmt::format("{}.e{}{}", shader.substr(0, dot), mask, shader.substr(dot));
+    };
+    // Only some subsets are built (shaders/effect_variants.cmake). Otherwise
+    // the smallest built superset: every effect the scene needs, and the
+    // fewest it does not. The full variant always exists.
+    const uint32_t optional = entry.bits & ~wanted;
+    uint32_t best = entry.bits;
+    // Every subset of the optional bits, in increasing order: (x - m) & m.
+    for (uint32_t extra = 0;; extra = (extra - optional) & optional) {
+      const uint32_t mask = wanted | extra;
+      if (std::popcount(mask) < std::popcount(best) && !shaders::find(name(mask)).empty())
+        best = mask;
+      if (extra == optional) break;
+    }
+    if (best != wanted)
+      log::info("no {} variant is built for effects {:#x}; using {:#x}", shader, wanted, best);
+    return name(best);
   }
   throw Error(fmt::format("no effect variants are built for shader '{}'", shader));
 }

@@ -122,8 +122,7 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // Whitted has variants for specular and transmission only.
   REQUIRE(render::effectVariant("whitted.rgen", PT_EFFECT_AREA_LIGHTS) == "whitted.e0.rgen");
   REQUIRE(render::effectVariant("whitted.rgen", PT_EFFECTS_ALL) == "whitted.rgen");
-  // Every subset is embedded, and each effect (or the guides) removed makes
-  // the shader smaller.
+  // Each effect (or the guides) removed makes the shader smaller.
   const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
   for (uint32_t bit = 1; bit <= PT_EFFECT_ENVIRONMENT; bit <<= 1) {
@@ -132,8 +131,18 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
     REQUIRE(without.spirv.size() < full);
   }
-  for (uint32_t mask = 0; mask <= all; ++mask)
-    REQUIRE_NOTHROW(shaders::shaderDesc(render::effectVariant("path_trace.rgen", mask)));
+  // Every set resolves to a built variant holding all its effects.
+  for (uint32_t mask = 0; mask <= all; ++mask) {
+    const std::string name = render::effectVariant("path_trace.rgen", mask);
+    REQUIRE_NOTHROW(shaders::shaderDesc(name));
+    const uint32_t bits = PT_PATH_TRACE_EFFECT_BITS;  // alpha masking (128) is no variant bit
+    const uint32_t built = name == "path_trace.rgen" ? bits : uint32_t(std::stoul(name.substr(12)));
+    INFO("effects " << mask << " -> " << name);
+    REQUIRE((built & mask & bits) == (mask & bits));
+  }
+  // A set that is not built takes the smallest built superset: sheen alone
+  // (32) is in no built variant smaller than 63 (every effect up to sheen).
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_SHEEN) == "path_trace.e63.rgen");
   // The triangles' closest hit only stores a HitRecord: it has no variants.
   REQUIRE_THROWS(render::effectVariant("triangle.rchit", PT_EFFECT_AREA_LIGHTS));
 }
@@ -243,4 +252,25 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
     REQUIRE(image::meanRgb(b).g > 0.0);
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("effect set: every built-in scene has its own variant, with guides and an environment",
+          "[render]") {
+  for (const std::string& name : scene::builtInSceneNames()) {
+    const uint32_t effects = render::deriveEffects(scene::loadScene(name));
+    for (uint32_t extra : {0u, uint32_t(PT_OUTPUT_GUIDES), uint32_t(PT_EFFECT_ENVIRONMENT),
+                           uint32_t(PT_OUTPUT_GUIDES | PT_EFFECT_ENVIRONMENT)}) {
+      const uint32_t pathTrace = (effects | extra) & PT_PATH_TRACE_EFFECT_BITS;
+      const uint32_t whitted = (effects | extra) & PT_WHITTED_EFFECT_BITS;
+      INFO(name << ": effects " << (effects | extra));
+      // Not a superset: the exact set (shaders/effect_variants.cmake).
+      CHECK(render::effectVariant("path_trace.rgen", pathTrace) ==
+            (pathTrace == PT_PATH_TRACE_EFFECT_BITS
+                 ? std::string("path_trace.rgen")
+                 : "path_trace.e" + std::to_string(pathTrace) + ".rgen"));
+      CHECK(render::effectVariant("whitted.rgen", whitted) ==
+            (whitted == PT_WHITTED_EFFECT_BITS ? std::string("whitted.rgen")
+                                               : "whitted.e" + std::to_string(whitted) + ".rgen"));
+    }
+  }
 }
