@@ -2,7 +2,8 @@
 #
 # Embeds text files (the built-in scenes) into a static library so the
 # `penumbra` binary is self-contained. Lookup: penumbra::embedded::find(name)
-# where name is the file name without directory.
+# where name is the file name without directory. The library is also
+# penumbra::<name without "penumbra_">, the name it is exported by.
 function(penumbra_embed_files)
   cmake_parse_arguments(ARG "" "TARGET" "FILES" ${ARGN})
   set(out ${CMAKE_CURRENT_BINARY_DIR}/${ARG_TARGET}_embedded.cpp)
@@ -19,5 +20,9 @@ function(penumbra_embed_files)
     COMMENT "Embedding ${ARG_TARGET}"
     VERBATIM)
   add_library(${ARG_TARGET} STATIC ${out})
-  target_include_directories(${ARG_TARGET} PUBLIC ${PROJECT_SOURCE_DIR}/engine)
+  string(REGEX REPLACE "^penumbra_" "" export_name ${ARG_TARGET})
+  add_library(penumbra::${export_name} ALIAS ${ARG_TARGET})
+  set_target_properties(${ARG_TARGET} PROPERTIES EXPORT_NAME ${export_name})
+  # util/embedded_files.h is the interface the generated source implements.
+  target_link_libraries(${ARG_TARGET} PUBLIC penumbra::util)
 endfunction()

@@ -26,7 +26,8 @@
 # SPIR-V at build time and writes it, the SPIR-V and the DXIL into one
 # generated header per shader.
 #
-# The generated header <TARGET>.h declares, in namespace <ns>:
+# The library is also penumbra::<TARGET without "penumbra_">, the name it is
+# exported by. The generated header <TARGET>.h declares, in namespace <ns>:
 #   std::span<const uint32_t> find(name);   // SPIR-V words, empty if unknown
 #   rhi::ShaderDesc shaderDesc(name);        // everything a backend needs
 # where `name` is the source file name, e.g. "path_trace.rgen".
@@ -326,6 +327,13 @@ rhi::ShaderDesc shaderDesc(std::string_view name) {
 }  // namespace @namespace@
 ]=] @ONLY)
   add_library(${ARG_TARGET} STATIC ${table_cpp} ${headers} ${checks})
-  target_include_directories(${ARG_TARGET} PRIVATE ${out_dir} PUBLIC ${out_dir}/include)
-  target_link_libraries(${ARG_TARGET} PUBLIC penumbra_rhi)
+  string(REGEX REPLACE "^penumbra_" "" export_name ${ARG_TARGET})
+  add_library(penumbra::${export_name} ALIAS ${ARG_TARGET})
+  # Installed (cmake/Install.cmake), the generated header goes beside the
+  # engine's headers; PUBLIC_HEADER is how install(TARGETS) finds it.
+  set_target_properties(${ARG_TARGET} PROPERTIES EXPORT_NAME ${export_name}
+                        PUBLIC_HEADER ${out_dir}/include/${ARG_TARGET}.h)
+  target_include_directories(${ARG_TARGET} PRIVATE ${out_dir}
+    PUBLIC $<BUILD_INTERFACE:${out_dir}/include> $<INSTALL_INTERFACE:${PENUMBRA_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${ARG_TARGET} PUBLIC penumbra::rhi)
 endfunction()
