@@ -6,7 +6,9 @@
 #
 # Needs the native build first: shader reflection runs at build time through
 # build/tools/shader_layout/penumbra_shader_layout, which a cross build cannot
-# build for itself.
+# build for itself. The settings are CMakePresets.json's "mingw" ("mingw-ci"
+# under CI: warnings as errors); the native build's directory is the first
+# argument (default build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 host_tools="$PWD/${1:-build}/tools/shader_layout"
@@ -14,13 +16,10 @@ if [ ! -x "$host_tools/penumbra_shader_layout" ]; then
   echo "build-windows-cross.sh: $host_tools/penumbra_shader_layout is missing; run scripts/build.sh first" >&2
   exit 1
 fi
-werror=OFF
-if [ "${CI:-}" = "true" ]; then werror=ON; fi
-cmake -S . -B build-mingw -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_TOOLCHAIN_FILE=cmake/toolchains/mingw-w64-x86_64.cmake \
-  -DPENUMBRA_HOST_TOOLS_DIR="$host_tools" -DPENUMBRA_BUILD_TESTS=OFF \
-  -DPENUMBRA_WARNINGS_AS_ERRORS=$werror
-cmake --build build-mingw --parallel "$(nproc)"
+preset=mingw
+if [ "${CI:-}" = "true" ]; then preset=mingw-ci; fi
+cmake --preset "$preset" -DPENUMBRA_HOST_TOOLS_DIR="$host_tools"
+cmake --build --preset "$preset" --parallel "$(nproc)"
 
 # The result must be a 64-bit Windows executable that needs nothing but
 # system DLLs (d3d12.dll, dxgi.dll and vulkan-1.dll are opened at run time).

@@ -4,12 +4,14 @@
 # scripts/build-windows-cross.sh, so CI keeps the D3D12 backend compiling.
 # Under CI (CI=true) warnings are errors; backends/d3d12 always treats them so.
 # PENUMBRA_SKIP_WINDOWS=1 skips the cross build (local iteration only).
+# The settings are CMakePresets.json's: "release", or "ci" under CI (the same
+# build/ with warnings as errors).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-werror=OFF
-if [ "${CI:-}" = "true" ]; then werror=ON; fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPENUMBRA_WARNINGS_AS_ERRORS=$werror
-cmake --build build --parallel "$(nproc)"
+preset=release
+if [ "${CI:-}" = "true" ]; then preset=ci; fi
+cmake --preset "$preset"
+cmake --build --preset "$preset" --parallel "$(nproc)"
 if [ "${PENUMBRA_SKIP_WINDOWS:-}" != "1" ]; then
   bash scripts/build-windows-cross.sh build
 fi

@@ -2,7 +2,8 @@
 # (g++-mingw-w64-x86-64-posix: the POSIX thread model std::thread needs).
 #   cmake -S . -B build-mingw -DCMAKE_TOOLCHAIN_FILE=cmake/toolchains/mingw-w64-x86_64.cmake \
 #         -DPENUMBRA_HOST_TOOLS_DIR=$PWD/build/tools/shader_layout
-# scripts/build-windows-cross.sh does exactly this. Header-only dependencies
+# CMakePresets.json's "mingw" preset (what scripts/build-windows-cross.sh
+# configures) does exactly this. Header-only dependencies
 # come from the build machine through cmake/CrossDependencies.cmake.
 set(CMAKE_SYSTEM_NAME Windows)
 set(CMAKE_SYSTEM_PROCESSOR x86_64)
