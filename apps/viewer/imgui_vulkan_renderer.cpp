@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+
 #include "backends/imgui_impl_vulkan.h"
 #include "util/error.h"
 
@@ -11,6 +15,22 @@ namespace {
 
 void checkResult(VkResult result) {
   if (result != VK_SUCCESS) throw Error(fmt::format("imgui vulkan: VkResult {}", int(result)));
+}
+
+// imgui_impl_vulkan loads the WSI functions of its ImGui_ImplVulkanH_*
+// window helpers too, and fails when any is missing; an offscreen device
+// enables no surface or swapchain extension, so the loader has none. The
+// renderer never calls them (the RHI owns the swapchain): they get this.
+[[noreturn]] void unusedWsiFunction() {
+  std::fprintf(stderr, "imgui vulkan: a window-system function was called without a window\n");
+  std::abort();
+}
+
+bool isWsiFunction(const char* name) {
+  const std::string_view n(name);
+  return n.find("Surface") != std::string_view::npos ||
+         n.find("Swapchain") != std::string_view::npos || n == "vkAcquireNextImageKHR" ||
+         n == "vkQueuePresentKHR";
 }
 
 }  // namespace
@@ -27,8 +47,8 @@ struct ImGuiVulkanRenderer::Functions {
   PFN_vkCmdEndRenderPass cmdEndRenderPass;
 };
 
-ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& swapchain)
-    : device_(device), swapchain_(swapchain), handles_(vk::interop::deviceHandles(device)) {
+ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, uint32_t framesInFlight)
+    : device_(device), handles_(vk::interop::deviceHandles(device)) {
   auto load = [&](const char* name) {
     auto function = handles_.getInstanceProcAddr(handles_.instance, name);
     if (!function) throw Error(fmt::format("imgui vulkan: the loader has no {}", name));
@@ -46,11 +66,24 @@ ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& 
   PENUMBRA_LOAD(cmdEndRenderPass, vkCmdEndRenderPass);
 #undef PENUMBRA_LOAD
 
-  // The back buffer arrives in COLOR_ATTACHMENT_OPTIMAL (the RHI's barrier)
-  // holding the path-traced image, which the UI draws over: LOAD, and leave
+  // Before anything is created, so a failure leaks nothing.
+  // imgui_impl_vulkan calls the loader through this (IMGUI_IMPL_VULKAN_NO_PROTOTYPES).
+  if (!ImGui_ImplVulkan_LoadFunctions(
+          [](const char* name, void* user) {
+            auto* h = static_cast<vk::interop::DeviceHandles*>(user);
+            PFN_vkVoidFunction function = h->getInstanceProcAddr(h->instance, name);
+            if (!function && isWsiFunction(name))
+              function = reinterpret_cast<PFN_vkVoidFunction>(&unusedWsiFunction);
+            return function;
+          },
+          &handles_))
+    throw Error("imgui vulkan: ImGui_ImplVulkan_LoadFunctions failed");
+
+  // The target arrives in COLOR_ATTACHMENT_OPTIMAL (the RHI's barrier)
+  // holding the tone-mapped image, which the UI draws over: LOAD, and leave
   // the layout for the RHI's next barrier.
   VkAttachmentDescription color{};
-  color.format = vk::interop::swapchainFormat(swapchain_);
+  color.format = VK_FORMAT_R8G8B8A8_UNORM;  // rhi::Format::RGBA8_UNORM
   color.samples = VK_SAMPLE_COUNT_1_BIT;
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -78,14 +111,6 @@ ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& 
   poolInfo.pPoolSizes = &poolSize;
   checkResult(fn_->createDescriptorPool(handles_.device, &poolInfo, nullptr, &descriptorPool_));
 
-  // imgui_impl_vulkan calls the loader through this (IMGUI_IMPL_VULKAN_NO_PROTOTYPES).
-  if (!ImGui_ImplVulkan_LoadFunctions(
-          [](const char* name, void* user) {
-            auto* h = static_cast<vk::interop::DeviceHandles*>(user);
-            return h->getInstanceProcAddr(h->instance, name);
-          },
-          &handles_))
-    throw Error("imgui vulkan: ImGui_ImplVulkan_LoadFunctions failed");
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = handles_.instance;
   info.PhysicalDevice = handles_.physicalDevice;
@@ -93,10 +118,10 @@ ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& 
   info.QueueFamily = handles_.queueFamily;
   info.Queue = handles_.queue;
   info.DescriptorPool = descriptorPool_;
-  // Its vertex buffers rotate per image: as many as the swapchain has, so
-  // none is rewritten while a frame in flight reads it.
-  info.MinImageCount = std::max(2u, swapchain_.imageCount());
-  info.ImageCount = std::max(2u, swapchain_.imageCount());
+  // Its vertex buffers rotate per drawn frame: one set per frame in flight,
+  // so none is rewritten while a frame still executing reads it.
+  info.MinImageCount = std::max(2u, framesInFlight);
+  info.ImageCount = std::max(2u, framesInFlight);
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = &checkResult;
   if (!ImGui_ImplVulkan_Init(&info, renderPass_))
@@ -114,7 +139,7 @@ ImGuiVulkanRenderer::ImGuiVulkanRenderer(rhi::IDevice& device, rhi::ISwapchain& 
 ImGuiVulkanRenderer::~ImGuiVulkanRenderer() {
   device_.waitForIdle();
   ImGui_ImplVulkan_Shutdown();
-  swapchainResized();
+  forgetTargets();
   fn_->destroyDescriptorPool(handles_.device, descriptorPool_, nullptr);
   fn_->destroyRenderPass(handles_.device, renderPass_, nullptr);
 }
@@ -123,17 +148,20 @@ void ImGuiVulkanRenderer::newFrame() {
   ImGui_ImplVulkan_NewFrame();
 }
 
-void ImGuiVulkanRenderer::swapchainResized() {
+void ImGuiVulkanRenderer::forgetTargets() {
   for (auto& [view, framebuffer] : framebuffers_)
     fn_->destroyFramebuffer(handles_.device, framebuffer, nullptr);
   framebuffers_.clear();
 }
 
-void ImGuiVulkanRenderer::render(rhi::ICommandList& commandList, rhi::ITexture& backBuffer) {
+void ImGuiVulkanRenderer::render(rhi::ICommandList& commandList, rhi::ITexture& target) {
   ImDrawData* draw = ImGui::GetDrawData();
   if (!draw || draw->CmdListsCount == 0) return;
-  const auto& d = backBuffer.desc();
-  VkImageView view = vk::interop::imageView(backBuffer);
+  const auto& d = target.desc();
+  if (d.format != rhi::Format::RGBA8_UNORM ||
+      !rhi::hasFlag(d.usage, rhi::TextureUsage::RenderTarget))
+    throw Error(fmt::format("imgui vulkan: '{}' is not an RGBA8_UNORM render target", d.debugName));
+  VkImageView view = vk::interop::imageView(target);
   VkFramebuffer& framebuffer = framebuffers_[view];
   if (!framebuffer) {
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};

@@ -30,7 +30,13 @@ int main(int argc, char** argv) {
   CLI::App app{"Penumbra viewer: interactive path tracing"};
   app.add_option("--scene", o.scene, "Built-in scene name or scene file (.json)")
       ->capture_default_str();
-  app.add_option("--size", size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--size", size, "Window size WIDTHxHEIGHT (offscreen: the image shown)")
+      ->capture_default_str();
+  app.add_flag("--offscreen", o.offscreen,
+               "No window: the viewer loop renders into an image on any device, a GPU "
+               "server without a display too; needs --script");
+  app.add_option("--record", o.recordDirectory,
+                 "Write every frame as shown, menus included, as DIR/frame-NNNNNN.png");
   app.add_option("--backend", o.backend, "Backend: vulkan")->capture_default_str();
   app.add_option("--device", o.device,
                  "Device index from 'penumbra devices' (default: best with ray tracing)");
@@ -69,6 +75,11 @@ int main(int argc, char** argv) {
   if (!parseSize(size, o.width, o.height)) {
     std::fprintf(stderr, "error: --size '%s': expected WIDTHxHEIGHT, e.g. 1280x720\n",
                  size.c_str());
+    return 2;
+  }
+  if (o.offscreen && o.script.empty()) {
+    std::fprintf(stderr,
+                 "error: --offscreen needs --script (nothing else would end the session)\n");
     return 2;
   }
   if (renderScale > 0) o.renderScale = renderScale;

@@ -30,6 +30,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
                                   {"material", Kind::Material, -1, 2},
                                   {"environment", Kind::Environment, 0, 2},
                                   {"screenshot", Kind::Screenshot, 0, 1},
+                                  {"capture", Kind::Capture, 0, 1},
                                   {"quit", Kind::Quit, 0, 0}};
   std::vector<ScriptCommand> commands;
   std::istringstream lines(text);

@@ -14,7 +14,10 @@
 //   material NAME PARAM V  edit a material as the Material menu does: PARAM is
 //                          baseColor (V = R G B) or a Disney/Phong parameter
 //                          ("material white roughness 0.2"); recorded in screenshots
-//   screenshot PATH        .exr (linear) or .png (as displayed), with PATH's .json beside it
+//   screenshot PATH        the render alone: .exr (linear) or .png (tone-mapped), with
+//                          PATH's .json beside it, so `penumbra render --settings` reproduces it
+//   capture PATH           a .png of what the window shows: the displayed image (guide
+//                          view, denoiser) with the menus when they are on
 //   quit                   close the viewer (exit status 0)
 #include <string>
 #include <vector>
@@ -34,6 +37,7 @@ struct ScriptCommand {
     Material,
     Environment,
     Screenshot,
+    Capture,
     Quit
   };
   Kind kind;

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 
@@ -11,6 +12,7 @@
 #include "backends/imgui_impl_glfw.h"
 #include "image/image_io.h"
 #include "picking.h"
+#include "render/image_size.h"
 #include "render/render_job.h"
 #include "render/render_output.h"
 #include "scene/material_row.h"
@@ -41,13 +43,23 @@ float speedForScene(const scene::Scene& scene) {
 
 Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
-      window_(options.width, options.height, "Penumbra viewer"),
+      offscreenWidth_(options.width),
+      offscreenHeight_(options.height),
       scale_(options.renderScale.value_or(1.0f), !options.renderScale.has_value()),
       bookmarks_(options.config.empty() ? BookmarkStore::defaultPath() : options.config) {
+  if (!options_.offscreen)
+    window_ = std::make_unique<Window>(options.width, options.height, "Penumbra viewer");
+  if (!options_.recordDirectory.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options_.recordDirectory, error);
+    if (error)
+      throw Error(fmt::format("--record {}: cannot create the directory ({})",
+                              options_.recordDirectory, error.message()));
+  }
   rhi::DeviceCreateInfo info;
   info.adapterIndex = options_.device;
   info.validation = options_.validation;
-  info.presentWindow = window_.nativeWindow();
+  if (window_) info.presentWindow = window_->nativeWindow();
   device_ = backends::createDevice(options_.backend, info);
   if (std::string(device_->backendName()) != "vulkan")
     throw Error("the viewer's UI renderer exists for the Vulkan backend only (--backend vulkan)");
@@ -58,18 +70,20 @@ Viewer::Viewer(const ViewerOptions& options)
   settings_.autoRenderScale = scale_.automatic();
 
   rhi::SwapchainDesc swapchain;
-  swapchain.window = window_.nativeWindow();
-  window_.framebufferSize(swapchain.width, swapchain.height);
-  swapchain.vsync = options_.vsync;
-  swapchain.framesInFlight = options_.framesInFlight;
-  swapchain_ = device_->createSwapchain(swapchain);
+  if (window_) {
+    swapchain.window = window_->nativeWindow();
+    window_->framebufferSize(swapchain.width, swapchain.height);
+    swapchain.vsync = options_.vsync;
+    swapchain.framesInFlight = options_.framesInFlight;
+    swapchain_ = device_->createSwapchain(swapchain);
+  }
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForVulkan(window_.handle(), true);
-  ui_ = std::make_unique<ImGuiVulkanRenderer>(*device_, *swapchain_);
+  if (window_) ImGui_ImplGlfw_InitForVulkan(window_->handle(), true);
+  ui_ = std::make_unique<ImGuiVulkanRenderer>(*device_, options_.framesInFlight);
   display_ = std::make_unique<render::DisplayPass>(*device_);
   for (uint32_t i = 0; i < options_.framesInFlight; ++i)
     frameLists_.push_back(
@@ -78,16 +92,17 @@ Viewer::Viewer(const ViewerOptions& options)
   if (!options_.script.empty()) script_ = loadScript(options_.script);
   loadScene(options_.scene);
   const auto& adapter = device_->adapter();
-  fmt::print("device: {} ({}) via {}, {} window\n", adapter.name,
-             rhi::adapterTypeName(adapter.type), device_->backendName(),
-             rhi::windowSystemName(swapchain.window.system));
+  fmt::print("device: {} ({}) via {}, {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
+             device_->backendName(),
+             window_ ? fmt::format("{} window", rhi::windowSystemName(swapchain.window.system))
+                     : fmt::format("offscreen {}x{}", offscreenWidth_, offscreenHeight_));
   std::fflush(stdout);
 }
 
 Viewer::~Viewer() {
   if (device_) device_->waitForIdle();
   ui_.reset();
-  ImGui_ImplGlfw_Shutdown();
+  if (window_) ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
 }
 
@@ -110,9 +125,18 @@ void Viewer::loadScene(const std::string& nameOrPath) {
   createTracer();
 }
 
+void Viewer::targetSize(uint32_t& width, uint32_t& height) const {
+  if (window_) {
+    window_->framebufferSize(width, height);
+  } else {
+    width = offscreenWidth_;
+    height = offscreenHeight_;
+  }
+}
+
 void Viewer::createTracer() {
   uint32_t w = 0, h = 0;
-  window_.framebufferSize(w, h);
+  targetSize(w, h);
   const RenderSize size = renderSize(std::max(w, 1u), std::max(h, 1u), scale_.scale());
   render::PipelineOptions pipeline;
   pipeline.allEffects = settings_.allEffects;
@@ -131,14 +155,15 @@ void Viewer::createTracer() {
 
 void Viewer::resizeRender() {
   uint32_t w = 0, h = 0;
-  window_.framebufferSize(w, h);
+  targetSize(w, h);
   if (w == 0 || h == 0) return;
   const RenderSize size = renderSize(w, h, scale_.scale());
   tracer_->resize(size.width, size.height);
 }
 
 void Viewer::applyEffect(SettingEffect effect) {
-  if (settings_.vsync != swapchain_->desc().vsync) swapchain_->setVsync(settings_.vsync);
+  if (swapchain_ && settings_.vsync != swapchain_->desc().vsync)
+    swapchain_->setVsync(settings_.vsync);
   if (settings_.autoRenderScale != scale_.automatic())
     scale_.setAutomatic(settings_.autoRenderScale);
   switch (effect) {
@@ -159,8 +184,9 @@ void Viewer::applyEffect(SettingEffect effect) {
 
 void Viewer::handleInput(float seconds) {
   const ImGuiIO& io = ImGui::GetIO();
+  if (!window_) return;  // offscreen: the script is the only input
   CameraInput input;
-  GLFWwindow* w = window_.handle();
+  GLFWwindow* w = window_->handle();
   // F1 shows and hides the menus (on the key going down, not while held).
   const bool f1 = glfwGetKey(w, GLFW_KEY_F1) == GLFW_PRESS;
   if (f1 && !f1WasDown_) settings_.showUi = !settings_.showUi;
@@ -240,7 +266,16 @@ bool Viewer::stepScript() {
           loadScene(c.args[0]);
           break;
         case Kind::WindowSize:
-          glfwSetWindowSize(window_.handle(), int(c.numbers[0]), int(c.numbers[1]));
+          if (window_) {
+            glfwSetWindowSize(window_->handle(), int(c.numbers[0]), int(c.numbers[1]));
+          } else if (render::isValidImageSize(uint32_t(c.numbers[0]), uint32_t(c.numbers[1]))) {
+            offscreenWidth_ = uint32_t(c.numbers[0]);
+            offscreenHeight_ = uint32_t(c.numbers[1]);
+            resizeRender();
+          } else {
+            throw Error(fmt::format("window-size {}x{}: outside the image size limit", c.numbers[0],
+                                    c.numbers[1]));
+          }
           break;
         case Kind::Material:
           editMaterial(c.args[0], c.args[1], c.numbers);
@@ -251,6 +286,15 @@ bool Viewer::stepScript() {
         case Kind::Screenshot:
           takeScreenshot(c.args[0]);
           break;
+        case Kind::Capture:
+          // Written once this frame is rendered: the step ends here, so the
+          // frame shows the script's state up to this line and no further.
+          if (image::formatFromPath(c.args[0]) != image::FileFormat::Png)
+            throw Error(fmt::format("capture {}: a capture is a .png", c.args[0]));
+          image::checkWritable(c.args[0]);
+          pendingCaptures_.push_back(c.args[0]);
+          ++scriptPosition_;
+          return true;
         case Kind::Quit:
           return false;
       }
@@ -353,33 +397,49 @@ std::vector<scene::Material> Viewer::uneditedMaterials() const {
 
 void Viewer::renderFrame() {
   uint32_t w = 0, h = 0;
-  window_.framebufferSize(w, h);
+  targetSize(w, h);
   if (w == 0 || h == 0) {  // minimised: nothing to present to
     glfwWaitEventsTimeout(0.1);
     return;
   }
-  if (w != swapchain_->desc().width || h != swapchain_->desc().height) {
+  if (swapchain_ && (w != swapchain_->desc().width || h != swapchain_->desc().height)) {
     swapchain_->resize(w, h);
-    ui_->swapchainResized();
     resizeRender();
   }
-  w = swapchain_->desc().width;
-  h = swapchain_->desc().height;
+  if (swapchain_) {
+    w = swapchain_->desc().width;
+    h = swapchain_->desc().height;
+  }
+  const bool capturing = !pendingCaptures_.empty() || !options_.recordDirectory.empty();
   if (!displayTexture_ || displayTexture_->desc().width != w ||
       displayTexture_->desc().height != h) {
+    device_->waitForIdle();  // frames in flight draw into the old one
+    ui_->forgetTargets();
     rhi::TextureDesc desc;
     desc.width = w;
     desc.height = h;
     desc.format = rhi::Format::RGBA8_UNORM;
-    desc.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::CopySource;
+    desc.usage = rhi::TextureUsage::Storage | rhi::TextureUsage::RenderTarget |
+                 rhi::TextureUsage::CopySource;
     desc.debugName = "display";
     displayTexture_ = device_->createTexture(desc);
+    captureBuffer_.reset();
   }
-  rhi::ITexture* backBuffer = swapchain_->acquireNextImage();
-  if (!backBuffer) {
-    swapchain_->resize(w, h);
-    ui_->swapchainResized();
-    return;
+  if (capturing && !captureBuffer_) {
+    rhi::BufferDesc desc;
+    desc.byteSize = uint64_t(w) * h * 4;
+    desc.usage = rhi::BufferUsage::CopyDest;
+    desc.memory = rhi::MemoryLocation::Readback;
+    desc.debugName = "display capture";
+    captureBuffer_ = device_->createBuffer(desc);
+  }
+  rhi::ITexture* backBuffer = nullptr;
+  if (swapchain_) {
+    backBuffer = swapchain_->acquireNextImage();
+    if (!backBuffer) {
+      swapchain_->resize(w, h);
+      return;
+    }
   }
   // One list per frame slot: open() waits for the slot's previous frame,
   // whose statistics are then ready. Path tracing, display and UI go into
@@ -387,7 +447,10 @@ void Viewer::renderFrame() {
   const size_t slot = frameNumber_ % frameLists_.size();
   auto& list = *frameLists_[slot];
   list.open();
-  if (frameQueries_[slot].samples > 0) lastStats_ = tracer_->frameStats(frameQueries_[slot]);
+  if (frameQueries_[slot].samples > 0) {
+    lastStats_ = tracer_->frameStats(frameQueries_[slot]);
+    tracingMs_.push_back(lastStats_.gpuSeconds * 1e3);
+  }
   frameQueries_[slot].samples = 0;
   if (denoiseTimed_.size() != frameLists_.size()) {
     denoiseTimed_.assign(frameLists_.size(), false);
@@ -395,8 +458,10 @@ void Viewer::renderFrame() {
     for (size_t i = 0; i < frameLists_.size(); ++i)
       denoiseTimers_.push_back(device_->createTimerQuery());
   }
-  if (denoiseTimed_[slot])
+  if (denoiseTimed_[slot]) {
     lastDenoiseSeconds_ = device_->timerQuerySeconds(denoiseTimers_[slot].get());
+    denoisingMs_.push_back(lastDenoiseSeconds_ * 1e3);
+  }
   denoiseTimed_[slot] = false;
 
   // The temporal denoiser integrates frames itself: until its history is
@@ -434,15 +499,55 @@ void Viewer::renderFrame() {
       : settings_.view == ViewBuffer::Depth ? render::DisplayChannels::Alpha
                                             : render::DisplayChannels::Color;
   display_->record(list, shown, displayTexture_, settings_.toneMapping, channels);
-  list.copyTexture(backBuffer, displayTexture_.get());
-  list.setTextureState(backBuffer, rhi::ResourceState::RenderTarget);
-  if (settings_.showUi) ui_->render(list, *backBuffer);
-  list.setTextureState(backBuffer, rhi::ResourceState::Present);
-  list.close();
-  if (!swapchain_->present(&list)) {
-    swapchain_->resize(w, h);
-    ui_->swapchainResized();
+  if (settings_.showUi) {
+    list.setTextureState(displayTexture_.get(), rhi::ResourceState::RenderTarget);
+    ui_->render(list, *displayTexture_);
   }
+  if (capturing) list.copyTextureToBuffer(displayTexture_.get(), captureBuffer_.get());
+  if (backBuffer) {
+    list.copyTexture(backBuffer, displayTexture_.get());
+    list.setTextureState(backBuffer, rhi::ResourceState::Present);
+  }
+  list.close();
+  if (!swapchain_) {
+    device_->submit(&list);
+  } else if (!swapchain_->present(&list)) {
+    swapchain_->resize(w, h);
+  }
+  if (capturing) {
+    device_->waitForIdle();
+    for (const auto& path : pendingCaptures_) saveCapture(path);
+    pendingCaptures_.clear();
+    if (!options_.recordDirectory.empty())
+      saveCapture(fmt::format("{}/frame-{:06}.png", options_.recordDirectory, frameNumber_));
+  }
+}
+
+void Viewer::saveCapture(const std::string& path) {
+  const auto& d = displayTexture_->desc();
+  image::Image8 shown;
+  shown.width = d.width;
+  shown.height = d.height;
+  shown.rgba.resize(size_t(d.width) * d.height * 4);
+  std::memcpy(shown.rgba.data(), captureBuffer_->mappedData(), shown.rgba.size());
+  for (size_t i = 3; i < shown.rgba.size(); i += 4) shown.rgba[i] = 255;  // the window is opaque
+  image::savePng(path, shown);
+  fmt::print("capture: {} ({}x{})\n", path, d.width, d.height);
+  std::fflush(stdout);
+}
+
+void Viewer::printTimings() const {
+  auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  fmt::print(
+      "timings: {} frames; path tracing {:.3f} ms/frame (median of {}); denoiser {:.3f} "
+      "ms/frame (median of {})\n",
+      frameNumber_, median(tracingMs_), tracingMs_.size(), median(denoisingMs_),
+      denoisingMs_.size());
+  std::fflush(stdout);
 }
 
 const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t slot) {
@@ -450,8 +555,11 @@ const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t
                          settings_.tracer.integrator == render::Integrator::Path;
   if (denoising || settings_.view == ViewBuffer::Motion) {
     if (!denoiser_ || denoiser_->width() != tracer_->width() ||
-        denoiser_->height() != tracer_->height())
+        denoiser_->height() != tracer_->height()) {
+      device_->waitForIdle();  // frames in flight still use the old one's textures
+      denoiser_.reset();
       denoiser_ = std::make_unique<render::Denoiser>(*device_, tracer_->width(), tracer_->height());
+    }
   }
   render::DenoiserSettings d;
   d.fireflyClamp = settings_.fireflyClamp;
@@ -505,8 +613,8 @@ const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t
 int Viewer::run() {
   lastFrame_ = std::chrono::steady_clock::now();
   bool quit = false;
-  while (!quit && !window_.shouldClose()) {
-    glfwPollEvents();
+  while (!quit && !(window_ && window_->shouldClose())) {
+    if (window_) glfwPollEvents();
     const auto now = std::chrono::steady_clock::now();
     frameSeconds_ = std::chrono::duration<double>(now - lastFrame_).count();
     lastFrame_ = now;
@@ -516,16 +624,26 @@ int Viewer::run() {
     }
 
     ui_->newFrame();
-    ImGui_ImplGlfw_NewFrame();
+    if (window_) {
+      ImGui_ImplGlfw_NewFrame();
+    } else {  // what the GLFW backend would set from the window
+      uint32_t w = 0, h = 0;
+      targetSize(w, h);
+      ImGuiIO& io = ImGui::GetIO();
+      io.DisplaySize = ImVec2(float(w), float(h));
+      io.DeltaTime = float(std::max(frameSeconds_, 1e-6));
+    }
     ImGui::NewFrame();
     handleInput(float(frameSeconds_));
     drawUi();
     ImGui::Render();
     quit = !stepScript();
-    if (!quit) renderFrame();
+    if (quit) break;
+    renderFrame();
     ++frameNumber_;
   }
   device_->waitForIdle();
+  printTimings();
   if (options_.validation && device_->validationMessageCount() > 0) {
     log::error("{} validation message(s)", device_->validationMessageCount());
     return 1;

@@ -1,7 +1,9 @@
 #pragma once
 // The interactive viewer: a window, the path tracer accumulating while the
-// camera and settings are still, the display pass into the back buffer, and
-// Dear ImGui menus over it.
+// camera and settings are still, the display pass and Dear ImGui menus into
+// an RGBA8 display texture, copied into the back buffer. Offscreen, the same
+// loop runs without a window or swapchain (a GPU server without a display)
+// and the display texture is what captures and recordings read back.
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -37,6 +39,11 @@ struct ViewerOptions {
   bool vsync = true;
   std::string config;                     // bookmarks file; empty: BookmarkStore::defaultPath()
   render::EnvironmentChoice environment;  // --env options, applied to every scene loaded
+  // No window and no swapchain: width x height is the size the window would
+  // have; a script drives the session (nothing else ends it).
+  bool offscreen = false;
+  // Write every frame as shown (UI included) as DIR/frame-NNNNNN.png.
+  std::string recordDirectory;
 };
 
 class Viewer {
@@ -69,6 +76,12 @@ class Viewer {
   void changeEnvironment(const std::string& key, const std::string& value);
   void drawStats();
   void takeScreenshot(const std::string& path);
+  // The size of what is shown: the window's framebuffer, or the offscreen size.
+  void targetSize(uint32_t& width, uint32_t& height) const;
+  // Reads the display texture of the frame just submitted into a PNG.
+  void saveCapture(const std::string& path);
+  // Median GPU times over the frames shown, printed when the viewer ends.
+  void printTimings() const;
   void materialsChanged();
   // Sets one parameter of the named material, as the Material menu would.
   void editMaterial(const std::string& name, const std::string& parameter,
@@ -78,14 +91,18 @@ class Viewer {
   std::vector<scene::Material> uneditedMaterials() const;
 
   ViewerOptions options_;
-  Window window_;
+  std::unique_ptr<Window> window_;  // null offscreen
+  uint32_t offscreenWidth_ = 0, offscreenHeight_ = 0;
   rhi::DeviceHandle device_;
-  rhi::SwapchainHandle swapchain_;
+  rhi::SwapchainHandle swapchain_;  // null offscreen
   std::unique_ptr<ImGuiVulkanRenderer> ui_;
   std::unique_ptr<render::DisplayPass> display_;
   std::vector<rhi::CommandListHandle> frameLists_;
   std::vector<render::FrameQueries> frameQueries_;  // per frame slot
-  rhi::TextureHandle displayTexture_;
+  rhi::TextureHandle displayTexture_;               // tone-mapped image + UI: what the window shows
+  rhi::BufferHandle captureBuffer_;                 // its readback, for capture and --record
+  std::vector<std::string> pendingCaptures_;        // captures asked for this frame
+  std::vector<double> tracingMs_, denoisingMs_;     // per frame shown, for printTimings
   uint64_t frameNumber_ = 0;
 
   std::string sceneName_;

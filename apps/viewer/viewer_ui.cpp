@@ -300,9 +300,11 @@ void Viewer::drawStats() {
                    ImGuiWindowFlags_NoNav);
   const auto& adapter = device_->adapter();
   ImGui::Text("%s (%s)", adapter.name.c_str(), device_->backendName());
-  ImGui::Text("render %ux%u (scale %.3f%s), window %ux%u", tracer_->width(), tracer_->height(),
-              scale_.scale(), scale_.automatic() ? " auto" : "", swapchain_->desc().width,
-              swapchain_->desc().height);
+  uint32_t shownWidth = 0, shownHeight = 0;
+  targetSize(shownWidth, shownHeight);
+  ImGui::Text("render %ux%u (scale %.3f%s), %s %ux%u", tracer_->width(), tracer_->height(),
+              scale_.scale(), scale_.automatic() ? " auto" : "", window_ ? "window" : "offscreen",
+              shownWidth, shownHeight);
   ImGui::Text("accumulated %u spp", tracer_->accumulatedSamples());
   ImGui::Text(
       "GPU %.2f ms/frame, %.1f Mrays/s", lastStats_.gpuSeconds * 1e3,

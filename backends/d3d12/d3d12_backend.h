@@ -258,6 +258,7 @@ class D3D12TimerQuery final : public rhi::ITimerQuery {
 class D3D12CommandList final : public rhi::ICommandList {
  public:
   D3D12CommandList(D3D12Device& device, const std::string& debugName);
+  ~D3D12CommandList() override;
   void open() override;
   void close() override;
   void writeBuffer(rhi::IBuffer* buffer, const void* data, size_t bytes, uint64_t offset) override;
@@ -322,6 +323,9 @@ class D3D12Device final : public rhi::IDevice {
   rhi::SwapchainHandle createSwapchain(const rhi::SwapchainDesc& desc) override;
   void submit(rhi::ICommandList* commandList) override;
   void waitForIdle() override;
+  // A list being recorded again, or destroyed, is no longer one whose
+  // transient resources waitForIdle may release.
+  void forgetSubmitted(D3D12CommandList* list);
   double timerQuerySeconds(rhi::ITimerQuery* query) override;
   uint64_t validationMessageCount() const override;
 

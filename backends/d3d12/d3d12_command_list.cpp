@@ -43,9 +43,14 @@ D3D12CommandList::D3D12CommandList(D3D12Device& device, const std::string& debug
 
 // D3D12: fence wait for the list's previous submission (resetting an
 // allocator the GPU still reads is an error) + allocator Reset + list Reset.
+D3D12CommandList::~D3D12CommandList() { device_.forgetSubmitted(this); }
+
 void D3D12CommandList::open() {
   device_.waitForFence(submissionFence_);
   releaseTransientResources();
+  // From here on the upload buffers are this recording's: a waitForIdle
+  // while it records must leave them alone.
+  device_.forgetSubmitted(this);
   check(allocator_->Reset(), "ID3D12CommandAllocator::Reset");
   check(list_->Reset(allocator_.Get(), nullptr), "ID3D12GraphicsCommandList::Reset");
   // One heap of each type may be bound at a time: the device's CBV/SRV/UAV

@@ -173,6 +173,10 @@ void D3D12Device::waitForIdle() {
   drainMessages();
 }
 
+void D3D12Device::forgetSubmitted(D3D12CommandList* list) {
+  inFlight_.erase(std::remove(inFlight_.begin(), inFlight_.end(), list), inFlight_.end());
+}
+
 double D3D12Device::timerQuerySeconds(rhi::ITimerQuery* query) {
   auto* q = static_cast<D3D12TimerQuery*>(query);
   uint64_t ticks[2] = {};

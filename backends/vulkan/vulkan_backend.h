@@ -306,6 +306,9 @@ class VulkanDevice final : public rhi::IDevice {
   // submit() that also waits for and signals semaphores (the swapchain's).
   void submit(rhi::ICommandList* commandList, VkSemaphore wait, VkSemaphore signal);
   void waitForIdle() override;
+  // A list being recorded again, or destroyed, is no longer one whose
+  // transient resources waitForIdle may release.
+  void forgetSubmitted(VulkanCommandList* list);
   double timerQuerySeconds(rhi::ITimerQuery* query) override;
   uint64_t validationMessageCount() const override { return instance_->validationMessages(); }
 

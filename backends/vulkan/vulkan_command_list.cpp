@@ -109,6 +109,7 @@ VulkanCommandList::VulkanCommandList(VulkanDevice& device, const std::string& de
 
 VulkanCommandList::~VulkanCommandList() {
   vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX);
+  device_.forgetSubmitted(this);
   vkDestroyFence(device_.handle(), fence_, nullptr);
   vkDestroyCommandPool(device_.handle(), pool_, nullptr);
 }
@@ -117,6 +118,9 @@ void VulkanCommandList::open() {
   // A list still executing is waited for before it is recorded again.
   check(vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   releaseTransientResources();
+  // From here on the staging buffers are this recording's: a waitForIdle
+  // while it records (a pass rebinding mid-frame) must leave them alone.
+  device_.forgetSubmitted(this);
   check(vkResetCommandPool(device_.handle(), pool_, 0), "vkResetCommandPool");
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

@@ -269,6 +269,10 @@ void VulkanDevice::waitForIdle() {
   inFlight_.clear();
 }
 
+void VulkanDevice::forgetSubmitted(VulkanCommandList* list) {
+  inFlight_.erase(std::remove(inFlight_.begin(), inFlight_.end(), list), inFlight_.end());
+}
+
 double VulkanDevice::timerQuerySeconds(rhi::ITimerQuery* query) {
   auto* q = static_cast<VulkanTimerQuery*>(query);
   uint64_t ticks[2] = {};

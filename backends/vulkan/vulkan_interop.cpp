@@ -3,7 +3,6 @@
 #include "rhi/validation.h"
 #include "util/error.h"
 #include "vulkan_backend.h"
-#include "vulkan_swapchain.h"
 
 namespace penumbra::vk::interop {
 namespace {
@@ -35,10 +34,6 @@ VkImageView imageView(rhi::ITexture& texture) {
   auto* vkTexture = dynamic_cast<VulkanTexture*>(&texture);
   if (!vkTexture) throw Error("vulkan interop: the texture is not a Vulkan one");
   return vkTexture->view();
-}
-
-VkFormat swapchainFormat(rhi::ISwapchain& swapchain) {
-  return backendObject<VulkanSwapchain>(swapchain, "swapchain").vkFormat();
 }
 
 }  // namespace penumbra::vk::interop

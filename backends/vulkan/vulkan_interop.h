@@ -23,6 +23,5 @@ DeviceHandles deviceHandles(rhi::IDevice& device);
 // The command buffer an open command list records into.
 VkCommandBuffer commandBuffer(rhi::ICommandList& commandList);
 VkImageView imageView(rhi::ITexture& texture);
-VkFormat swapchainFormat(rhi::ISwapchain& swapchain);
 
 }  // namespace penumbra::vk::interop

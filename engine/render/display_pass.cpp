@@ -19,6 +19,11 @@ void DisplayPass::record(rhi::ICommandList& commandList, const rhi::TextureHandl
   if (target->desc().format != rhi::Format::RGBA8_UNORM)
     throw Error("display pass: the target must be an RGBA8 storage texture");
   if (!bindings_ || boundHdr_ != hdr.get() || boundTarget_ != target.get()) {
+    // Frames still in flight read the old set (command lists hold binding
+    // sets by pointer): they finish first. The shown texture changes only on
+    // a user's action (a view, the denoiser, a resize), so this never stalls
+    // a steady stream of frames.
+    if (bindings_) device_.waitForIdle();
     rhi::BindingSetDesc set;
     set.debugName = "display bindings";
     set.items = {rhi::BindingSetItem::storageTexture(PENUMBRA_T(TM_T_INPUT), hdr),
