@@ -3,26 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstring>
-#include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <limits>
-#include <map>
-#include <tuple>
 
 #include "effects.h"
 #include "path_tracer_shared.h"
-#include "payloads_shared.h"
-#include "penumbra_shaders.h"
 #include "render/camera_model.h"
 #include "render/effect_set.h"
-#include "render/emitter_table.h"
-#include "render/environment_map.h"
 #include "render/image_size.h"
-#include "render/implicit_geometry.h"
-#include "render/scene_textures.h"
 #include "util/error.h"
 
 namespace penumbra::render {
@@ -32,219 +19,13 @@ gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) {
   return {v.x, v.y, v.z, w};
 }
 
-template <class Matrix>  // glm::mat4 or glm::dmat4
-rhi::rt::AffineTransform toAffine(const Matrix& m) {
-  rhi::rt::AffineTransform t{};
-  for (int row = 0; row < 3; ++row)
-    for (int col = 0; col < 4; ++col) t[row * 4 + col] = float(m[col][row]);  // glm is column-major
-  return t;
-}
-
-// InstanceData for a mesh instance: the TLAS transform and its inverse (in
-// double, so the inverse is as exact as float storage allows), as rows.
-void placeInstance(gpu::InstanceData& d, const glm::dmat4& objectToWorld) {
-  const glm::dmat4 inverse = glm::inverse(objectToWorld);
-  gpu::float4* forward[3] = {&d.objectToWorld0, &d.objectToWorld1, &d.objectToWorld2};
-  gpu::float4* backward[3] = {&d.worldToObject0, &d.worldToObject1, &d.worldToObject2};
-  for (int row = 0; row < 3; ++row) {  // glm is column-major: m[column][row]
-    *forward[row] = {float(objectToWorld[0][row]), float(objectToWorld[1][row]),
-                     float(objectToWorld[2][row]), float(objectToWorld[3][row])};
-    *backward[row] = {float(inverse[0][row]), float(inverse[1][row]), float(inverse[2][row]),
-                      float(inverse[3][row])};
-  }
-}
-
-gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
-                               uint32_t firstEmissiveTriangle, const glm::dmat4& objectToWorld) {
-  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {}, {},
-                      {},         {},          {}};
-  placeInstance(d, objectToWorld);
-  return d;
-}
-
-// The order of the instances on the GPU (InstanceData, TLAS instance IDs):
-// first the merge groups, each a run of instances whose meshes are drawn
-// once and lie in one cell of a 64 m grid, which share one BLAS (one
-// geometry each, its transform applied when the BLAS is built, about the
-// group's centre); then every other instance, one TLAS instance each over
-// its mesh's BLAS. A TLAS instance costs traversal a ray transform and a
-// second hierarchy; most scenes draw most meshes once (the Cornell box: 8
-// instances, one BLAS). Instanced meshes keep their own BLAS so their
-// triangles are stored once. A group's floats are precise to its extent
-// (about 8 um within two cells), so a mesh larger than a cell, or far from
-// the others, is not merged: a 0.1 mm part keeps its precision beside a
-// 10 km terrain.
-struct MergeGroup {
-  uint32_t first = 0, count = 0;  // GPU instance indices
-  glm::dvec3 centre{0.0};         // of the group's world bounds: its BLAS's origin
-};
-
-struct MeshInstanceOrder {
-  std::vector<uint32_t> sceneInstance;  // GPU instance index -> scene instance index
-  std::vector<MergeGroup> groups;
-  uint32_t merged = 0;  // the first `merged` GPU instances are in groups
-};
-
-MeshInstanceOrder meshInstanceOrder(const scene::Scene& scene) {
-  constexpr double kCell = 64.0;
-  std::vector<uint32_t> uses(scene.meshes.size(), 0);
-  for (const auto& inst : scene.instances) ++uses[inst.mesh];
-  struct Bounds {
-    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
-  };
-  struct Cell {
-    std::vector<uint32_t> members;  // scene instance indices
-    Bounds bounds;
-  };
-  std::map<std::tuple<int64_t, int64_t, int64_t>, Cell> cells;
-  std::vector<bool> grouped(scene.instances.size(), false);
-  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    const auto& inst = scene.instances[i];
-    if (uses[inst.mesh] != 1 || scene.meshes[inst.mesh].positions.empty()) continue;
-    Bounds b;
-    for (const glm::vec3& p : scene.meshes[inst.mesh].positions) {
-      const glm::dvec3 w(inst.transform * glm::dvec4(glm::dvec3(p), 1.0));
-      b.lo = glm::min(b.lo, w);
-      b.hi = glm::max(b.hi, w);
-    }
-    const glm::dvec3 extent = b.hi - b.lo;
-    if (std::max({extent.x, extent.y, extent.z}) > kCell) continue;
-    const glm::dvec3 cell = glm::floor(0.5 * (b.lo + b.hi) / kCell);
-    const auto key = std::make_tuple(int64_t(cell.x), int64_t(cell.y), int64_t(cell.z));
-    Cell& c = cells[key];
-    c.members.push_back(i);
-    c.bounds.lo = glm::min(c.bounds.lo, b.lo);
-    c.bounds.hi = glm::max(c.bounds.hi, b.hi);
-    grouped[i] = true;
-  }
-  MeshInstanceOrder order;
-  for (const auto& [key, c] : cells) {
-    order.groups.push_back({uint32_t(order.sceneInstance.size()), uint32_t(c.members.size()),
-                            0.5 * (c.bounds.lo + c.bounds.hi)});
-    order.sceneInstance.insert(order.sceneInstance.end(), c.members.begin(), c.members.end());
-  }
-  order.merged = uint32_t(order.sceneInstance.size());
-  for (uint32_t i = 0; i < scene.instances.size(); ++i)
-    if (!grouped[i]) order.sceneInstance.push_back(i);
-  return order;
-}
-
-template <class T>
-rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& data,
-                                    rhi::BufferUsage extra, const char* name) {
-  rhi::BufferDesc desc;
-  // At least one element: an empty structured buffer has no valid view.
-  desc.byteSize = std::max<uint64_t>(data.size(), 1) * sizeof(T);
-  desc.usage = rhi::BufferUsage::StorageBuffer | extra;
-  desc.debugName = name;
-  return device.createBuffer(desc);
-}
-
-// Render space's origin for a camera at `position`: the nearest point of a
-// 64 m grid. Within 64 m, floats resolve 4 um (the Cornell box's light hangs
-// 100 um under its ceiling); on a grid, cameras that move a little keep the
-// origin and render exactly what they rendered, and a scene near the world's
-// origin renders in world space.
-constexpr double kRenderOriginGrid = 64.0;
-glm::dvec3 renderOriginNear(const glm::dvec3& position) {
-  return glm::round(position / kRenderOriginGrid) * kRenderOriginGrid;
-}
-
 // How far the camera may move from render space's origin before the origin
 // follows it (PathTracer::setCamera): within 64 m floats still resolve 4 um,
 // and the new origin, the grid point nearest the camera, is at most 55 m
 // from it, so a camera has to travel at least 9 m before it moves again.
 constexpr double kRebaseDistance = 64.0;
 
-gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
-  gpu::PointLight p;
-  const bool directional = l.type == scene::LightType::Directional;
-  // w: a spot's inner cone, a directional light's angular radius (cosines).
-  p.position = toFloat4(
-      directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin),
-      directional && l.angularRadiusDegrees <= 0.0f
-          ? 1.0f
-          : std::cos(glm::radians(directional ? l.angularRadiusDegrees
-                                              : std::min(l.innerConeDegrees, l.outerConeDegrees))));
-  p.intensity = toFloat4(l.intensity, directional ? 0.0f : l.range);
-  float marker = float(PT_LIGHT_POINT);
-  if (l.type == scene::LightType::Spot) marker = std::cos(glm::radians(l.outerConeDegrees));
-  if (directional) marker = float(PT_LIGHT_DIRECTIONAL);
-  p.spot = toFloat4(glm::normalize(l.direction), marker);
-  return p;
-}
-
-// The whole of `values` into `buffer`; nothing for an empty list.
-template <class T>
-void writeAll(rhi::ICommandList& cmd, const rhi::BufferHandle& buffer,
-              const std::vector<T>& values) {
-  if (!values.empty()) cmd.writeBuffer(buffer.get(), values.data(), values.size() * sizeof(T));
-}
-
 }  // namespace
-
-gpu::MaterialData packMaterial(const scene::Material& m) {
-  gpu::MaterialData d;
-  d.baseColor = toFloat4(m.baseColor);
-  d.emission = toFloat4(m.emission);
-  d.disney0 = {m.metallic, m.roughness, m.anisotropic, m.specular};
-  d.disney1 = {m.specularTint, m.sheen, m.sheenTint, m.clearcoat};
-  d.disney2 = {m.clearcoatGloss, m.specTrans, m.ior, m.subsurface};
-  d.phong = {m.ks, m.exponent, m.reflectivity, m.transparency};
-  uint32_t flags = 0;
-  if (m.thin) flags |= MATERIAL_FLAG_THIN;
-  if (m.model == scene::MaterialModel::Lambert) flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;
-  d.flags = {m.model == scene::MaterialModel::Phong ? MATERIAL_MODEL_PHONG : MATERIAL_MODEL_DISNEY,
-             flags, 0, 0};
-  d.textures = {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.emissiveTexture};
-  const uint32_t alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
-                             : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND
-                                                                      : MATERIAL_ALPHA_OPAQUE;
-  d.textures2 = {m.occlusionTexture, alphaMode, 0, 0};
-  d.textureParams = {m.normalScale, m.occlusionStrength, m.alpha, m.alphaCutoff};
-  // sigma = -ln(colour) / distance, so exp(-sigma distance) = colour; a
-  // black colour absorbs everything within a millionth of the distance.
-  glm::vec3 sigma(0.0f);
-  if (std::isfinite(m.attenuationDistance) && !m.thin)
-    for (int k = 0; k < 3; ++k)
-      sigma[k] = -std::log(std::max(m.attenuationColor[k], 1e-6f)) / m.attenuationDistance;
-  d.absorption = toFloat4(sigma);
-  return d;
-}
-
-struct PathTracer::SceneBuffers {
-  rhi::BufferHandle vertices, indices, instances, materials, emissive, pointLights;
-  rhi::BufferHandle normals, tangents, texcoords;
-  SceneTextures textures;
-  rhi::BufferHandle textureRefs;
-  rhi::BufferHandle environmentInfo, environmentTexels, environmentCdf;
-  std::vector<rhi::rt::AccelStructHandle> mergedBottomLevels;  // one per MergeGroup
-  rhi::BufferHandle
-      mergedTransforms;  // their geometries' transforms, 3x4 rows, in GPU instance order
-  std::vector<rhi::rt::AccelStructHandle> bottomLevels;  // per instanced mesh; null for the others
-  rhi::rt::AccelStructHandle topLevel;
-  rhi::BufferHandle implicits, implicitAabbs;
-  std::vector<rhi::rt::AccelStructHandle> implicitBottomLevels;  // one per family present
-  std::vector<ImplicitFamily> implicitFamilies;                  // hit group 1 + i is family i's
-};
-
-// What of the scene depends on where render space's origin is, kept in world
-// space (double) so that rebase() can place it again about another origin
-// without the scene: everything but the meshes' BLASes, which are in object
-// space (or about their merge group's centre).
-struct PathTracer::WorldPlacement {
-  std::vector<gpu::InstanceData> instances;  // as uploaded: mesh instances, then implicit objects
-  std::vector<glm::dmat4> meshInstanceToWorld;  // object to world of instances[i], i < their count
-  std::vector<EmitterSource> emitters;
-  std::vector<scene::PointLight> pointLights;
-  std::vector<scene::ImplicitObject> implicits;
-  uint32_t firstImplicitInstance = 0;
-  // The TLAS: the meshes' instances first (placed by meshTlasInstanceToWorld),
-  // then one per implicit family (identity: their objects carry their own
-  // transforms, and their AABBs are in render space).
-  std::vector<rhi::rt::InstanceDesc> tlasInstances;
-  std::vector<glm::dmat4> meshTlasInstanceToWorld;
-};
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
                        uint32_t height, const PipelineOptions& options)
@@ -253,7 +34,9 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
       height_(height),
       options_(options),
       camera_(scene.camera),
-      renderOrigin_(renderOriginNear(scene.camera.position)) {
+      environment_(scene.environment),
+      ambient_(scene.ambient),
+      materials_(scene.materials) {
   requireValidImageSize("path tracer", width, height);
   scene::validate(scene);
   sceneEffects_ = deriveEffects(scene);
@@ -268,7 +51,11 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   rayCounter_ = device_.createBuffer(counter);
   ownFrame_ = createFrameQueries();
 
-  uploadScene(scene);
+  for (const auto& inst : scene.instances)
+    drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
+  for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
+  scene_ = std::make_unique<GpuScene>(device_, scene, renderOriginNear(scene.camera.position),
+                                      pipelineEffects_ == uint32_t(PT_EFFECTS_ALL));
   // The path-tracing pipeline now, so bad shaders fail at construction; the
   // others when first used.
   pipelineFor(RayGeneration::Path);
@@ -309,44 +96,8 @@ void PathTracer::resize(uint32_t width, uint32_t height) {
 void PathTracer::rebuildBindings() {
   for (int i = 0; i < int(RayGeneration::Probe); ++i)
     if (pipelines_[i].pipeline)
-      pipelines_[i].bindings =
+      bindings_[i] =
           createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
-}
-
-void PathTracer::uploadEnvironment() {
-  // Everything is built and written before anything is replaced: an
-  // allocation that fails (a map too large for the device) leaves the
-  // environment that was there, bound and whole.
-  const EnvironmentTables tables = buildEnvironmentTables(environment_);
-  using rhi::BufferUsage;
-  const std::vector<gpu::EnvironmentData> info = {tables.info};
-  rhi::BufferHandle newInfo = makeStorageBuffer(device_, info, BufferUsage::None, "environment");
-  rhi::BufferHandle newTexels =
-      makeStorageBuffer(device_, tables.texels, BufferUsage::None, "environment texels");
-  rhi::BufferHandle newCdf =
-      makeStorageBuffer(device_, tables.cdf, BufferUsage::None, "environment CDF");
-  auto* cmd = commandList_.get();
-  cmd->open();
-  writeAll(*cmd, newInfo, info);
-  writeAll(*cmd, newTexels, tables.texels);
-  writeAll(*cmd, newCdf, tables.cdf);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
-  auto& s = *scene_;
-  s.environmentInfo = std::move(newInfo);
-  s.environmentTexels = std::move(newTexels);
-  s.environmentCdf = std::move(newCdf);
-}
-
-void PathTracer::writeEnvironmentPlacement() {
-  const std::vector<gpu::EnvironmentData> info = {environmentInfo(environment_)};
-  auto* cmd = commandList_.get();
-  cmd->open();
-  writeAll(*cmd, scene_->environmentInfo, info);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
 }
 
 void PathTracer::setEnvironment(scene::Environment environment) {
@@ -357,7 +108,7 @@ void PathTracer::setEnvironment(scene::Environment environment) {
   scene::Environment previous = std::move(environment_);
   environment_ = std::move(environment);
   try {
-    uploadEnvironment();
+    scene_->uploadEnvironment(environment_);
   } catch (...) {
     environment_ = std::move(previous);
     throw;
@@ -387,317 +138,20 @@ void PathTracer::setEnvironmentPlacement(float rotationDegrees, float intensity,
   environment_.rotationDegrees = rotationDegrees;
   environment_.intensity = intensity;
   environment_.visibleBackground = visibleBackground;
-  writeEnvironmentPlacement();
+  scene_->writeEnvironmentPlacement(environment_);
   resetAccumulation();
 }
 
-glm::dmat4 PathTracer::worldToRenderSpace() const {
-  return glm::translate(glm::dmat4(1.0), -renderOrigin_);
-}
-
-void PathTracer::uploadScene(const scene::Scene& scene) {
-  scene_ = std::make_unique<SceneBuffers>();
-  placement_ = std::make_unique<WorldPlacement>();
-  std::vector<gpu::float4> vertices;
-  std::vector<uint32_t> indices;
-  std::vector<uint32_t> firstVertex, firstIndex;
-  // Vertex attributes parallel to `vertices`; zero where a mesh has none,
-  // which the closest-hit shader reads as "none".
-  std::vector<gpu::float4> normals, tangents, texcoords;
-  for (const auto& mesh : scene.meshes) {
-    firstVertex.push_back(uint32_t(vertices.size()));
-    firstIndex.push_back(uint32_t(indices.size()));
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
-      vertices.push_back(toFloat4(mesh.positions[v], 1.0f));
-      normals.push_back(mesh.normals.empty() ? gpu::float4{} : toFloat4(mesh.normals[v]));
-      const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[v];
-      tangents.push_back({t.x, t.y, t.z, t.w});
-      const glm::vec2 uv0 = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[v];
-      const glm::vec2 uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[v];
-      texcoords.push_back({uv0.x, uv0.y, uv1.x, uv1.y});
-    }
-    indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
-  }
-
-  std::vector<gpu::MaterialData> materials;
-  for (const auto& m : scene.materials) materials.push_back(packMaterial(m));
-  materials_ = scene.materials;
-  for (const auto& inst : scene.instances)
-    drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
-  for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
-  placement_->pointLights = scene.pointLights;
-  std::vector<gpu::PointLight> pointLights;
-  for (const auto& l : scene.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
-  pointLightCount_ = uint32_t(pointLights.size());
-  ambient_ = scene.ambient;
-  environment_ = scene.environment;
-
-  // Everything the GPU sees is placed relative to renderOrigin_ (the camera's
-  // position when the scene was uploaded), in double until then: the render
-  // space, where floats are precise near the camera wherever the scene is.
-  const glm::dmat4 toRenderSpace = worldToRenderSpace();
-  // Emitters: render-space triangles of every instance of an emissive mesh,
-  // chosen for NEE in proportion to power (area x luminance).
-  std::vector<gpu::InstanceData> instances;
-  uint32_t emissiveTriangles = 0;
-  const MeshInstanceOrder order = meshInstanceOrder(scene);
-  gpuToSceneInstance_ = order.sceneInstance;
-  for (uint32_t sceneIndex : order.sceneInstance) {
-    const auto& inst = scene.instances[sceneIndex];
-    const auto& mesh = scene.meshes[inst.mesh];
-    const auto& material = scene.materials[mesh.material];
-    const glm::dmat4 objectToRender = toRenderSpace * inst.transform;
-    gpu::InstanceData data = instanceData(firstIndex[inst.mesh], firstVertex[inst.mesh],
-                                          mesh.material, PT_NO_EMISSION, objectToRender);
-    data.vertexAttributes.x = (mesh.normals.empty() ? 0u : PT_VERTEX_NORMALS) |
-                              (mesh.tangents.empty() ? 0u : PT_VERTEX_TANGENTS) |
-                              (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS);
-    if (material.isEmissive()) {
-      data.firstEmissiveTriangle = emissiveTriangles;
-      emissiveTriangles += uint32_t(mesh.indices.size() / 3);
-      placement_->emitters.push_back(emitterSource(scene, inst));
-    }
-    placement_->meshInstanceToWorld.push_back(inst.transform);
-    instances.push_back(data);
-  }
-  for (const auto& object : scene.implicits) {
-    const bool emits = scene.materials[object.material].isEmissive();
-    instances.push_back(instanceData(
-        0, 0, object.material, emits ? PT_EMISSION_NOT_SAMPLED : PT_NO_EMISSION, glm::dmat4(1.0)));
-  }
-  placement_->instances = instances;
-  const EmitterTable emitterTable = placeEmitters(placement_->emitters, toRenderSpace);
-  const std::vector<gpu::EmissiveTriangle>& emissive = emitterTable.triangles;
-  emissiveTriangleCount_ = emitterTable.sampledCount;
-
-  using rhi::BufferUsage;
-  auto& s = *scene_;
-  s.vertices = makeStorageBuffer(device_, vertices, BufferUsage::AccelStructBuildInput, "vertices");
-  s.indices = makeStorageBuffer(device_, indices, BufferUsage::AccelStructBuildInput, "indices");
-  s.instances = makeStorageBuffer(device_, instances, BufferUsage::None, "instances");
-  s.materials = makeStorageBuffer(device_, materials, BufferUsage::None, "materials");
-  s.emissive = makeStorageBuffer(device_, emissive, BufferUsage::None, "emissive triangles");
-  s.pointLights = makeStorageBuffer(device_, pointLights, BufferUsage::None, "point lights");
-  s.normals = makeStorageBuffer(device_, normals, BufferUsage::None, "vertex normals");
-  s.tangents = makeStorageBuffer(device_, tangents, BufferUsage::None, "vertex tangents");
-  s.texcoords = makeStorageBuffer(device_, texcoords, BufferUsage::None, "vertex texcoords");
-
-  auto* cmd = commandList_.get();
-  cmd->open();
-  if (!vertices.empty()) {
-    cmd->writeBuffer(s.vertices.get(), vertices.data(), vertices.size() * sizeof(gpu::float4));
-    cmd->writeBuffer(s.normals.get(), normals.data(), normals.size() * sizeof(gpu::float4));
-    cmd->writeBuffer(s.tangents.get(), tangents.data(), tangents.size() * sizeof(gpu::float4));
-    cmd->writeBuffer(s.texcoords.get(), texcoords.data(), texcoords.size() * sizeof(gpu::float4));
-  }
-  if (!indices.empty())
-    cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
-  writeAll(*cmd, s.instances, instances);
-  writeAll(*cmd, s.materials, materials);
-  writeAll(*cmd, s.emissive, emissive);
-  writeAll(*cmd, s.pointLights, pointLights);
-  s.textures = uploadSceneTextures(device_, *cmd, scene);
-  s.textureRefs = makeStorageBuffer(device_, s.textures.refs, BufferUsage::None, "texture refs");
-  cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
-                   s.textures.refs.size() * sizeof(gpu::TextureRefData));
-
-  // The builds go in a list of their own, after the uploads, so that GPU
-  // timestamps around them time the builds alone (accelStructBuildTimes).
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
-  uploadEnvironment();
-  cmd->open();
-  rhi::TimerQueryHandle bottomLevelTimer = device_.createTimerQuery();
-  rhi::TimerQueryHandle topLevelTimer = device_.createTimerQuery();
-  cmd->beginTimerQuery(bottomLevelTimer.get());
-
-  // Alpha-masked meshes are the only non-opaque geometry: the any-hit
-  // shader runs for them alone. Each texel is one hit or none, so duplicate
-  // any-hit calls could not change a result, but they cost time.
-  auto meshGeometry = [&](uint32_t m) {
-    rhi::rt::GeometryDesc geo;
-    geo.type = rhi::rt::GeometryType::Triangles;
-    geo.flags = alphaMasked(scene.materials[scene.meshes[m].material])
-                    ? rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation
-                    : rhi::rt::GeometryFlags::Opaque;
-    geo.triangles.vertexBuffer = s.vertices.get();
-    geo.triangles.vertexOffset = uint64_t(firstVertex[m]) * sizeof(gpu::float4);
-    geo.triangles.vertexStride = sizeof(gpu::float4);
-    geo.triangles.vertexCount = uint32_t(scene.meshes[m].positions.size());
-    geo.triangles.indexBuffer = s.indices.get();
-    geo.triangles.indexOffset = uint64_t(firstIndex[m]) * sizeof(uint32_t);
-    geo.triangles.indexCount = uint32_t(scene.meshes[m].indices.size());
-    return geo;
-  };
-  std::vector<rhi::rt::InstanceDesc> tlasInstances;
-  std::vector<rhi::rt::AffineTransform> transforms;  // every group's geometries, in GPU order
-  for (const MergeGroup& group : order.groups)
-    for (uint32_t k = group.first; k < group.first + group.count; ++k)
-      transforms.push_back(toAffine(glm::translate(glm::dmat4(1.0), -group.centre) *
-                                    scene.instances[order.sceneInstance[k]].transform));
-  s.mergedTransforms = makeStorageBuffer(device_, transforms, BufferUsage::AccelStructBuildInput,
-                                         "merged BLAS transforms");
-  if (!transforms.empty())
-    cmd->writeBuffer(s.mergedTransforms.get(), transforms.data(),
-                     transforms.size() * sizeof(transforms[0]));
-  for (const MergeGroup& group : order.groups) {
-    rhi::rt::AccelStructDesc blas;
-    blas.debugName = fmt::format("BLAS of {} meshes drawn once", group.count);
-    for (uint32_t k = group.first; k < group.first + group.count; ++k) {
-      rhi::rt::GeometryDesc geo = meshGeometry(scene.instances[order.sceneInstance[k]].mesh);
-      geo.triangles.transformBuffer = s.mergedTransforms.get();
-      geo.triangles.transformOffset = k * sizeof(rhi::rt::AffineTransform);
-      blas.bottomLevelGeometries.push_back(geo);
-    }
-    s.mergedBottomLevels.push_back(device_.createAccelStruct(blas));
-    cmd->buildBottomLevelAccelStruct(s.mergedBottomLevels.back().get());
-    rhi::rt::InstanceDesc d;
-    placement_->meshTlasInstanceToWorld.push_back(glm::translate(glm::dmat4(1.0), group.centre));
-    d.transform = toAffine(toRenderSpace * placement_->meshTlasInstanceToWorld.back());
-    d.instanceID = group.first;  // + geometry index: the GPU instance (triangle.rchit)
-    d.flags = rhi::rt::InstanceTriangleCullDisable;
-    d.bottomLevelAddress = s.mergedBottomLevels.back()->deviceAddress();
-    tlasInstances.push_back(d);
-  }
-  s.bottomLevels.resize(scene.meshes.size());
-  for (uint32_t gpuIndex = order.merged; gpuIndex < order.sceneInstance.size(); ++gpuIndex) {
-    const auto& inst = scene.instances[order.sceneInstance[gpuIndex]];
-    auto& bottomLevel = s.bottomLevels[inst.mesh];
-    if (!bottomLevel) {
-      rhi::rt::AccelStructDesc blas;
-      blas.debugName = "BLAS " + scene.meshes[inst.mesh].name;
-      blas.bottomLevelGeometries.push_back(meshGeometry(inst.mesh));
-      bottomLevel = device_.createAccelStruct(blas);
-      cmd->buildBottomLevelAccelStruct(bottomLevel.get());
-    }
-    rhi::rt::InstanceDesc d;
-    placement_->meshTlasInstanceToWorld.push_back(inst.transform);
-    d.transform = toAffine(toRenderSpace * inst.transform);
-    d.instanceID = gpuIndex;
-    d.flags = rhi::rt::InstanceTriangleCullDisable;
-    d.bottomLevelAddress = bottomLevel->deviceAddress();
-    tlasInstances.push_back(d);
-  }
-  uploadImplicits(scene, tlasInstances);
-  placement_->tlasInstances = tlasInstances;
-  cmd->endTimerQuery(bottomLevelTimer.get());
-  rhi::rt::AccelStructDesc tlas;
-  tlas.isTopLevel = true;
-  tlas.topLevelMaxInstances = uint32_t(tlasInstances.size());
-  tlas.debugName = "TLAS " + scene.name;
-  s.topLevel = device_.createAccelStruct(tlas);
-  cmd->beginTimerQuery(topLevelTimer.get());
-  cmd->buildTopLevelAccelStruct(s.topLevel.get(), tlasInstances.data(),
-                                uint32_t(tlasInstances.size()));
-  cmd->endTimerQuery(topLevelTimer.get());
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
-  accelStructBuildTimes_.bottomLevelSeconds = device_.timerQuerySeconds(bottomLevelTimer.get());
-  accelStructBuildTimes_.topLevelSeconds = device_.timerQuerySeconds(topLevelTimer.get());
-}
-
-// Records the open command list's BLAS builds; appends one TLAS instance per
-// implicit family present (implicit_geometry.h).
-void PathTracer::uploadImplicits(const scene::Scene& scene,
-                                 std::vector<rhi::rt::InstanceDesc>& tlasInstances) {
-  auto& s = *scene_;
-  placement_->implicits = scene.implicits;
-  placement_->firstImplicitInstance = uint32_t(scene.instances.size());
-  const ImplicitLayout layout = implicitLayoutInRenderSpace();
-  s.implicits = makeStorageBuffer(device_, layout.data, rhi::BufferUsage::None, "implicit objects");
-  s.implicitAabbs = makeStorageBuffer(device_, layout.aabbs,
-                                      rhi::BufferUsage::AccelStructBuildInput, "implicit AABBs");
-  // The full pipeline holds every family's hit group, in enum order, whether
-  // the scene uses it or not; a specialized one only the families present.
-  if (pipelineEffects_ == uint32_t(PT_EFFECTS_ALL))
-    for (uint32_t f = 0; f < kImplicitFamilyCount; ++f)
-      s.implicitFamilies.push_back(ImplicitFamily(f));
-  else
-    for (const auto& range : layout.families) s.implicitFamilies.push_back(range.family);
-  if (layout.data.empty()) return;
-  auto* cmd = commandList_.get();
-  cmd->writeBuffer(s.implicits.get(), layout.data.data(),
-                   layout.data.size() * sizeof(gpu::ImplicitData));
-  cmd->writeBuffer(s.implicitAabbs.get(), layout.aabbs.data(),
-                   layout.aabbs.size() * sizeof(layout.aabbs[0]));
-  for (const auto& range : layout.families) {
-    rhi::rt::AccelStructDesc blas;
-    blas.debugName = std::string("BLAS ") + implicitHitGroupName(range.family);
-    rhi::rt::GeometryDesc geo;
-    geo.type = rhi::rt::GeometryType::AABBs;
-    geo.flags = rhi::rt::GeometryFlags::Opaque;
-    geo.aabbs.buffer = s.implicitAabbs.get();
-    geo.aabbs.offset = uint64_t(range.firstObject) * sizeof(layout.aabbs[0]);
-    geo.aabbs.count = range.objectCount;
-    geo.aabbs.stride = sizeof(layout.aabbs[0]);
-    blas.bottomLevelGeometries.push_back(geo);
-    s.implicitBottomLevels.push_back(device_.createAccelStruct(blas));
-    cmd->buildBottomLevelAccelStruct(s.implicitBottomLevels.back().get());
-
-    rhi::rt::InstanceDesc d;  // identity: each object's transform is in its ImplicitData
-    d.instanceID = range.firstObject;
-    d.instanceMask = 0xff;
-    const auto slot = std::find(s.implicitFamilies.begin(), s.implicitFamilies.end(), range.family);
-    d.instanceContributionToHitGroupIndex = 1 + uint32_t(slot - s.implicitFamilies.begin());
-    d.bottomLevelAddress = s.implicitBottomLevels.back()->deviceAddress();
-    tlasInstances.push_back(d);
-  }
-}
-
-PathTracer::RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGeneration) {
-  RayGenerationPipeline& p = pipelines_[int(rayGeneration)];
-  if (p.pipeline) return p;
-  static const char* const kNames[] = {"path_trace.rgen", "path_trace.rgen", "whitted.rgen",
-                                       "probe.rgen"};
-  const char* rayGen = kNames[int(rayGeneration)];
-  // The shading ray-generation shaders are what the effect set specializes;
-  // their export names stay the plain ones.
-  const uint32_t variant =
-      pipelineEffects_ | (rayGeneration == RayGeneration::PathWithGuides ? PT_OUTPUT_GUIDES : 0u);
-  rhi::ShaderDesc rayGenShader = rayGeneration == RayGeneration::Probe
-                                     ? shaders::shaderDesc(rayGen)
-                                     : shaders::shaderDesc(effectVariant(rayGen, variant));
-  rayGenShader.exportName = rayGen;
-
-  rhi::RayTracingPipelineDesc desc;
-  desc.debugName = fmt::format("{} (effects {:#x})", rayGen, pipelineEffects_);
-  desc.shaders = {rayGenShader, shaders::shaderDesc("path_trace.rmiss"),
-                  shaders::shaderDesc("triangle.rchit")};
-  // One hit group per geometry kind, for radiance and shadow rays alike
-  // (PT_RAY_CONTRIBUTION). The triangles' comes first, with the alpha
-  // any-hit when the scene has alpha-cut materials; then each implicit
-  // family the scene uses, in the order of the TLAS instances' hit-group
-  // offsets: a pipeline holds only the intersection shaders of the geometry
-  // its scene contains.
-  const bool alphaMask = (pipelineEffects_ & PT_EFFECT_ALPHA_MASK) != 0;
-  desc.hitGroups = {
-      {"triangles", "triangle.rchit", alphaMask ? "triangle_alpha.rahit" : "", "", false}};
-  if (alphaMask) desc.shaders.push_back(shaders::shaderDesc("triangle_alpha.rahit"));
-  if (!scene_->implicitFamilies.empty())
-    desc.shaders.push_back(shaders::shaderDesc("implicit.rchit"));
-  for (ImplicitFamily family : scene_->implicitFamilies) {
-    const std::string name = implicitHitGroupName(family);
-    desc.shaders.push_back(shaders::shaderDesc(implicitIntersectionShader(family)));
-    desc.hitGroups.push_back(
-        {name, "implicit.rchit", "", implicitIntersectionShader(family), true});
-  }
-  desc.maxPayloadBytes = sizeof(gpu::HitRecord);
-  desc.maxAttributeBytes = sizeof(gpu::ImplicitAttributes);
-  desc.maxRecursionDepth = 1;  // only the ray generation shader traces
-  const auto start = std::chrono::steady_clock::now();
-  p.pipeline = device_.createRayTracingPipeline(desc);
-  pipelineCreationSeconds_ +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  p.table = p.pipeline->createShaderTable(std::string(rayGen) + " shader table");
-  p.table->setRayGenerationShader(rayGen);
-  p.table->addMissShader("path_trace.rmiss");  // miss index 0, for every ray
-  for (const auto& group : desc.hitGroups) p.table->addHitGroup(group.exportName);
+const RayGenerationPipeline& PathTracer::pipelineFor(RayGeneration rayGeneration) {
+  const int i = int(rayGeneration);
+  if (pipelines_[i].pipeline) return pipelines_[i];
+  pipelines_[i] = createRayGenerationPipeline(device_, rayGeneration, pipelineEffects_,
+                                              scene_->implicitFamilies());
+  pipelineCreationSeconds_ += pipelines_[i].creationSeconds;
   if (rayGeneration != RayGeneration::Probe)
-    p.bindings = createBindings(*p.pipeline, nullptr, nullptr, "path tracer bindings");
-  return p;
+    bindings_[i] =
+        createBindings(*pipelines_[i].pipeline, nullptr, nullptr, "path tracer bindings");
+  return pipelines_[i];
 }
 
 rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline& pipeline,
@@ -705,95 +159,42 @@ rhi::BindingSetHandle PathTracer::createBindings(const rhi::IRayTracingPipeline&
                                                  const rhi::BufferHandle& probeHits,
                                                  const char* name) {
   using Item = rhi::BindingSetItem;
-  std::vector<Item> items = {Item::accelStructure(PT_SLOT_SCENE, scene_->topLevel),
-                             Item::storageBuffer(PT_SLOT_VERTICES, scene_->vertices),
-                             Item::storageBuffer(PT_SLOT_INDICES, scene_->indices),
-                             Item::storageBuffer(PT_SLOT_INSTANCES, scene_->instances),
-                             Item::storageBuffer(PT_SLOT_MATERIALS, scene_->materials),
-                             Item::storageBuffer(PT_SLOT_EMISSIVE_TRIANGLES, scene_->emissive),
-                             Item::storageBuffer(PT_SLOT_POINT_LIGHTS, scene_->pointLights),
-                             Item::storageBuffer(PT_SLOT_NORMALS, scene_->normals),
-                             Item::storageBuffer(PT_SLOT_TANGENTS, scene_->tangents),
-                             Item::storageBuffer(PT_SLOT_TEXCOORDS, scene_->texcoords),
-                             Item::storageBuffer(PT_SLOT_IMPLICITS, scene_->implicits),
-                             Item::storageBuffer(PT_SLOT_TEXTURE_REFS, scene_->textureRefs),
-                             Item::storageBuffer(PT_SLOT_ENVIRONMENT_INFO, scene_->environmentInfo),
-                             Item::storageBuffer(PT_SLOT_ENVIRONMENT, scene_->environmentTexels),
-                             Item::storageBuffer(PT_SLOT_ENVIRONMENT_CDF, scene_->environmentCdf),
-                             Item::sampledTextures(PT_SLOT_TEXTURES, scene_->textures.textures),
-                             Item::samplers(PT_SLOT_SAMPLERS, scene_->textures.samplers),
-                             Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
+  std::vector<Item> items = scene_->bindingItems();
+  items.insert(items.end(), {Item::storageTexture(PT_SLOT_ACCUMULATION, accumulation_),
                              Item::storageTexture(PT_SLOT_GUIDE_ALBEDO, guides_.albedo),
                              Item::storageTexture(PT_SLOT_GUIDE_NORMAL_DEPTH, guides_.normalDepth),
                              Item::storageTexture(PT_SLOT_GUIDE_EMISSION, guides_.emission),
                              Item::storageTexture(PT_SLOT_GUIDE_MOMENTS, guides_.moments),
-                             Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)};
+                             Item::storageBuffer(PT_SLOT_RAY_COUNTER, rayCounter_)});
   if (probeRays) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_RAYS, probeRays));
   if (probeHits) items.push_back(Item::storageBuffer(PT_SLOT_PROBE_HITS, probeHits));
-  // Bind what this pipeline's shaders declare (each ray-generation shader
-  // declares its own outputs).
-  const auto& declared = pipeline.bindingLayout().spaces.at(0).items;
-  rhi::BindingSetDesc set;
-  set.debugName = name;
-  for (const auto& item : items)
-    if (std::any_of(declared.begin(), declared.end(),
-                    [&](const auto& d) { return d.slot == item.slot; }))
-      set.items.push_back(item);
-  return device_.createBindingSet(set, pipeline);
+  return createDeclaredBindings(device_, pipeline, items, name);
+}
+
+const glm::dvec3& PathTracer::renderOrigin() const {
+  return scene_->renderOrigin();
+}
+
+glm::dmat4 PathTracer::worldToRenderSpace() const {
+  return scene_->worldToRenderSpace();
+}
+
+uint32_t PathTracer::emissiveTriangleCount() const {
+  return scene_->emissiveTriangleCount();
+}
+
+const AccelStructBuildTimes& PathTracer::accelStructBuildTimes() const {
+  return scene_->accelStructBuildTimes();
 }
 
 void PathTracer::setCamera(const scene::Camera& camera) {
   scene::validateCamera(camera);
   camera_ = camera;
-  if (glm::length(camera.position - renderOrigin_) > kRebaseDistance)
-    rebase(renderOriginNear(camera.position));
+  if (glm::length(camera.position - scene_->renderOrigin()) > kRebaseDistance) {
+    scene_->rebase(renderOriginNear(camera.position));
+    ++rebaseCount_;
+  }
   resetAccumulation();
-}
-
-ImplicitLayout PathTracer::implicitLayoutInRenderSpace() const {
-  std::vector<scene::ImplicitObject> objects = placement_->implicits;
-  for (auto& object : objects) object.transform = worldToRenderSpace() * object.transform;
-  return layoutImplicits(objects, placement_->firstImplicitInstance);
-}
-
-void PathTracer::rebase(const glm::dvec3& origin) {
-  // Frames in flight still read the buffers and the TLAS rewritten here.
-  device_.waitForIdle();
-  renderOrigin_ = origin;
-  const glm::dmat4 toRenderSpace = worldToRenderSpace();
-  WorldPlacement& w = *placement_;
-  // The same computations as uploadScene's, so a rebased tracer renders
-  // exactly what one built with its camera here would.
-  std::vector<gpu::InstanceData> instances = w.instances;
-  for (size_t i = 0; i < w.meshInstanceToWorld.size(); ++i)
-    placeInstance(instances[i], toRenderSpace * w.meshInstanceToWorld[i]);
-  const EmitterTable emitterTable = placeEmitters(w.emitters, toRenderSpace);
-  const std::vector<gpu::EmissiveTriangle>& emissive = emitterTable.triangles;
-  emissiveTriangleCount_ = emitterTable.sampledCount;
-  std::vector<gpu::PointLight> pointLights;
-  for (const auto& l : w.pointLights) pointLights.push_back(packPointLight(l, renderOrigin_));
-  const ImplicitLayout implicits = implicitLayoutInRenderSpace();
-  for (size_t i = 0; i < w.meshTlasInstanceToWorld.size(); ++i)
-    w.tlasInstances[i].transform = toAffine(toRenderSpace * w.meshTlasInstanceToWorld[i]);
-
-  auto& s = *scene_;
-  auto* cmd = commandList_.get();
-  cmd->open();
-  writeAll(*cmd, s.instances, instances);
-  writeAll(*cmd, s.emissive, emissive);
-  writeAll(*cmd, s.pointLights, pointLights);
-  writeAll(*cmd, s.implicits, implicits.data);
-  writeAll(*cmd, s.implicitAabbs, implicits.aabbs);
-  // In place: the binding sets keep pointing at the same TLAS, and the
-  // meshes' BLASes are not touched.
-  for (auto& bottomLevel : s.implicitBottomLevels)
-    cmd->buildBottomLevelAccelStruct(bottomLevel.get());
-  cmd->buildTopLevelAccelStruct(s.topLevel.get(), w.tlasInstances.data(),
-                                uint32_t(w.tlasInstances.size()));
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
-  ++rebaseCount_;
 }
 
 bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) {
@@ -807,15 +208,7 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
                       "when the scene is uploaded",
                       materials[i].name));
   materials_ = materials;
-  std::vector<gpu::MaterialData> packed;
-  for (const auto& m : materials_) packed.push_back(packMaterial(m));
-  auto* cmd = commandList_.get();
-  cmd->open();
-  cmd->writeBuffer(scene_->materials.get(), packed.data(),
-                   packed.size() * sizeof(gpu::MaterialData));
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
+  scene_->writeMaterials(materials_);
   resetAccumulation();
 
   // Emission is unchanged, so only the material bits can differ.
@@ -832,6 +225,7 @@ bool PathTracer::rebuildPipelinesFor(uint32_t effects) {
   pipelineEffects_ = effects;
   // Pipelines of the old effect set go; each is rebuilt when next used.
   for (auto& p : pipelines_) p = RayGenerationPipeline{};
+  for (auto& b : bindings_) b.reset();
   pipelineFor(RayGeneration::Path);
   return true;
 }
@@ -900,7 +294,7 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
     throw Error(fmt::format("path tracer: {} samples per frame is outside 1..{}", samples,
                             kMaxSamplesPerFrame));
   gpu::FrameConstants c;
-  const CameraFrame camera = cameraFrame(camera_, width_, height_, renderOrigin_);
+  const CameraFrame camera = cameraFrame(camera_, width_, height_, scene_->renderOrigin());
   c.cameraPosition = camera.position;
   c.cameraRight = camera.right;
   c.cameraUp = camera.up;
@@ -913,16 +307,18 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
     sceneFlags |= PT_SCENE_ENVIRONMENT;
     if (environment_.visibleBackground) sceneFlags |= PT_SCENE_BACKGROUND;
   }
-  c.lights = {emissiveTriangleCount_, pointLightCount_, firstSample_, sceneFlags};
+  c.lights = {scene_->emissiveTriangleCount(), scene_->pointLightCount(), firstSample_, sceneFlags};
   c.shading = toFloat4(ambient_, settings.radianceClamp);
 
   // One counter serves every frame: the queue runs the frames' clear,
   // dispatch and copy in order, and each frame copies it to its own readback.
   cmd.clearBufferUint(rayCounter_.get(), 0);
-  auto& p = pipelineFor(settings.integrator == Integrator::Whitted ? RayGeneration::Whitted
-                        : settings.writeGuides                     ? RayGeneration::PathWithGuides
-                                                                   : RayGeneration::Path);
-  cmd.setRayTracingState({p.pipeline.get(), p.table.get(), {p.bindings.get()}});
+  const RayGeneration rayGeneration = settings.integrator == Integrator::Whitted
+                                          ? RayGeneration::Whitted
+                                      : settings.writeGuides ? RayGeneration::PathWithGuides
+                                                             : RayGeneration::Path;
+  auto& p = pipelineFor(rayGeneration);
+  cmd.setRayTracingState({p.pipeline.get(), p.table.get(), {bindings_[int(rayGeneration)].get()}});
   cmd.setPushConstants(&c, sizeof(c));
   cmd.beginTimerQuery(queries.timer.get());
   cmd.dispatchRays(width_, height_);

@@ -1,21 +1,22 @@
 #pragma once
-// The path tracer on top of the RHI: uploads a scene (one BLAS per mesh, one
-// TLAS instance per scene instance; implicit objects as in
-// implicit_geometry.h), builds the ray-tracing pipeline of the
-// shading core, and accumulates frames of 1-16 samples per pixel into a
-// linear HDR running mean.
+// The path tracer on top of the RHI: a thin renderer that sequences frames.
+// It holds the scene on the GPU (render/gpu_scene.h), one pipeline per
+// ray-generation shader (render/ray_generation_pipeline.h), built for the
+// effects the scene calls for (render/effect_set.h), the camera, and the
+// accumulation: frames of 1-16 samples per pixel averaged into a linear HDR
+// running mean, with the denoiser's guide buffers beside it.
 #include <glm/glm.hpp>
 #include <memory>
 #include <vector>
 
 #include "image/image.h"
 #include "path_tracer_shared.h"
+#include "render/gpu_scene.h"
+#include "render/ray_generation_pipeline.h"
 #include "rhi/rhi.h"
 #include "scene/scene.h"
 
 namespace penumbra::render {
-
-struct ImplicitLayout;  // render/implicit_geometry.h
 
 enum class Integrator { Path, Whitted };
 
@@ -58,14 +59,6 @@ struct PipelineOptions {
   bool allEffects = false;
 };
 
-// GPU time of the scene's acceleration-structure builds (timestamps around
-// them): every BLAS (meshes, and the implicit objects' AABBs with their small
-// uploads), then the TLAS.
-struct AccelStructBuildTimes {
-  double bottomLevelSeconds = 0;
-  double topLevelSeconds = 0;
-};
-
 struct FrameStats {
   double gpuSeconds = 0;  // GPU timestamps around the dispatch
   uint64_t rays = 0;      // every traced ray (camera, bounce, shadow), counted on the GPU
@@ -92,9 +85,6 @@ CameraFrame cameraFrame(const scene::Camera& camera, uint32_t width, uint32_t he
 
 // FrameConstants.sampling.w for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);
-
-// The GPU form of a scene material (path_tracer_shared.h).
-gpu::MaterialData packMaterial(const scene::Material& material);
 
 // A world-space ray for PathTracer::traceProbeRays.
 struct ProbeRay {
@@ -212,49 +202,31 @@ class PathTracer {
   bool guidesWritten() const { return guidesWritten_; }
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
-  uint32_t emissiveTriangleCount() const { return emissiveTriangleCount_; }
+  uint32_t emissiveTriangleCount() const;
   // Where render space's origin lies in the world: near the camera's position
   // when the scene was uploaded (a 64 m grid point). The GPU sees every
   // position relative to it, so floats are precise near the camera however
   // far from the world's origin the scene is (docs/ARCHITECTURE.md,
   // "Precision").
-  const glm::dvec3& renderOrigin() const { return renderOrigin_; }
+  const glm::dvec3& renderOrigin() const;
   glm::dmat4 worldToRenderSpace() const;
   // The PT_EFFECT_* bits the scene calls for, and those the pipeline holds.
   uint32_t sceneEffects() const { return sceneEffects_; }
   uint32_t pipelineEffects() const { return pipelineEffects_; }
   // CPU time spent creating ray-tracing pipelines so far (compiling shaders).
   double pipelineCreationSeconds() const { return pipelineCreationSeconds_; }
-  const AccelStructBuildTimes& accelStructBuildTimes() const { return accelStructBuildTimes_; }
+  const AccelStructBuildTimes& accelStructBuildTimes() const;
 
  private:
-  struct SceneBuffers;
-  struct WorldPlacement;
-  void uploadScene(const scene::Scene& scene);
-  void rebase(const glm::dvec3& origin);
-  ImplicitLayout implicitLayoutInRenderSpace() const;
-  void uploadImplicits(const scene::Scene& scene,
-                       std::vector<rhi::rt::InstanceDesc>& tlasInstances);
   void createAccumulation();
-  void uploadEnvironment();
-  void writeEnvironmentPlacement();
+  // New binding sets for the pipelines built (the images or the scene's
+  // buffers changed).
   void rebuildBindings();
   // Drops the pipelines if they were built for other effects (PT_EFFECT_*)
   // and builds the path tracer's for these; whether it did.
   bool rebuildPipelinesFor(uint32_t effects);
-  // One pipeline per ray-generation shader, created on first use: drivers
-  // compile every hit and intersection shader into each ray-generation shader
-  // of a pipeline, so a pipeline holding all three costs three times as much
-  // to build as the one a render needs.
-  // The path tracer's comes in two: with and without the code that writes
-  // the guide buffers (PT_OUTPUT_GUIDES).
-  enum class RayGeneration { Path, PathWithGuides, Whitted, Probe };
-  struct RayGenerationPipeline {
-    rhi::RayTracingPipelineHandle pipeline;
-    rhi::ShaderTableHandle table;
-    rhi::BindingSetHandle bindings;  // for rendering; the probe binds its own
-  };
-  RayGenerationPipeline& pipelineFor(RayGeneration rayGeneration);
+  // Created on first use (render/ray_generation_pipeline.h says why).
+  const RayGenerationPipeline& pipelineFor(RayGeneration rayGeneration);
   rhi::BindingSetHandle createBindings(const rhi::IRayTracingPipeline& pipeline,
                                        const rhi::BufferHandle& probeRays,
                                        const rhi::BufferHandle& probeHits, const char* name);
@@ -263,29 +235,24 @@ class PathTracer {
   uint32_t width_, height_;
   PipelineOptions options_;
   scene::Camera camera_;
-  glm::dvec3 renderOrigin_;
+  scene::Environment environment_;
+  glm::vec3 ambient_{0.0f};
   std::vector<scene::Material> materials_;
-  std::vector<uint32_t> drawnMaterials_;      // materials of instances and implicit objects
-  std::vector<uint32_t> gpuToSceneInstance_;  // InstanceData order (meshInstanceOrder)
+  std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
   uint32_t accumulatedSamples_ = 0;
   bool guidesWritten_ = false;
   uint32_t firstSample_ = 0;
   uint64_t accumulationGeneration_ = 0;
-  uint32_t emissiveTriangleCount_ = 0;
-  uint32_t pointLightCount_ = 0;
   uint32_t sceneEffects_ = 0;
   uint32_t pipelineEffects_ = 0;
   double pipelineCreationSeconds_ = 0;
-  AccelStructBuildTimes accelStructBuildTimes_;
-  glm::vec3 ambient_{0.0f};
-  scene::Environment environment_;
-  std::unique_ptr<SceneBuffers> scene_;
-  std::unique_ptr<WorldPlacement> placement_;
   uint32_t rebaseCount_ = 0;
+  std::unique_ptr<GpuScene> scene_;
   rhi::TextureHandle accumulation_;
   GuideBuffers guides_;
   rhi::BufferHandle rayCounter_;
-  RayGenerationPipeline pipelines_[4];
+  RayGenerationPipeline pipelines_[kRayGenerationCount];
+  rhi::BindingSetHandle bindings_[kRayGenerationCount];  // for rendering; the probe binds its own
   rhi::CommandListHandle commandList_;
   FrameQueries ownFrame_;  // renderFrame's
 };

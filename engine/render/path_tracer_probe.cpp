@@ -16,12 +16,13 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   constexpr size_t kMaxRays = 1u << 22;
   if (rays.size() > kMaxRays)
     throw Error(fmt::format("path tracer: {} probe rays is more than {}", rays.size(), kMaxRays));
+  const glm::dvec3& origin = scene_->renderOrigin();
   std::vector<gpu::ProbeRay> packed;
   packed.reserve(rays.size());
   // Rays and hits are world space here, render space on the GPU.
   for (const auto& r : rays)
-    packed.push_back({{float(r.origin.x - renderOrigin_.x), float(r.origin.y - renderOrigin_.y),
-                       float(r.origin.z - renderOrigin_.z), r.tMax},
+    packed.push_back({{float(r.origin.x - origin.x), float(r.origin.y - origin.y),
+                       float(r.origin.z - origin.z), r.tMax},
                       {r.direction.x, r.direction.y, r.direction.z, 0.0f}});
 
   rhi::BufferDesc desc;
@@ -57,12 +58,13 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   hits.reserve(results.size());
   for (const auto& r : results) {
     SurfaceHit h;
-    h.position = glm::vec3(glm::dvec3(r.position.x, r.position.y, r.position.z) + renderOrigin_);
+    h.position = glm::vec3(glm::dvec3(r.position.x, r.position.y, r.position.z) + origin);
     h.hitT = r.position.w;
     h.geometricNormal = {r.normal.x, r.normal.y, r.normal.z};
     // The GPU orders mesh instances its own way (meshInstanceOrder);
     // implicit objects follow them in both orders.
-    h.instanceIndex = r.ids.x < gpuToSceneInstance_.size() ? gpuToSceneInstance_[r.ids.x] : r.ids.x;
+    const auto& toScene = scene_->gpuToSceneInstance();
+    h.instanceIndex = r.ids.x < toScene.size() ? toScene[r.ids.x] : r.ids.x;
     h.primitiveIndex = r.ids.y;
     hits.push_back(h);
   }
