@@ -242,8 +242,11 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   fmt::print("pipeline effects: {}{}\n", effects.empty() ? "none" : effects,
              job.allEffects ? " (--all-effects)" : "");
   render::PathTracerSettings settings = job.settings;
-  // The guide buffers are what the denoiser and the AOVs read.
-  settings.writeGuides = o.denoise != render::DenoiseMode::Off || !aovs.empty();
+  // The guide buffers are what the denoiser and the AOVs read; a record of
+  // frames that wrote them (a viewer screenshot taken while denoising) asks
+  // for them too, to render those frames again exactly.
+  settings.writeGuides =
+      job.settings.writeGuides || o.denoise != render::DenoiseMode::Off || !aovs.empty();
 
   std::unique_ptr<render::Denoiser> denoiser;
   render::DenoiserSettings denoise;

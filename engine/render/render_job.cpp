@@ -345,6 +345,10 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["rouletteStartDepth"] = s.rouletteStartDepth;
   doc["radianceClamp"] = s.radianceClamp;
   doc["seed"] = s.seed;
+  // Whether the frames also wrote the denoiser's guide buffers: that is
+  // another pipeline variant (PT_OUTPUT_GUIDES), whose code a GPU compiler
+  // may contract differently, so reproducing a frame bit for bit takes it.
+  doc["guides"] = s.writeGuides;
   doc["exposure"] = job.toneMapping.exposure;
   doc["toneMapping"] = toneMapOperatorName(job.toneMapping.toneOperator);
   doc["allEffects"] = job.allEffects;
@@ -424,6 +428,7 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
   r.read("rouletteStartDepth", s.rouletteStartDepth);
   r.read("radianceClamp", s.radianceClamp);
   r.read("seed", s.seed);
+  r.read("guides", s.writeGuides);
   r.read("exposure", job.toneMapping.exposure);
   r.readEnum("toneMapping", job.toneMapping.toneOperator, &parseToneMapOperator);
   r.read("allEffects", job.allEffects);

@@ -92,6 +92,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   t.rouletteStartDepth = 5;
   t.radianceClamp = 4.5f;
   t.seed = 99;
+  t.writeGuides = true;
   job.toneMapping.exposure = 0.75f;
   job.toneMapping.toneOperator = render::ToneMapOperator::AcesFitted;
   job.allEffects = true;
@@ -124,6 +125,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   CHECK(back.settings.rouletteStartDepth == t.rouletteStartDepth);
   CHECK(back.settings.radianceClamp == t.radianceClamp);
   CHECK(back.settings.seed == t.seed);
+  CHECK(back.settings.writeGuides == t.writeGuides);
   CHECK(back.toneMapping.exposure == job.toneMapping.exposure);
   CHECK(back.toneMapping.toneOperator == job.toneMapping.toneOperator);
   CHECK(back.allEffects == job.allEffects);
