@@ -43,6 +43,7 @@ BookmarkStore::BookmarkStore(std::string path) : path_(std::move(path)) {
         bookmark.camera.forward = vec3(c.at("forward"));
         bookmark.camera.up = vec3(c.at("up"));
         bookmark.camera.verticalFovDegrees = c.at("verticalFovDegrees").get<float>();
+        bookmark.camera.aspectRatio = c.value("aspectRatio", 0.0f);
         entries_.emplace_back(scene, bookmark);
       }
   } catch (const json::exception& e) {
@@ -79,7 +80,8 @@ void BookmarkStore::write() const {
                                         {{"position", vec3(b.camera.position)},
                                          {"forward", vec3(b.camera.forward)},
                                          {"up", vec3(b.camera.up)},
-                                         {"verticalFovDegrees", b.camera.verticalFovDegrees}}}});
+                                         {"verticalFovDegrees", b.camera.verticalFovDegrees},
+                                         {"aspectRatio", b.camera.aspectRatio}}}});
   std::error_code ec;
   const auto dir = std::filesystem::path(path_).parent_path();
   if (!dir.empty()) std::filesystem::create_directories(dir, ec);

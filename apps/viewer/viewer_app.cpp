@@ -452,17 +452,19 @@ void Viewer::renderFrame() {
     tracingMs_.push_back(lastStats_.gpuSeconds * 1e3);
   }
   frameQueries_[slot].samples = 0;
-  if (denoiseTimed_.size() != frameLists_.size()) {
-    denoiseTimed_.assign(frameLists_.size(), false);
-    denoiseTimers_.clear();
-    for (size_t i = 0; i < frameLists_.size(); ++i)
-      denoiseTimers_.push_back(device_->createTimerQuery());
+  for (PassTimer& timer : passTimers_) {
+    if (timer.queries.size() != frameLists_.size()) {
+      timer.recorded.assign(frameLists_.size(), false);
+      timer.queries.clear();
+      for (size_t i = 0; i < frameLists_.size(); ++i)
+        timer.queries.push_back(device_->createTimerQuery());
+    }
+    if (timer.recorded[slot]) {
+      timer.lastSeconds = device_->timerQuerySeconds(timer.queries[slot].get());
+      timer.milliseconds.push_back(timer.lastSeconds * 1e3);
+    }
+    timer.recorded[slot] = false;
   }
-  if (denoiseTimed_[slot]) {
-    lastDenoiseSeconds_ = device_->timerQuerySeconds(denoiseTimers_[slot].get());
-    denoisingMs_.push_back(lastDenoiseSeconds_ * 1e3);
-  }
-  denoiseTimed_[slot] = false;
 
   // The temporal denoiser integrates frames itself: until its history is
   // full, each frame starts a new mean; then the tracer accumulates.
@@ -498,10 +500,18 @@ void Viewer::renderFrame() {
           ? render::DisplayChannels::Signed
       : settings_.view == ViewBuffer::Depth ? render::DisplayChannels::Alpha
                                             : render::DisplayChannels::Color;
+  rhi::ITimerQuery* displayQuery = passQuery(DisplayPass, slot);
+  list.beginTimerQuery(displayQuery);
   display_->record(list, shown, displayTexture_, settings_.toneMapping, channels);
+  list.endTimerQuery(displayQuery);
   if (settings_.showUi) {
     list.setTextureState(displayTexture_.get(), rhi::ResourceState::RenderTarget);
+    rhi::ITimerQuery* uiQuery = passQuery(UiPass, slot);
+    list.beginTimerQuery(uiQuery);
     ui_->render(list, *displayTexture_);
+    list.endTimerQuery(uiQuery);
+  } else {
+    passTimers_[UiPass].lastSeconds = 0;
   }
   if (capturing) list.copyTextureToBuffer(displayTexture_.get(), captureBuffer_.get());
   if (backBuffer) {
@@ -523,6 +533,11 @@ void Viewer::renderFrame() {
   }
 }
 
+rhi::ITimerQuery* Viewer::passQuery(Pass pass, size_t slot) {
+  passTimers_[pass].recorded[slot] = true;
+  return passTimers_[pass].queries[slot].get();
+}
+
 void Viewer::saveCapture(const std::string& path) {
   const auto& d = displayTexture_->desc();
   image::Image8 shown;
@@ -542,11 +557,13 @@ void Viewer::printTimings() const {
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
     return v[v.size() / 2];
   };
-  fmt::print(
-      "timings: {} frames; path tracing {:.3f} ms/frame (median of {}); denoiser {:.3f} "
-      "ms/frame (median of {})\n",
-      frameNumber_, median(tracingMs_), tracingMs_.size(), median(denoisingMs_),
-      denoisingMs_.size());
+  auto pass = [&](const char* name, const std::vector<double>& ms) {
+    return fmt::format("{} {:.3f} ms/frame (median of {})", name, median(ms), ms.size());
+  };
+  fmt::print("timings: {} frames; {}; {}; {}; {}\n", frameNumber_, pass("path tracing", tracingMs_),
+             pass("denoiser", passTimers_[DenoisePass].milliseconds),
+             pass("display", passTimers_[DisplayPass].milliseconds),
+             pass("UI", passTimers_[UiPass].milliseconds));
   std::fflush(stdout);
 }
 
@@ -574,15 +591,15 @@ const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t
     const bool accumulationAhead = samples >= d.maxHistory * settings_.samplesPerFrame;
     if (temporal) {
       d.mode = render::DenoiseMode::Svgf;
-      denoiser_->record(list, *tracer_, tracer_->camera(), samples, d, denoiseTimers_[slot].get());
-      denoiseTimed_[slot] = true;
+      denoiser_->record(list, *tracer_, tracer_->camera(), samples, d,
+                        passQuery(DenoisePass, slot));
       temporalShown_ = true;
       denoised = true;
     } else if (settings_.denoise == render::DenoiseMode::Atrous || accumulationAhead ||
                !temporalShown_) {
       d.mode = render::DenoiseMode::Atrous;
-      denoiser_->record(list, *tracer_, tracer_->camera(), samples, d, denoiseTimers_[slot].get());
-      denoiseTimed_[slot] = true;
+      denoiser_->record(list, *tracer_, tracer_->camera(), samples, d,
+                        passQuery(DenoisePass, slot));
       temporalShown_ = false;
       denoised = true;
     } else {
@@ -591,7 +608,7 @@ const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t
   } else {
     temporalShown_ = false;
   }
-  if (!denoised) lastDenoiseSeconds_ = 0;
+  if (!denoised) passTimers_[DenoisePass].lastSeconds = 0;
   const auto& g = tracer_->guides();
   switch (settings_.view) {
     case ViewBuffer::Image:

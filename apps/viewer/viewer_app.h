@@ -102,7 +102,7 @@ class Viewer {
   rhi::TextureHandle displayTexture_;               // tone-mapped image + UI: what the window shows
   rhi::BufferHandle captureBuffer_;                 // its readback, for capture and --record
   std::vector<std::string> pendingCaptures_;        // captures asked for this frame
-  std::vector<double> tracingMs_, denoisingMs_;     // per frame shown, for printTimings
+  std::vector<double> tracingMs_;                   // per frame shown, for printTimings
   uint64_t frameNumber_ = 0;
 
   std::string sceneName_;
@@ -117,9 +117,19 @@ class Viewer {
   scene::Scene scene_;
   std::unique_ptr<render::PathTracer> tracer_;
   std::unique_ptr<render::Denoiser> denoiser_;
-  std::vector<rhi::TimerQueryHandle> denoiseTimers_;  // per frame slot
-  std::vector<bool> denoiseTimed_;                    // per frame slot: its timer holds a frame
-  double lastDenoiseSeconds_ = 0;
+  // GPU time of each pass after path tracing (whose time the tracer's frame
+  // queries hold), per frame slot: a slot's queries are read when the slot
+  // is recorded again, once its previous frame has finished.
+  enum Pass { DenoisePass, DisplayPass, UiPass, kPassCount };
+  struct PassTimer {
+    std::vector<rhi::TimerQueryHandle> queries;  // per frame slot
+    std::vector<bool> recorded;                  // per frame slot: its query holds a frame
+    double lastSeconds = 0;                      // the last frame's, 0 if the pass did not run
+    std::vector<double> milliseconds;            // every frame measured, for printTimings
+  };
+  PassTimer passTimers_[kPassCount];
+  // Reads the slot's finished queries; returns the query to record into.
+  rhi::ITimerQuery* passQuery(Pass pass, size_t slot);
   uint64_t seenGeneration_ = ~0ull;  // the tracer's accumulation generation last frame
   uint32_t stillFrames_ = 0;         // frames since the image last started over
   uint32_t temporalSamples_ = 0;     // the sample sequence of the temporal denoiser's frames

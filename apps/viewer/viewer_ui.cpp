@@ -311,7 +311,9 @@ void Viewer::drawStats() {
       lastStats_.gpuSeconds > 0 ? double(lastStats_.rays) / lastStats_.gpuSeconds * 1e-6 : 0.0);
   if (settings_.denoise != render::DenoiseMode::Off)
     ImGui::Text("denoiser (%s) GPU %.2f ms", render::denoiseModeName(settings_.denoise),
-                lastDenoiseSeconds_ * 1e3);
+                passTimers_[DenoisePass].lastSeconds * 1e3);
+  ImGui::Text("display GPU %.2f ms, UI GPU %.2f ms", passTimers_[DisplayPass].lastSeconds * 1e3,
+              passTimers_[UiPass].lastSeconds * 1e3);
   ImGui::Text("frame %.1f ms (%.1f fps)", frameSeconds_ * 1e3,
               frameSeconds_ > 0 ? 1.0 / frameSeconds_ : 0.0);
   ImGui::End();

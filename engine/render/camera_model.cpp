@@ -12,6 +12,10 @@ CameraModel cameraModel(const scene::Camera& camera, uint32_t width, uint32_t he
   m.up = glm::cross(m.right, m.forward);
   m.tanHalfFov = std::tan(glm::radians(double(camera.verticalFovDegrees)) * 0.5);
   m.aspect = double(width) / double(height);
+  // Narrower than the frame the camera was set up for: keep its horizontal
+  // field of view (scene::Camera::aspectRatio).
+  if (camera.aspectRatio > 0.0f && m.aspect < double(camera.aspectRatio))
+    m.tanHalfFov *= double(camera.aspectRatio) / m.aspect;
   m.width = width;
   m.height = height;
   return m;

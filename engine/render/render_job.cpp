@@ -327,6 +327,7 @@ std::string renderJobToJson(const RenderJob& job) {
                      {"forward", toJson(job.camera->forward)},
                      {"up", toJson(job.camera->up)},
                      {"verticalFovDegrees", job.camera->verticalFovDegrees},
+                     {"aspectRatio", job.camera->aspectRatio},
                      {"apertureRadius", job.camera->apertureRadius},
                      {"focusDistance", job.camera->focusDistance},
                      {"apertureBlades", job.camera->apertureBlades}};
@@ -402,7 +403,8 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
       camera.verticalFovDegrees = c["verticalFovDegrees"].get<float>();
     }
     for (auto [key, field] : {std::pair{"apertureRadius", &scene::Camera::apertureRadius},
-                              std::pair{"focusDistance", &scene::Camera::focusDistance}}) {
+                              std::pair{"focusDistance", &scene::Camera::focusDistance},
+                              std::pair{"aspectRatio", &scene::Camera::aspectRatio}}) {
       if (!c.contains(key)) continue;
       if (!c[key].is_number()) r.fail(std::string("camera.") + key, "must be a number");
       camera.*field = c[key].get<float>();

@@ -261,6 +261,10 @@ class Importer {
     c.camera.forward = glm::normalize(forward);
     c.camera.up = glm::normalize(up);
     c.camera.verticalFovDegrees = float(glm::degrees(yfov));
+    // The frame yfov was chosen for: a narrower image keeps its horizontal
+    // field of view (scene::Camera::aspectRatio).
+    const double aspect = src.perspective.aspectRatio;
+    if (aspect > 0.0 && std::isfinite(aspect)) c.camera.aspectRatio = float(aspect);
     cameras_.emplace_back(nodeIndex, std::move(c));
   }
 

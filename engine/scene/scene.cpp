@@ -96,6 +96,9 @@ float apertureRadiusForFNumber(float fNumber, float verticalFovDegrees) {
 }
 
 void validateCamera(const Camera& camera) {
+  if (!(camera.aspectRatio >= 0.0f) || !std::isfinite(camera.aspectRatio))
+    throw Error(fmt::format("camera: aspect ratio {} must be finite and >= 0 (0: none)",
+                            camera.aspectRatio));
   if (!(camera.apertureRadius >= 0.0f) || !std::isfinite(camera.apertureRadius))
     throw Error(fmt::format("camera: aperture radius {} must be finite and >= 0 (0: pinhole)",
                             camera.apertureRadius));

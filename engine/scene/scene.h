@@ -155,6 +155,13 @@ struct Camera {
   glm::vec3 forward{0.0f, 0.0f, 1.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float verticalFovDegrees = 45.0f;
+  // The width / height of the frame the field of view was chosen for (as
+  // glTF's aspectRatio). 0: none, the vertical field of view holds at every
+  // image aspect. Otherwise an image narrower than this keeps the frame's
+  // horizontal field of view instead (and shows more above and below), so a
+  // scene's content stays in view at any window shape; a wider one keeps
+  // the vertical field of view (and shows more at the sides).
+  float aspectRatio = 0.0f;
   // A thin lens: rays leave a disk of this radius (world units) about the
   // position and meet again on the plane `focusDistance` ahead along
   // forward, which is in focus. 0: a pinhole, everything sharp.

@@ -244,6 +244,7 @@ Scene parseScene(std::string_view text, const std::string& source,
         glm::normalize(readVec3(require(cam, "up", at + " camera"), at + " camera.up"));
     scene.camera.verticalFovDegrees =
         require(cam, "verticalFovDegrees", at + " camera").get<float>();
+    scene.camera.aspectRatio = cam.value("aspectRatio", 0.0f);
     scene.camera.apertureRadius = cam.value("apertureRadius", 0.0f) * scale;
     scene.camera.focusDistance = cam.value("focusDistance", 1.0f / scale) * scale;
     // An f-number instead of a radius: the radius is focal length / (2 N),

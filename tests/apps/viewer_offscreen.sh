@@ -13,7 +13,7 @@
 #    differ from the menu-less capture (the "Penumbra" and stats windows cover
 #    about a third of 320x240; a UI pass that draws nothing changes none);
 # 4. the denoiser runs offscreen (its GPU time is reported), --record writes
-#    one PNG per frame, and the run ends with the timings line;
+#    one PNG per frame, and the run ends with every pass's GPU time;
 # 5. bad use fails with one line: --offscreen without --script, a capture
 #    that is not a PNG.
 set -eu
@@ -63,8 +63,11 @@ grep -q "^screenshot: $work/off/shot.exr (320x240, 16 spp)" "$work/off.log" || f
 for f in shown menus denoised; do
   grep -q "^capture: $work/off/$f.png (320x240)$" "$work/off.log" || fail "no capture $f"
 done
-grep -Eq "^timings: [0-9]+ frames; path tracing [0-9.]+ ms/frame \(median of [0-9]+\); denoiser [0-9.]+ ms/frame \(median of [1-9][0-9]*\)$" \
-  "$work/off.log" || fail "no denoiser timings"
+# Every pass timed on the GPU: path tracing, the denoiser (on in the last
+# frames), the display pass, the UI (on from the menus capture on).
+n='[1-9][0-9]*'
+grep -Eq "^timings: [0-9]+ frames; path tracing [0-9.]+ ms/frame \(median of $n\); denoiser [0-9.]+ ms/frame \(median of $n\); display [0-9.]+ ms/frame \(median of $n\); UI [0-9.]+ ms/frame \(median of $n\)$" \
+  "$work/off.log" || fail "no per-pass timings"
 frames=$(sed -nE 's/^timings: ([0-9]+) frames.*/\1/p' "$work/off.log")
 recorded=$(ls "$work/frames" | grep -c '^frame-[0-9]\{6\}\.png$')
 [ "$recorded" -eq "$frames" ] || fail "--record wrote $recorded frames of $frames"

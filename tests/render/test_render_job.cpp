@@ -74,6 +74,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   camera.forward = {0.0f, -0.6f, 0.8f};
   camera.up = {0.0f, 0.8f, 0.6f};
   camera.verticalFovDegrees = 33.0f;
+  camera.aspectRatio = 2.25f;
   camera.apertureRadius = 0.015f;
   camera.focusDistance = 2.5f;
   camera.apertureBlades = 7;
@@ -109,6 +110,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   CHECK(back.camera->forward == camera.forward);
   CHECK(back.camera->up == camera.up);
   CHECK(back.camera->verticalFovDegrees == camera.verticalFovDegrees);
+  CHECK(back.camera->aspectRatio == camera.aspectRatio);
   CHECK(back.camera->apertureRadius == camera.apertureRadius);
   CHECK(back.camera->focusDistance == camera.focusDistance);
   CHECK(back.camera->apertureBlades == camera.apertureBlades);
