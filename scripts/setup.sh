@@ -27,8 +27,9 @@ BASE_PACKAGES=(
   # The viewer: GLFW (its native-window header needs Xrandr's), Dear ImGui
   # (core library + backend sources), and a virtual X server for its tests.
   libglfw3-dev libxrandr-dev libimgui-dev xvfb xauth
-  # The viewer's on-screen test: xwd captures the window, netpbm compares it.
-  x11-apps netpbm
+  # The viewer's on-screen test: xwd captures the window, netpbm compares it;
+  # xdotool sends the input tests' keyboard and mouse events.
+  x11-apps netpbm xdotool
   # The Windows cross build (scripts/build-windows-cross.sh): compiler, and
   # zlib for tinyexr; DirectX-Headers come from backports below.
   g++-mingw-w64-x86-64-posix libz-mingw-w64-dev
