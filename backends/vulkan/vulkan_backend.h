@@ -310,7 +310,11 @@ class VulkanDevice final : public rhi::IDevice {
   // transient resources waitForIdle may release.
   void forgetSubmitted(VulkanCommandList* list);
   double timerQuerySeconds(rhi::ITimerQuery* query) override;
-  uint64_t validationMessageCount() const override { return instance_->validationMessages(); }
+  // The instance is the process's (it outlives devices): this device's are
+  // those since it was created.
+  uint64_t validationMessageCount() const override {
+    return instance_->validationMessages() - validationBaseline_;
+  }
 
   VkDevice handle() const { return device_; }
   VkInstance instance() const { return instance_->handle(); }
@@ -339,6 +343,7 @@ class VulkanDevice final : public rhi::IDevice {
   double timestampPeriodNs_ = 1.0;
   uint32_t timestampValidBits_ = 64;
   bool canPresent_ = false;
+  uint64_t validationBaseline_ = 0;
   std::vector<VulkanCommandList*> inFlight_;
 };
 

@@ -25,6 +25,7 @@ bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
 VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalDevice physicalDevice,
                            rhi::AdapterInfo adapter, const rhi::NativeWindow& presentWindow)
     : instance_(std::move(instance)), physicalDevice_(physicalDevice), adapter_(std::move(adapter)) {
+  validationBaseline_ = instance_->validationMessages();
   uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
   std::vector<VkQueueFamilyProperties> families(familyCount);

@@ -1,6 +1,8 @@
 #include <fmt/format.h>
 
 #include <cstring>
+#include <map>
+#include <mutex>
 
 #include "util/error.h"
 #include "util/log.h"
@@ -198,13 +200,31 @@ std::vector<rhi::AdapterInfo> VulkanInstance::adapters() {
   return result;
 }
 
+std::shared_ptr<VulkanInstance> processInstance(bool validation, rhi::WindowSystem presentation) {
+  // One instance per kind for the whole process, created on first use: the
+  // NVIDIA driver (580) refuses vkCreateInstance after 30 instances were
+  // created and destroyed in one process (VK_ERROR_INCOMPATIBLE_DRIVER; no
+  // file descriptor, mapping or thread was left behind), which a viewer
+  // switching scenes, a long study or a farm worker would reach. Devices
+  // come and go; their instance stays (tests/rhi/test_device_lifetimes.cpp).
+  // Never destroyed: at exit the driver's own handlers may have run before
+  // a static's destructor (vkDestroyInstance then crashed in the NVIDIA
+  // driver), and the system reclaims what a process holds anyway.
+  static std::mutex mutex;
+  static auto* instances =
+      new std::map<std::pair<bool, rhi::WindowSystem>, std::shared_ptr<VulkanInstance>>;
+  std::lock_guard lock(mutex);
+  auto& instance = (*instances)[{validation, presentation}];
+  if (!instance) instance = std::make_shared<VulkanInstance>(validation, presentation);
+  return instance;
+}
+
 std::vector<rhi::AdapterInfo> listAdapters() {
-  auto instance = std::make_shared<VulkanInstance>(false, rhi::WindowSystem::None);
-  return instance->adapters();
+  return processInstance(false, rhi::WindowSystem::None)->adapters();
 }
 
 rhi::DeviceHandle createDevice(const rhi::DeviceCreateInfo& info) {
-  auto instance = std::make_shared<VulkanInstance>(info.validation, info.presentWindow.system);
+  auto instance = processInstance(info.validation, info.presentWindow.system);
   auto adapters = instance->adapters();
   auto physical = instance->physicalDevices();
   if (adapters.empty()) throw Error("vulkan: no Vulkan device found");
