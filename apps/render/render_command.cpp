@@ -54,6 +54,7 @@ struct RenderOptions {
   std::string vary;
   std::string set;
   bool allEffects = false;
+  bool allowExternalFiles = false;
   bool printEffects = false;
   float exposure = 1.0f;
   render::ToneMapOperator toneOperator = render::ToneMapOperator::Clamp;
@@ -189,7 +190,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   // Everything that can fail on bad input fails before any rendering starts.
   render::RenderJob job = makeJob(o, cmd);
   const uint32_t width = job.width, height = job.height;
-  scene::Scene scene = scene::loadScene(job.scene);
+  scene::Scene scene = scene::loadScene(job.scene, {o.allowExternalFiles});
   if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
   // The thin lens given on the command line, on whichever camera renders.
   for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
@@ -382,6 +383,8 @@ Command addRenderCommand(CLI::App& app) {
       "material-test: the shared material's constants, e.g. metallic=1,baseColor=0.9,0.6,0.2");
   cmd->add_flag("--all-effects", o->allEffects,
                 "Build the full pipeline instead of only the effects the scene calls for");
+  cmd->add_flag("--allow-external-files", o->allowExternalFiles,
+                "Let glTF files read buffers and images outside their own folder");
   cmd->add_flag("--print-effects", o->printEffects,
                 "List the effects the scene calls for, one per line, and exit");
   cmd->add_flag("--validation", o->validation,

@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
   app.add_option("--script", o.script, "Run scripted commands (see apps/viewer/script.h)");
+  app.add_flag("--allow-external-files", o.allowExternalFiles,
+               "Let glTF files read buffers and images outside their own folder");
   app.add_option("--config", o.config, "Viewer settings file holding camera bookmarks");
   std::string envMap, envBackground;
   float envRotation = 0.0f, envIntensity = 1.0f;

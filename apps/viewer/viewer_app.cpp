@@ -107,7 +107,8 @@ Viewer::~Viewer() {
 }
 
 void Viewer::loadScene(const std::string& nameOrPath) {
-  scene::Scene scene = scene::loadScene(nameOrPath);  // throws before anything changes
+  // Throws before anything changes.
+  scene::Scene scene = scene::loadScene(nameOrPath, {options_.allowExternalFiles});
   const scene::Environment own = scene.environment;
   render::applyEnvironmentChoice(scene, options_.environment);
   if (device_) device_->waitForIdle();

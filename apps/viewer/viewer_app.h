@@ -44,6 +44,8 @@ struct ViewerOptions {
   bool offscreen = false;
   // Write every frame as shown (UI included) as DIR/frame-NNNNNN.png.
   std::string recordDirectory;
+  // glTF files may read buffers and images outside their own folder.
+  bool allowExternalFiles = false;
 };
 
 class Viewer {

@@ -340,13 +340,75 @@ bool isGltfPath(const std::string& path) {
   return ext == ".gltf" || ext == ".glb";
 }
 
-GltfImport importGltf(const std::string& path) {
+namespace {
+
+// tinygltf's file access, through FileAccess: the file a URI names must lie
+// inside the glTF file's folder unless the user allowed others, and must be
+// a regular file (a folder named by a URI once became a huge allocation).
+struct FileAccessPolicy {
+  std::string base;  // the folder as tinygltf joins URIs to it: the path up to its last '/'
+  fs::path folder;   // canonical
+  bool allowOutside = false;
+};
+
+bool inside(const fs::path& file, const fs::path& folder) {
+  auto f = file.begin();
+  for (auto d = folder.begin(); d != folder.end(); ++d, ++f)
+    if (f == file.end() || *f != *d) return false;
+  return true;
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void* user) {
+  const auto& policy = *static_cast<const FileAccessPolicy*>(user);
+  // tinygltf joins every URI to the folder, an absolute one too
+  // ("folder//abs/path"): take such a URI as the path it is.
+  std::string file = path;
+  if (!policy.base.empty() && file.rfind(policy.base + "/", 0) == 0 &&
+      fs::path(file.substr(policy.base.size() + 1)).is_absolute())
+    file = file.substr(policy.base.size() + 1);
+  std::error_code ec;
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(file, ec), ec);
+  if (ec || !fs::is_regular_file(resolved, ec)) {
+    if (err) *err += fmt::format("'{}' is not a readable file\n", file);
+    return false;
+  }
+  if (!policy.allowOutside && !inside(resolved, policy.folder)) {
+    if (err)
+      *err += fmt::format(
+          "'{}' lies outside the glTF file's folder {}; --allow-external-files lets a scene "
+          "read it\n",
+          file, policy.folder.string());
+    return false;
+  }
+  return tinygltf::ReadWholeFile(out, err, resolved.string(), nullptr);
+}
+
+// tinygltf's default expands environment variables and ~ in URIs; a URI is a
+// path relative to the glTF file and nothing else.
+std::string expandNothing(const std::string& path, void*) {
+  return path;
+}
+
+// Existence is judged by readWholeFile, which says why a file is refused.
+bool fileExists(const std::string&, void*) {
+  return true;
+}
+
+}  // namespace
+
+GltfImport importGltf(const std::string& path, const FileAccess& access) {
   const std::string at = fmt::format("glTF '{}'", path);
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Error(fmt::format("{}: no such file", at));
   if (!isGltfPath(path))
     throw Error(fmt::format("{}: not a glTF file (expected .gltf or .glb)", at));
   tinygltf::TinyGLTF loader;
+  const size_t slash = path.find_last_of("/\\");
+  FileAccessPolicy policy{slash == std::string::npos ? "" : path.substr(0, slash),
+                          fs::weakly_canonical(fs::absolute(path).parent_path(), ec),
+                          access.allowOutsideFolder};
+  loader.SetFsCallbacks({&fileExists, &expandNothing, &readWholeFile, nullptr, &policy});
   gltf::ImageDecoding decoding;
   loader.SetImageLoader(gltf::decodeImage, &decoding);
   tinygltf::Model model;
@@ -372,8 +434,8 @@ GltfImport importGltf(const std::string& path) {
   return result;
 }
 
-Scene loadGltf(const std::string& path) {
-  GltfImport result = importGltf(path);
+Scene loadGltf(const std::string& path, const FileAccess& access) {
+  GltfImport result = importGltf(path, access);
   for (const auto& w : result.warnings) log::warning("{}", w);
   return std::move(result.scene);
 }

@@ -29,16 +29,25 @@
 
 namespace penumbra::scene {
 
+// Which files a glTF file may read besides itself (its buffers' and images'
+// URIs). By default only files inside the glTF file's own folder (and its
+// subfolders), after resolving "..", links and absolute paths, so a scene
+// someone else made cannot read other files of the user's; data: URIs and
+// .glb chunks are always fine.
+struct FileAccess {
+  bool allowOutsideFolder = false;  // --allow-external-files
+};
+
 struct GltfImport {
   Scene scene;
   std::vector<std::string> warnings;  // one line each, already naming the file
 };
 
 // Reads a .gltf or .glb file; returns warnings instead of printing them.
-GltfImport importGltf(const std::string& path);
+GltfImport importGltf(const std::string& path, const FileAccess& access = {});
 
 // importGltf, with its warnings written to the log.
-Scene loadGltf(const std::string& path);
+Scene loadGltf(const std::string& path, const FileAccess& access = {});
 
 // Whether `path` names a glTF file by its extension (.gltf, .glb; any case).
 bool isGltfPath(const std::string& path);

@@ -156,7 +156,7 @@ void merge(Scene& scene, const Scene& part, const glm::dmat4& t) {
 
 // The "gltf" list; returns the view the first file suggests.
 std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::string& at,
-                                    const std::string& baseDirectory) {
+                                    const std::string& baseDirectory, const FileAccess& access) {
   if (!list.is_array()) throw Error(at + ": \"gltf\" must be an array");
   std::optional<Camera> view;
   for (size_t i = 0; i < list.size(); ++i) {
@@ -168,7 +168,7 @@ std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::s
     if (path.is_relative() && !baseDirectory.empty())
       path = std::filesystem::path(baseDirectory) / path;
     const glm::dmat4 t = readTransform(g, where);
-    Scene part = loadGltf(path.string());
+    Scene part = loadGltf(path.string(), access);
     if (g.contains("camera")) {
       if (!g.at("camera").is_string()) throw Error(where + ": \"camera\" must be a string");
       selectCamera(part, g.at("camera").get<std::string>());
@@ -213,7 +213,7 @@ Environment parseEnvironment(const json& e, const std::string& where,
 }  // namespace
 
 Scene parseScene(std::string_view text, const std::string& source,
-                 const std::string& baseDirectory) {
+                 const std::string& baseDirectory, const FileAccess& access) {
   json doc;
   try {
     doc = json::parse(text);
@@ -365,16 +365,16 @@ Scene parseScene(std::string_view text, const std::string& source,
     addMaterialRow(scene,
                    parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
   if (hasGltf) {
-    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory);
+    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory, access);
     if (!doc.contains("camera") && view) scene.camera = *view;
   }
   validate(scene);
   return scene;
 }
 
-Scene loadScene(const std::string& nameOrPath) {
+Scene loadScene(const std::string& nameOrPath, const FileAccess& access) {
   if (auto builtIn = embedded::find(nameOrPath + ".json")) return parseScene(*builtIn, nameOrPath);
-  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath);
+  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) {
     std::string names;
@@ -390,7 +390,7 @@ Scene loadScene(const std::string& nameOrPath) {
   if (!file.good() && !file.eof())
     throw Error(fmt::format("scene '{}': cannot read the file", nameOrPath));
   return parseScene(text.str(), nameOrPath,
-                    std::filesystem::path(nameOrPath).parent_path().string());
+                    std::filesystem::path(nameOrPath).parent_path().string(), access);
 }
 
 std::vector<std::string> builtInSceneNames() {

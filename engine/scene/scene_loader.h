@@ -68,16 +68,18 @@
 #include <string_view>
 #include <vector>
 
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace penumbra::scene {
 
 // `nameOrPath`: a built-in scene name ("cornell-box"), a path to a .json
 // scene file, or a glTF file (.gltf, .glb) loaded as a scene on its own.
-Scene loadScene(const std::string& nameOrPath);
+// `access`: what the glTF files it loads may read besides themselves.
+Scene loadScene(const std::string& nameOrPath, const FileAccess& access = {});
 // `baseDirectory`: where the "gltf" files' relative paths start.
 Scene parseScene(std::string_view json, const std::string& source,
-                 const std::string& baseDirectory = "");
+                 const std::string& baseDirectory = "", const FileAccess& access = {});
 std::vector<std::string> builtInSceneNames();
 
 }  // namespace penumbra::scene

@@ -1,11 +1,17 @@
 // The glTF loader against hand-made files (tests/data/gltf/make_gltf.py).
 // Expected numbers are worked out by hand in the comments, from the values
 // the generator writes and the glTF 2.0 specification.
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "scene/gltf_loader.h"
 #include "test_data.h"
@@ -404,4 +410,49 @@ TEST_CASE(
   const auto s = scene::loadGltf(gltf("far_translation.gltf"));
   REQUIRE(s.instances.size() == 1u);
   CHECK(s.instances[0].transform[3] == glm::dvec4(1000000.03, -200000.01, 0.07, 1.0));
+}
+
+TEST_CASE("glTF URIs stay inside the file's folder unless the user allows others", "[gltf]") {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / fmt::format("penumbra-uri-{}", ::getpid());
+  fs::remove_all(root);
+  fs::create_directories(root / "scene" / "data");
+  fs::copy_file(gltf("external.bin"), root / "external.bin");
+  fs::copy_file(gltf("external.bin"), root / "scene" / "data" / "external.bin");
+  fs::create_symlink(root / "external.bin", root / "scene" / "link.bin");
+  std::ifstream in(gltf("external.gltf"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The same file with its buffer's URI replaced.
+  auto withUri = [&](const std::string& name, const std::string& uri) {
+    std::string t = text;
+    const std::string from = "\"uri\": \"external.bin\"";
+    REQUIRE(t.find(from) != std::string::npos);
+    t.replace(t.find(from), from.size(), "\"uri\": \"" + uri + "\"");
+    const fs::path path = root / "scene" / name;
+    std::ofstream(path) << t;
+    return path.string();
+  };
+  const std::string below = withUri("below.gltf", "data/external.bin");
+  const std::string parent = withUri("parent.gltf", "../external.bin");
+  const std::string absolute = withUri("absolute.gltf", (root / "external.bin").string());
+  const std::string linked = withUri("linked.gltf", "link.bin");
+  const std::string folder = withUri("folder.gltf", "data");
+
+  // A subfolder is the file's own.
+  REQUIRE(scene::loadGltf(below).meshes.at(0).triangleCount() == 1u);
+  // "..", an absolute path and a link that leads out are refused, naming the
+  // URI and the way to allow it; allowed, they load the same triangle.
+  for (const std::string& path : {parent, absolute, linked}) {
+    INFO(path);
+    REQUIRE_THROWS_WITH(scene::loadGltf(path),
+                        ContainsSubstring("outside the glTF file's folder") &&
+                            ContainsSubstring("--allow-external-files"));
+    scene::FileAccess allow;
+    allow.allowOutsideFolder = true;
+    REQUIRE(scene::loadGltf(path, allow).meshes.at(0).triangleCount() == 1u);
+  }
+  // A URI naming a folder is no file to read.
+  REQUIRE_THROWS_WITH(scene::loadGltf(folder), ContainsSubstring("'" + (root / "scene").string() +
+                                                                 "/data' is not a readable file"));
+  fs::remove_all(root);
 }
