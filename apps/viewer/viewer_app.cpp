@@ -192,11 +192,16 @@ void Viewer::handleInput(float seconds) {
   const bool f1 = glfwGetKey(w, GLFW_KEY_F1) == GLFW_PRESS;
   if (f1 && !f1WasDown_) settings_.showUi = !settings_.showUi;
   f1WasDown_ = f1;
+  // Home on the key going down, polled like F1 (sticky keys keep a tap):
+  // ImGui 1.86 loses a tap that begins and ends between two frames.
+  const bool home = glfwGetKey(w, GLFW_KEY_HOME) == GLFW_PRESS;
+  const bool homePressed = home && !homeWasDown_;
+  homeWasDown_ = home;
   if (!io.WantCaptureKeyboard) {
     auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
     input.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
                   key(GLFW_KEY_W) - key(GLFW_KEY_S)};
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) {
+    if (homePressed) {
       camera_->reset();
       tracer_->setCamera(camera_->camera());
     }

@@ -150,6 +150,7 @@ class Viewer {
   double frameSeconds_ = 0;
   std::chrono::steady_clock::time_point lastFrame_;
   bool f1WasDown_ = false;
+  bool homeWasDown_ = false;
 
   // Script state.
   std::vector<ScriptCommand> script_;

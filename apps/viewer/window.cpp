@@ -52,6 +52,9 @@ Window::Window(uint32_t width, uint32_t height, const std::string& title) {
     glfwTerminate();
     throw Error(fmt::format("cannot open a window: {}", gLastGlfwError));
   }
+  // The viewer polls keys once a frame (glfwGetKey): sticky keys keep a tap
+  // shorter than a frame (F1, Home) from being lost between two polls.
+  glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
 }
 
 Window::~Window() {
