@@ -90,24 +90,7 @@ for value in $psnr; do
   [ "$value" = "inf" ] && continue
   awk -v v="$value" 'BEGIN { exit !(v >= 45) }' || fail "the capture does not show the image"
 done
-changed=$(python3 - "$work/shown.ppm" "$work/menus.ppm" <<'PY'
-import sys
-def pixels(path):
-    data = open(path, 'rb').read()
-    # binary PPM: P6 <w> <h> <max> then the samples
-    fields, i = [], 0
-    while len(fields) < 4:
-        while data[i:i+1].isspace(): i += 1
-        j = i
-        while not data[j:j+1].isspace(): j += 1
-        fields.append(data[i:j]); i = j
-    return int(fields[1]), int(fields[2]), data[i+1:]
-w, h, a = pixels(sys.argv[1])
-_, _, b = pixels(sys.argv[2])
-n = sum(1 for k in range(w * h) if a[3*k:3*k+3] != b[3*k:3*k+3])
-print(f"{n / (w * h):.4f}")
-PY
-)
+changed=$(python3 "$(dirname "$0")/changed_pixels.py" "$work/shown.ppm" "$work/menus.ppm")
 echo "pixels the menus change: $changed"
 awk -v v="$changed" 'BEGIN { exit !(v > 0.05) }' || fail "the capture does not show the menus"
 
