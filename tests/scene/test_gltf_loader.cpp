@@ -11,7 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <sstream>
 
 #include "scene/gltf_loader.h"
 #include "test_data.h"
@@ -421,7 +421,9 @@ TEST_CASE("glTF URIs stay inside the file's folder unless the user allows others
   fs::copy_file(gltf("external.bin"), root / "scene" / "data" / "external.bin");
   fs::create_symlink(root / "external.bin", root / "scene" / "link.bin");
   std::ifstream in(gltf("external.gltf"));
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::stringstream read;
+  read << in.rdbuf();
+  const std::string text = read.str();
   // The same file with its buffer's URI replaced.
   auto withUri = [&](const std::string& name, const std::string& uri) {
     std::string t = text;
