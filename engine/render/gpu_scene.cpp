@@ -523,19 +523,25 @@ void GpuScene::rebase(const glm::dvec3& origin) {
     w.tlasInstances[i].transform = toAffine(toRenderSpace * w.meshTlasInstanceToWorld[i]);
 
   auto& s = *buffers_;
+  submitAndWait([&](rhi::ICommandList& cmd) {
+    writeAll(cmd, s.instances, instances);
+    writeAll(cmd, s.emissive, emissive);
+    writeAll(cmd, s.pointLights, pointLights);
+    writeAll(cmd, s.implicits, implicits.data);
+    writeAll(cmd, s.implicitAabbs, implicits.aabbs);
+    // In place: the binding sets keep pointing at the same TLAS, and the
+    // meshes' BLASes are not touched.
+    for (auto& bottomLevel : s.implicitBottomLevels)
+      cmd.buildBottomLevelAccelStruct(bottomLevel.get());
+    cmd.buildTopLevelAccelStruct(s.topLevel.get(), w.tlasInstances.data(),
+                                 uint32_t(w.tlasInstances.size()));
+  });
+}
+
+void GpuScene::submitAndWait(const std::function<void(rhi::ICommandList&)>& work) {
   auto* cmd = commandList_.get();
   cmd->open();
-  writeAll(*cmd, s.instances, instances);
-  writeAll(*cmd, s.emissive, emissive);
-  writeAll(*cmd, s.pointLights, pointLights);
-  writeAll(*cmd, s.implicits, implicits.data);
-  writeAll(*cmd, s.implicitAabbs, implicits.aabbs);
-  // In place: the binding sets keep pointing at the same TLAS, and the
-  // meshes' BLASes are not touched.
-  for (auto& bottomLevel : s.implicitBottomLevels)
-    cmd->buildBottomLevelAccelStruct(bottomLevel.get());
-  cmd->buildTopLevelAccelStruct(s.topLevel.get(), w.tlasInstances.data(),
-                                uint32_t(w.tlasInstances.size()));
+  work(*cmd);
   cmd->close();
   device_.submit(cmd);
   device_.waitForIdle();
@@ -544,12 +550,7 @@ void GpuScene::rebase(const glm::dvec3& origin) {
 void GpuScene::writeMaterials(const std::vector<scene::Material>& materials) {
   std::vector<gpu::MaterialData> packed;
   for (const auto& m : materials) packed.push_back(packMaterial(m));
-  auto* cmd = commandList_.get();
-  cmd->open();
-  writeAll(*cmd, buffers_->materials, packed);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
+  submitAndWait([&](rhi::ICommandList& cmd) { writeAll(cmd, buffers_->materials, packed); });
 }
 
 void GpuScene::uploadEnvironment(const scene::Environment& environment) {
@@ -564,14 +565,11 @@ void GpuScene::uploadEnvironment(const scene::Environment& environment) {
       makeStorageBuffer(device_, tables.texels, BufferUsage::None, "environment texels");
   rhi::BufferHandle newCdf =
       makeStorageBuffer(device_, tables.cdf, BufferUsage::None, "environment CDF");
-  auto* cmd = commandList_.get();
-  cmd->open();
-  writeAll(*cmd, newInfo, info);
-  writeAll(*cmd, newTexels, tables.texels);
-  writeAll(*cmd, newCdf, tables.cdf);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
+  submitAndWait([&](rhi::ICommandList& cmd) {
+    writeAll(cmd, newInfo, info);
+    writeAll(cmd, newTexels, tables.texels);
+    writeAll(cmd, newCdf, tables.cdf);
+  });
   auto& s = *buffers_;
   s.environmentInfo = std::move(newInfo);
   s.environmentTexels = std::move(newTexels);
@@ -580,12 +578,7 @@ void GpuScene::uploadEnvironment(const scene::Environment& environment) {
 
 void GpuScene::writeEnvironmentPlacement(const scene::Environment& environment) {
   const std::vector<gpu::EnvironmentData> info = {environmentInfo(environment)};
-  auto* cmd = commandList_.get();
-  cmd->open();
-  writeAll(*cmd, buffers_->environmentInfo, info);
-  cmd->close();
-  device_.submit(cmd);
-  device_.waitForIdle();
+  submitAndWait([&](rhi::ICommandList& cmd) { writeAll(cmd, buffers_->environmentInfo, info); });
 }
 
 std::vector<rhi::BindingSetItem> GpuScene::bindingItems() const {

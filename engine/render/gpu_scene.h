@@ -6,6 +6,7 @@
 // family; the TLAS), and their updates: a new render-space origin, new
 // materials, a new environment. Every pipeline that traces the scene (the
 // integrators, the ray probe) binds what bindingItems() lists.
+#include <functional>
 #include <glm/glm.hpp>
 #include <memory>
 #include <vector>
@@ -83,6 +84,8 @@ class GpuScene {
   void uploadImplicits(const scene::Scene& scene, bool allImplicitFamilies,
                        std::vector<rhi::rt::InstanceDesc>& tlasInstances);
   ImplicitLayout implicitLayoutInRenderSpace() const;
+  // Records `work` into the scene's own command list, submits it and waits.
+  void submitAndWait(const std::function<void(rhi::ICommandList&)>& work);
 
   rhi::IDevice& device_;
   glm::dvec3 renderOrigin_;
