@@ -7,14 +7,14 @@
 #
 # STAGES are written once, in the shared dialect (docs/ARCHITECTURE.md,
 # "Shaders"); the extension names the stage (.rgen .rmiss .rchit .rahit .rint
-# .comp). For each, the build writes two wrappers that include the API's
+# .comp, and .vert / .frag for the raster subset). For each, the build writes two wrappers that include the API's
 # prelude and then the stage:
 # - GLSL (prelude.glsl, found through INCLUDE_DIRS): glslang compiles it to
 #   SPIR-V for Vulkan. glslang writes a depfile, so editing an included
 #   .hlsli recompiles exactly the shaders that include it.
 # - HLSL (prelude.hlsli, through HLSL_INCLUDE_DIRS): where DXC was found (see
-#   below) it compiles it to DXIL for D3D12, -T lib_6_3 (ray-tracing stages) or
-#   -T cs_6_3 (compute); without DXC the DXIL is empty and the D3D12 backend
+#   below) it compiles it to DXIL for D3D12, -T lib_6_3 (ray-tracing stages),
+#   -T cs_6_3 (compute) or vs_6_0 / ps_6_0 (raster); without DXC the DXIL is empty and the D3D12 backend
 #   says so at pipeline creation. Whether DXC is here or not, glslang's HLSL
 #   front-end compiles the same wrapper with PENUMBRA_HLSL_CHECK (the DXR
 #   intrinsics stubbed, hlsl/prelude.hlsli), for every effect variant's
@@ -98,6 +98,10 @@ function(_penumbra_shader_stage name out)
     set(stage Intersection)
   elseif(name MATCHES "\\.(comp|hlsl)$")
     set(stage Compute)
+  elseif(name MATCHES "\\.vert$")
+    set(stage Vertex)
+  elseif(name MATCHES "\\.frag$")
+    set(stage Pixel)
   else()
     message(FATAL_ERROR "penumbra_add_shaders: cannot tell the stage of '${name}'")
   endif()
@@ -187,8 +191,14 @@ function(penumbra_add_shaders)
       get_filename_component(stage_dir ${abs} DIRECTORY)
       string(REGEX REPLACE "^.*\\." "" glslang_stage ${source_name})
       list(APPEND lang_flags -S ${glslang_stage} -I${stage_dir})
-      if(NOT stage STREQUAL "Compute")
+      if(NOT stage MATCHES "^(Compute|Vertex|Pixel)$")
         list(APPEND lang_flags -DPT_STAGE_RAY_TRACING=1)
+      endif()
+      # glslang's HLSL front-end checks raster stages as what they are, the
+      # others as compute shaders (hlsl/prelude.hlsli).
+      set(hlsl_check_stage comp)
+      if(stage MATCHES "^(Vertex|Pixel)$")
+        set(hlsl_check_stage ${glslang_stage})
       endif()
     elseif(name MATCHES "\\.hlsl$")
       # HLSL compute harness: glslang's HLSL front-end, entry point "main".
@@ -218,7 +228,7 @@ function(penumbra_add_shaders)
         add_custom_command(
           OUTPUT ${check}
           COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}/hlsl_check
-          COMMAND ${GLSLANG_VALIDATOR} --target-env vulkan1.1 -D -S comp -e main -DPENUMBRA_HLSL_CHECK=1
+          COMMAND ${GLSLANG_VALIDATOR} --target-env vulkan1.1 -D -S ${hlsl_check_stage} -e main -DPENUMBRA_HLSL_CHECK=1
                   ${effect_defines} -I${stage_dir} ${hlsl_include_flags} --quiet --depfile ${check}.d -o ${check}
                   ${hlsl_input}
           DEPENDS ${abs}
@@ -231,6 +241,10 @@ function(penumbra_add_shaders)
         set(dxil ${out_dir}/${name}.dxil)
         if(stage STREQUAL "Compute")
           set(profile -T cs_6_3 -E main)
+        elseif(stage STREQUAL "Vertex")
+          set(profile -T vs_6_0 -E main)
+        elseif(stage STREQUAL "Pixel")
+          set(profile -T ps_6_0 -E main)
         else()
           set(profile -T lib_6_3)
         endif()

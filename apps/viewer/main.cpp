@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
                "server without a display too; needs --script");
   app.add_option("--record", o.recordDirectory,
                  "Write every frame as shown, menus included, as DIR/frame-NNNNNN.png");
-  app.add_option("--backend", o.backend, "Backend: vulkan")->capture_default_str();
+  app.add_option("--backend", o.backend, "Backend: vulkan or d3d12")->capture_default_str();
   app.add_option("--device", o.device,
                  "Device index from 'penumbra devices' (default: best with ray tracing)");
   app.add_option("--render-scale", renderScale,

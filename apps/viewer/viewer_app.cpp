@@ -61,8 +61,6 @@ Viewer::Viewer(const ViewerOptions& options)
   info.validation = options_.validation;
   if (window_) info.presentWindow = window_->nativeWindow();
   device_ = backends::createDevice(options_.backend, info);
-  if (std::string(device_->backendName()) != "vulkan")
-    throw Error("the viewer's UI renderer exists for the Vulkan backend only (--backend vulkan)");
 
   settings_.samplesPerFrame = options_.samplesPerFrame;
   settings_.vsync = options_.vsync;
@@ -82,8 +80,8 @@ Viewer::Viewer(const ViewerOptions& options)
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
   ImGui::StyleColorsDark();
-  if (window_) ImGui_ImplGlfw_InitForVulkan(window_->handle(), true);
-  ui_ = std::make_unique<ImGuiVulkanRenderer>(*device_, options_.framesInFlight);
+  if (window_) ImGui_ImplGlfw_InitForOther(window_->handle(), true);
+  ui_ = std::make_unique<ImGuiRenderer>(*device_, options_.framesInFlight);
   display_ = std::make_unique<render::DisplayPass>(*device_);
   for (uint32_t i = 0; i < options_.framesInFlight; ++i)
     frameLists_.push_back(
@@ -420,7 +418,6 @@ void Viewer::renderFrame() {
   if (!displayTexture_ || displayTexture_->desc().width != w ||
       displayTexture_->desc().height != h) {
     device_->waitForIdle();  // frames in flight draw into the old one
-    ui_->forgetTargets();
     rhi::TextureDesc desc;
     desc.width = w;
     desc.height = h;
@@ -511,7 +508,6 @@ void Viewer::renderFrame() {
   display_->record(list, shown, displayTexture_, settings_.toneMapping, channels);
   list.endTimerQuery(displayQuery);
   if (settings_.showUi) {
-    list.setTextureState(displayTexture_.get(), rhi::ResourceState::RenderTarget);
     rhi::ITimerQuery* uiQuery = passQuery(UiPass, slot);
     list.beginTimerQuery(uiQuery);
     ui_->render(list, *displayTexture_);
@@ -646,7 +642,6 @@ int Viewer::run() {
       resizeRender();
     }
 
-    ui_->newFrame();
     if (window_) {
       ImGui_ImplGlfw_NewFrame();
     } else {  // what the GLFW backend would set from the window

@@ -12,7 +12,7 @@
 
 #include "bookmarks.h"
 #include "camera_controller.h"
-#include "imgui_vulkan_renderer.h"
+#include "imgui_renderer.h"
 #include "render/denoiser.h"
 #include "render/display_pass.h"
 #include "render/path_tracer.h"
@@ -97,7 +97,7 @@ class Viewer {
   uint32_t offscreenWidth_ = 0, offscreenHeight_ = 0;
   rhi::DeviceHandle device_;
   rhi::SwapchainHandle swapchain_;  // null offscreen
-  std::unique_ptr<ImGuiVulkanRenderer> ui_;
+  std::unique_ptr<ImGuiRenderer> ui_;
   std::unique_ptr<render::DisplayPass> display_;
   std::vector<rhi::CommandListHandle> frameLists_;
   std::vector<render::FrameQueries> frameQueries_;  // per frame slot

@@ -52,11 +52,11 @@ class DescriptorAllocation {
   uint32_t first_, count_;
 };
 
-// A CBV/SRV/UAV or sampler heap with a first-fit free list of ranges. The
+// A CBV/SRV/UAV, sampler or RTV heap with a first-fit free list of ranges. The
 // device owns one shader-visible CBV/SRV/UAV heap (binding sets and UAV-clear
 // handles), one shader-visible sampler heap (binding sets' sampler tables)
 // and one CPU-only CBV/SRV/UAV heap (the second handle
-// ClearUnorderedAccessView* needs).
+// ClearUnorderedAccessView* needs); each command list a CPU-only RTV heap.
 class DescriptorHeap {
  public:
   DescriptorHeap(ID3D12Device* device, D3D12_DESCRIPTOR_HEAP_TYPE type, uint32_t capacity, bool shaderVisible,
@@ -149,10 +149,12 @@ class D3D12AccelStruct final : public rhi::rt::IAccelStruct {
 };
 
 // The global root signature of a pipeline, built from its shaders' merged
-// binding layout through rhi::computeRootSignatureLayout.
+// binding layout through rhi::computeRootSignatureLayout. `flags` adds
+// D3D12_ROOT_SIGNATURE_FLAGS (graphics pipelines: ALLOW_INPUT_ASSEMBLER_INPUT_LAYOUT).
 class D3D12RootSignature {
  public:
-  D3D12RootSignature(D3D12Device& device, rhi::PipelineBindingLayout layout, const std::string& name);
+  D3D12RootSignature(D3D12Device& device, rhi::PipelineBindingLayout layout, const std::string& name,
+                     D3D12_ROOT_SIGNATURE_FLAGS flags = D3D12_ROOT_SIGNATURE_FLAG_NONE);
   const rhi::PipelineBindingLayout& bindingLayout() const { return layout_; }
   const rhi::RootSignatureLayout& rootLayout() const { return rootLayout_; }
   ID3D12RootSignature* handle() const { return rootSignature_.Get(); }
@@ -177,6 +179,24 @@ class D3D12ComputePipeline final : public rhi::IComputePipeline {
   ID3D12PipelineState* handle() const { return pipeline_.Get(); }
 
  private:
+  std::unique_ptr<D3D12RootSignature> rootSignature_;
+  ComPtr<ID3D12PipelineState> pipeline_;
+};
+
+// D3D12: ID3D12PipelineState from CreateGraphicsPipelineState (TRIANGLE
+// topology, CULL_NONE, depth off, one RTV format, opaque or alpha blending,
+// TEXCOORD<location> input elements) + a root signature built from the
+// merged layouts of the vertex and pixel shaders.
+class D3D12GraphicsPipeline final : public rhi::IGraphicsPipeline {
+ public:
+  D3D12GraphicsPipeline(D3D12Device& device, const rhi::GraphicsPipelineDesc& desc);
+  const rhi::GraphicsPipelineDesc& desc() const override { return desc_; }
+  const rhi::PipelineBindingLayout& bindingLayout() const override { return rootSignature_->bindingLayout(); }
+  const D3D12RootSignature& rootSignature() const { return *rootSignature_; }
+  ID3D12PipelineState* handle() const { return pipeline_.Get(); }
+
+ private:
+  rhi::GraphicsPipelineDesc desc_;
   std::unique_ptr<D3D12RootSignature> rootSignature_;
   ComPtr<ID3D12PipelineState> pipeline_;
 };
@@ -278,6 +298,12 @@ class D3D12CommandList final : public rhi::ICommandList {
   void setRayTracingState(const rhi::RayTracingState& state) override;
   void setComputeState(const rhi::ComputeState& state) override;
   void setPushConstants(const void* data, size_t bytes) override;
+  void setGraphicsState(const rhi::GraphicsState& state) override;
+  void beginRendering(rhi::ITexture* target, const float* clearColor) override;
+  void endRendering() override;
+  void setViewport(const rhi::Viewport& viewport) override;
+  void setScissor(const rhi::ScissorRect& rect) override;
+  void drawIndexed(uint32_t indexCount, uint32_t firstIndex, int32_t vertexOffset) override;
   void dispatchRays(uint32_t width, uint32_t height, uint32_t depth) override;
   void dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) override;
   void beginTimerQuery(rhi::ITimerQuery* query) override;
@@ -293,12 +319,23 @@ class D3D12CommandList final : public rhi::ICommandList {
   std::shared_ptr<D3D12Buffer> makeTransientBuffer(uint64_t bytes, rhi::BufferUsage usage,
                                                    rhi::MemoryLocation memory, const char* name);
   void transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets);
-  void bindDescriptorTables(const D3D12RootSignature& rootSignature, const std::vector<rhi::IBindingSet*>& sets);
+  // SetGraphicsRootDescriptorTable when `graphics`, else SetComputeRootDescriptorTable.
+  void bindDescriptorTables(const D3D12RootSignature& rootSignature, const std::vector<rhi::IBindingSet*>& sets,
+                            bool graphics = false);
   void uavBarrier(ID3D12Resource* resource);
   D3D12Device& device_;
   ComPtr<ID3D12CommandAllocator> allocator_;
   ComPtr<ID3D12GraphicsCommandList4> list_;
+  // beginRendering's RTVs: a small non-shader-visible heap of the list's own,
+  // used round-robin from slot 0 on each open(). D3D12 copies an RTV into
+  // the list when OMSetRenderTargets / ClearRenderTargetView are recorded, so
+  // a slot may be rewritten right after; nothing has to outlive recording.
+  // (The heap is declared before its allocation, which must die first.)
+  std::unique_ptr<DescriptorHeap> rtvHeap_;
+  std::shared_ptr<DescriptorAllocation> rtvDescriptors_;
+  uint32_t nextRtv_ = 0;
   const D3D12RootSignature* boundRootSignature_ = nullptr;
+  bool graphicsBound_ = false;  // push constants go to the graphics root, else the compute root
   D3D12_DISPATCH_RAYS_DESC boundDispatch_{};
   std::vector<std::shared_ptr<D3D12Buffer>> transient_;
   std::vector<std::shared_ptr<DescriptorAllocation>> transientDescriptors_;
@@ -317,6 +354,8 @@ class D3D12Device final : public rhi::IDevice {
   rhi::rt::AccelStructHandle createAccelStruct(const rhi::rt::AccelStructDesc& desc) override;
   rhi::RayTracingPipelineHandle createRayTracingPipeline(const rhi::RayTracingPipelineDesc& desc) override;
   rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
+  // D3D12: CreateGraphicsPipelineState + root signature (D3D12GraphicsPipeline).
+  rhi::GraphicsPipelineHandle createGraphicsPipeline(const rhi::GraphicsPipelineDesc& desc) override;
   rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
   rhi::TimerQueryHandle createTimerQuery() override;
   rhi::CommandListHandle createCommandList(const std::string& debugName) override;

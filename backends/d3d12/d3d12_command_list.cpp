@@ -1,5 +1,5 @@
 // Command recording: copies, clears, barriers, acceleration-structure
-// builds, pipeline state, DispatchRays/Dispatch and timestamps.
+// builds, pipeline state, DispatchRays/Dispatch, draws and timestamps.
 #include <fmt/format.h>
 
 #include <cstring>
@@ -10,6 +10,9 @@
 
 namespace penumbra::d3d12 {
 namespace {
+
+// RTV slots of a command list's own RTV heap (see rtvHeap_).
+constexpr uint32_t kRtvDescriptors = 16;
 
 bool isWriteState(rhi::ResourceState s) {
   return s == rhi::ResourceState::UnorderedAccess || s == rhi::ResourceState::AccelStructWrite;
@@ -39,6 +42,9 @@ D3D12CommandList::D3D12CommandList(D3D12Device& device, const std::string& debug
                                              D3D12_COMMAND_LIST_FLAG_NONE, IID_PPV_ARGS(&list_)),
         "CreateCommandList1 (ID3D12GraphicsCommandList4)");
   setName(list_.Get(), debugName);
+  rtvHeap_ = std::make_unique<DescriptorHeap>(device_.handle(), D3D12_DESCRIPTOR_HEAP_TYPE_RTV, kRtvDescriptors,
+                                              false, debugName + " RTV heap");
+  rtvDescriptors_ = rtvHeap_->allocate(kRtvDescriptors);
 }
 
 // D3D12: fence wait for the list's previous submission (resetting an
@@ -59,6 +65,8 @@ void D3D12CommandList::open() {
                                    device_.samplerHeap().heap()};
   list_->SetDescriptorHeaps(2, heaps);
   boundRootSignature_ = nullptr;
+  graphicsBound_ = false;
+  nextRtv_ = 0;
 }
 
 void D3D12CommandList::close() {
@@ -378,13 +386,17 @@ void D3D12CommandList::transitionBindingSets(const std::vector<rhi::IBindingSet*
 }
 
 void D3D12CommandList::bindDescriptorTables(const D3D12RootSignature& rootSignature,
-                                            const std::vector<rhi::IBindingSet*>& sets) {
+                                            const std::vector<rhi::IBindingSet*>& sets, bool graphics) {
   // The validation layer checked that sets[space] is given for every space the
   // shaders use, made for this layout.
   for (const auto& table : rootSignature.rootLayout().tables) {
     const auto* set = static_cast<const D3D12BindingSet*>(sets.at(table.space));
-    list_->SetComputeRootDescriptorTable(table.rootParameterIndex,
-                                         set->tableStart(table.rootParameterIndex));
+    if (graphics)
+      list_->SetGraphicsRootDescriptorTable(table.rootParameterIndex,
+                                            set->tableStart(table.rootParameterIndex));
+    else
+      list_->SetComputeRootDescriptorTable(table.rootParameterIndex,
+                                           set->tableStart(table.rootParameterIndex));
   }
 }
 
@@ -400,6 +412,7 @@ void D3D12CommandList::setRayTracingState(const rhi::RayTracingState& state) {
   list_->SetComputeRootSignature(pipeline->rootSignature().handle());
   bindDescriptorTables(pipeline->rootSignature(), state.bindingSets);
   boundRootSignature_ = &pipeline->rootSignature();
+  graphicsBound_ = false;
 }
 
 // D3D12: SetPipelineState + SetComputeRootSignature + descriptor tables.
@@ -410,14 +423,94 @@ void D3D12CommandList::setComputeState(const rhi::ComputeState& state) {
   list_->SetComputeRootSignature(pipeline->rootSignature().handle());
   bindDescriptorTables(pipeline->rootSignature(), state.bindingSets);
   boundRootSignature_ = &pipeline->rootSignature();
+  graphicsBound_ = false;
 }
 
-// D3D12: SetComputeRoot32BitConstants into the root-constants parameter.
+// D3D12: SetGraphicsRoot32BitConstants after setGraphicsState, else
+// SetComputeRoot32BitConstants, into the root-constants parameter.
 void D3D12CommandList::setPushConstants(const void* data, size_t bytes) {
   // The validation layer checked that a pipeline is bound and `bytes` is what
   // its shaders declare, so the root layout has the constants.
   const auto& constants = boundRootSignature_->rootLayout().pushConstants;
-  list_->SetComputeRoot32BitConstants(constants->rootParameterIndex, UINT(bytes / 4), data, 0);
+  if (graphicsBound_)
+    list_->SetGraphicsRoot32BitConstants(constants->rootParameterIndex, UINT(bytes / 4), data, 0);
+  else
+    list_->SetComputeRoot32BitConstants(constants->rootParameterIndex, UINT(bytes / 4), data, 0);
+}
+
+// D3D12: barriers (vertex and index buffers to VERTEX_AND_CONSTANT_BUFFER |
+// INDEX_BUFFER; upload-heap buffers stay in GENERIC_READ, which includes
+// both, and only their RHI state changes, as setBufferState does for them)
+// + SetPipelineState + SetGraphicsRootSignature + SetGraphicsRootDescriptorTable
+// per space + IASetPrimitiveTopology(TRIANGLELIST) + IASetVertexBuffers +
+// IASetIndexBuffer.
+void D3D12CommandList::setGraphicsState(const rhi::GraphicsState& state) {
+  auto* pipeline = static_cast<D3D12GraphicsPipeline*>(state.pipeline);
+  if (state.vertexBuffer) setBufferState(state.vertexBuffer, rhi::ResourceState::VertexInput);
+  if (state.indexBuffer) setBufferState(state.indexBuffer, rhi::ResourceState::VertexInput);
+  transitionBindingSets(state.bindingSets);
+  list_->SetPipelineState(pipeline->handle());
+  list_->SetGraphicsRootSignature(pipeline->rootSignature().handle());
+  bindDescriptorTables(pipeline->rootSignature(), state.bindingSets, true);
+  list_->IASetPrimitiveTopology(D3D_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  if (state.vertexBuffer) {
+    D3D12_VERTEX_BUFFER_VIEW view{};
+    view.BufferLocation = state.vertexBuffer->deviceAddress() + state.vertexOffset;
+    view.SizeInBytes = UINT(state.vertexBuffer->desc().byteSize - state.vertexOffset);
+    view.StrideInBytes = pipeline->desc().vertexLayout.stride;
+    list_->IASetVertexBuffers(0, 1, &view);
+  }
+  if (state.indexBuffer) {
+    D3D12_INDEX_BUFFER_VIEW view{};
+    view.BufferLocation = state.indexBuffer->deviceAddress() + state.indexOffset;
+    view.SizeInBytes = UINT(state.indexBuffer->desc().byteSize - state.indexOffset);
+    view.Format = toDxgiFormat(state.indexFormat);  // R16_UINT or R32_UINT
+    list_->IASetIndexBuffer(&view);
+  }
+  boundRootSignature_ = &pipeline->rootSignature();
+  graphicsBound_ = true;
+}
+
+// D3D12: a transition to RENDER_TARGET + CreateRenderTargetView into the
+// list's RTV heap + OMSetRenderTargets + ClearRenderTargetView (with a clear
+// colour) + RSSetViewports and RSSetScissorRects over the whole target.
+void D3D12CommandList::beginRendering(rhi::ITexture* target, const float* clearColor) {
+  auto* t = static_cast<D3D12Texture*>(target);
+  setTextureState(target, rhi::ResourceState::RenderTarget);
+  // The descriptor is read when the calls below are recorded: the slot may be reused at once.
+  const D3D12_CPU_DESCRIPTOR_HANDLE rtv = rtvDescriptors_->cpu(nextRtv_);
+  nextRtv_ = (nextRtv_ + 1) % kRtvDescriptors;
+  D3D12_RENDER_TARGET_VIEW_DESC view{};
+  view.Format = t->format();
+  view.ViewDimension = D3D12_RTV_DIMENSION_TEXTURE2D;
+  device_.handle()->CreateRenderTargetView(t->resource(), &view, rtv);
+  list_->OMSetRenderTargets(1, &rtv, FALSE, nullptr);
+  if (clearColor) list_->ClearRenderTargetView(rtv, clearColor, 0, nullptr);
+  const auto& d = target->desc();
+  setViewport({0.0f, 0.0f, float(d.width), float(d.height)});
+  setScissor({0, 0, d.width, d.height});
+}
+
+// D3D12: nothing to record; the render target stays bound until the next
+// beginRendering (or the list's end).
+void D3D12CommandList::endRendering() {}
+
+// D3D12: RSSetViewports, depth range [0, 1].
+void D3D12CommandList::setViewport(const rhi::Viewport& viewport) {
+  const D3D12_VIEWPORT v{viewport.x, viewport.y, viewport.width, viewport.height, 0.0f, 1.0f};
+  list_->RSSetViewports(1, &v);
+}
+
+// D3D12: RSSetScissorRects.
+void D3D12CommandList::setScissor(const rhi::ScissorRect& rect) {
+  const D3D12_RECT r{LONG(rect.x), LONG(rect.y), LONG(rect.x + int64_t(rect.width)),
+                     LONG(rect.y + int64_t(rect.height))};
+  list_->RSSetScissorRects(1, &r);
+}
+
+// D3D12: DrawIndexedInstanced(indexCount, 1, firstIndex, vertexOffset, 0).
+void D3D12CommandList::drawIndexed(uint32_t indexCount, uint32_t firstIndex, int32_t vertexOffset) {
+  list_->DrawIndexedInstanced(indexCount, 1, firstIndex, vertexOffset, 0);
 }
 
 void D3D12CommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t depth) {

@@ -124,12 +124,18 @@ rhi::ComputePipelineHandle D3D12Device::createComputePipeline(const rhi::Compute
   return std::make_shared<D3D12ComputePipeline>(*this, desc);
 }
 
+rhi::GraphicsPipelineHandle D3D12Device::createGraphicsPipeline(const rhi::GraphicsPipelineDesc& desc) {
+  return std::make_shared<D3D12GraphicsPipeline>(*this, desc);
+}
+
 rhi::BindingSetHandle D3D12Device::createBindingSet(const rhi::BindingSetDesc& desc,
                                                     const rhi::IPipeline& pipeline) {
   if (auto* rt = dynamic_cast<const D3D12RayTracingPipeline*>(&pipeline))
     return std::make_shared<D3D12BindingSet>(*this, desc, rt->rootSignature());
   if (auto* cs = dynamic_cast<const D3D12ComputePipeline*>(&pipeline))
     return std::make_shared<D3D12BindingSet>(*this, desc, cs->rootSignature());
+  if (auto* gfx = dynamic_cast<const D3D12GraphicsPipeline*>(&pipeline))
+    return std::make_shared<D3D12BindingSet>(*this, desc, gfx->rootSignature());
   throw Error("d3d12: createBindingSet needs a pipeline of this device's backend");
 }
 

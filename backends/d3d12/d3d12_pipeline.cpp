@@ -1,9 +1,10 @@
-// Root signatures (from the reflected layout), compute pipelines,
-// ray-tracing state objects and binding sets.
+// Root signatures (from the reflected layout), compute and graphics
+// pipelines, ray-tracing state objects and binding sets.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <list>
 
 #include "d3d12_backend.h"
@@ -67,7 +68,7 @@ ComPtr<ID3D12RootSignature> createRootSignature(D3D12Device& device, const D3D12
 // per space a CBV/SRV/UAV table, a sampler table and one table per unbounded
 // array (root_signature_layout.h).
 D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBindingLayout layout,
-                                       const std::string& name)
+                                       const std::string& name, D3D12_ROOT_SIGNATURE_FLAGS flags)
     : layout_(std::move(layout)), rootLayout_(rhi::computeRootSignatureLayout(layout_)) {
   std::vector<D3D12_ROOT_PARAMETER1> parameters(rootLayout_.parameterCount());
   std::vector<std::vector<D3D12_DESCRIPTOR_RANGE1>> ranges;
@@ -109,7 +110,7 @@ D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBinding
   desc.Version = D3D_ROOT_SIGNATURE_VERSION_1_1;
   desc.Desc_1_1.NumParameters = UINT(parameters.size());
   desc.Desc_1_1.pParameters = parameters.data();
-  desc.Desc_1_1.Flags = D3D12_ROOT_SIGNATURE_FLAG_NONE;
+  desc.Desc_1_1.Flags = flags;
   rootSignature_ = createRootSignature(device, desc, name + " root signature");
 }
 
@@ -124,6 +125,83 @@ D3D12ComputePipeline::D3D12ComputePipeline(D3D12Device& device, const rhi::Compu
   pso.CS = bytecode;
   check(device.handle()->CreateComputePipelineState(&pso, IID_PPV_ARGS(&pipeline_)),
         "CreateComputePipelineState");
+  setName(pipeline_.Get(), desc.debugName);
+}
+
+// D3D12: CreateGraphicsPipelineState with a root signature from the vertex
+// and pixel shaders' merged layouts (ALLOW_INPUT_ASSEMBLER_INPUT_LAYOUT), one
+// TEXCOORD<location> input element per vertex attribute from slot 0,
+// triangles, no culling, no depth or stencil, one render target.
+D3D12GraphicsPipeline::D3D12GraphicsPipeline(D3D12Device& device, const rhi::GraphicsPipelineDesc& desc)
+    : desc_(desc) {
+  const D3D12_SHADER_BYTECODE vs = dxilOf(desc.vertexShader), ps = dxilOf(desc.pixelShader);
+  rhi::PipelineBindingLayout layout;
+  rhi::mergeBindingLayout(layout, desc.vertexShader.bindingLayout, desc.vertexShader.exportName);
+  rhi::mergeBindingLayout(layout, desc.pixelShader.bindingLayout, desc.pixelShader.exportName);
+  rootSignature_ = std::make_unique<D3D12RootSignature>(device, std::move(layout), desc.debugName,
+                                                        D3D12_ROOT_SIGNATURE_FLAG_ALLOW_INPUT_ASSEMBLER_INPUT_LAYOUT);
+
+  std::vector<D3D12_INPUT_ELEMENT_DESC> elements;
+  for (const auto& attribute : desc.vertexLayout.attributes) {
+    D3D12_INPUT_ELEMENT_DESC e{};
+    e.SemanticName = "TEXCOORD";
+    e.SemanticIndex = attribute.location;
+    e.Format = toDxgiFormat(attribute.format);
+    e.InputSlot = 0;
+    e.AlignedByteOffset = attribute.offset;
+    e.InputSlotClass = D3D12_INPUT_CLASSIFICATION_PER_VERTEX_DATA;
+    e.InstanceDataStepRate = 0;
+    elements.push_back(e);
+  }
+
+  D3D12_GRAPHICS_PIPELINE_STATE_DESC pso{};
+  pso.pRootSignature = rootSignature_->handle();
+  pso.VS = vs;
+  pso.PS = ps;
+  // Disabled blending still wants valid factors: the pass-through ONE/ZERO/ADD.
+  D3D12_RENDER_TARGET_BLEND_DESC& blend = pso.BlendState.RenderTarget[0];
+  blend.BlendEnable = FALSE;
+  blend.LogicOpEnable = FALSE;
+  blend.SrcBlend = D3D12_BLEND_ONE;
+  blend.DestBlend = D3D12_BLEND_ZERO;
+  blend.BlendOp = D3D12_BLEND_OP_ADD;
+  blend.SrcBlendAlpha = D3D12_BLEND_ONE;
+  blend.DestBlendAlpha = D3D12_BLEND_ZERO;
+  blend.BlendOpAlpha = D3D12_BLEND_OP_ADD;
+  blend.LogicOp = D3D12_LOGIC_OP_NOOP;
+  blend.RenderTargetWriteMask = D3D12_COLOR_WRITE_ENABLE_ALL;
+  if (desc.blend == rhi::BlendMode::AlphaBlend) {
+    blend.BlendEnable = TRUE;
+    blend.SrcBlend = D3D12_BLEND_SRC_ALPHA;
+    blend.DestBlend = D3D12_BLEND_INV_SRC_ALPHA;
+    blend.DestBlendAlpha = D3D12_BLEND_INV_SRC_ALPHA;
+  }
+  pso.SampleMask = UINT_MAX;
+  pso.RasterizerState.FillMode = D3D12_FILL_MODE_SOLID;
+  pso.RasterizerState.CullMode = D3D12_CULL_MODE_NONE;
+  pso.RasterizerState.FrontCounterClockwise = FALSE;
+  pso.RasterizerState.DepthClipEnable = TRUE;
+  pso.RasterizerState.ConservativeRaster = D3D12_CONSERVATIVE_RASTERIZATION_MODE_OFF;
+  // Depth and stencil off; the functions and ops are the defaults nonetheless.
+  const D3D12_DEPTH_STENCILOP_DESC keep{D3D12_STENCIL_OP_KEEP, D3D12_STENCIL_OP_KEEP, D3D12_STENCIL_OP_KEEP,
+                                        D3D12_COMPARISON_FUNC_ALWAYS};
+  pso.DepthStencilState.DepthEnable = FALSE;
+  pso.DepthStencilState.DepthWriteMask = D3D12_DEPTH_WRITE_MASK_ZERO;
+  pso.DepthStencilState.DepthFunc = D3D12_COMPARISON_FUNC_ALWAYS;
+  pso.DepthStencilState.StencilEnable = FALSE;
+  pso.DepthStencilState.FrontFace = keep;
+  pso.DepthStencilState.BackFace = keep;
+  pso.InputLayout.pInputElementDescs = elements.data();
+  pso.InputLayout.NumElements = UINT(elements.size());
+  pso.IBStripCutValue = D3D12_INDEX_BUFFER_STRIP_CUT_VALUE_DISABLED;
+  pso.PrimitiveTopologyType = D3D12_PRIMITIVE_TOPOLOGY_TYPE_TRIANGLE;
+  pso.NumRenderTargets = 1;
+  pso.RTVFormats[0] = toDxgiFormat(desc.renderTargetFormat);
+  pso.DSVFormat = DXGI_FORMAT_UNKNOWN;
+  pso.SampleDesc.Count = 1;
+  pso.SampleDesc.Quality = 0;
+  device.checkDevice(device.handle()->CreateGraphicsPipelineState(&pso, IID_PPV_ARGS(&pipeline_)),
+                     "CreateGraphicsPipelineState (run with --validation for the reason)");
   setName(pipeline_.Get(), desc.debugName);
 }
 

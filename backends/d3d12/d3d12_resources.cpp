@@ -20,6 +20,8 @@ DXGI_FORMAT toDxgiFormat(rhi::Format format) {
       return DXGI_FORMAT_R32G32B32A32_FLOAT;
     case rhi::Format::RGB32_FLOAT:
       return DXGI_FORMAT_R32G32B32_FLOAT;
+    case rhi::Format::RG32_FLOAT:
+      return DXGI_FORMAT_R32G32_FLOAT;
     case rhi::Format::R32_UINT:
       return DXGI_FORMAT_R32_UINT;
     case rhi::Format::R16_UINT:
@@ -35,8 +37,10 @@ D3D12_RESOURCE_STATES toResourceStates(rhi::ResourceState state) {
   switch (state) {
     case S::Undefined:
       return D3D12_RESOURCE_STATE_COMMON;
+    // Both shader-resource states: pixel shaders of graphics pipelines read
+    // the same binding sets' resources as every other stage.
     case S::ShaderResource:
-      return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
+      return D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE | D3D12_RESOURCE_STATE_PIXEL_SHADER_RESOURCE;
     case S::UnorderedAccess:
       return D3D12_RESOURCE_STATE_UNORDERED_ACCESS;
     case S::ConstantBuffer:
@@ -57,6 +61,8 @@ D3D12_RESOURCE_STATES toResourceStates(rhi::ResourceState state) {
       return D3D12_RESOURCE_STATE_COPY_DEST;  // readback heaps only
     case S::RenderTarget:
       return D3D12_RESOURCE_STATE_RENDER_TARGET;
+    case S::VertexInput:
+      return D3D12_RESOURCE_STATE_VERTEX_AND_CONSTANT_BUFFER | D3D12_RESOURCE_STATE_INDEX_BUFFER;
     case S::Present:
       return D3D12_RESOURCE_STATE_PRESENT;
   }
@@ -142,7 +148,7 @@ DXGI_FORMAT D3D12Texture::format() const {
 }
 
 // D3D12: CreateCommittedResource (TEXTURE2D, one mip) on a DEFAULT heap;
-// storage textures allow unordered access.
+// storage textures allow unordered access, render targets RTVs.
 D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : desc_(desc) {
   D3D12_RESOURCE_DESC rd{};
   rd.Dimension = D3D12_RESOURCE_DIMENSION_TEXTURE2D;

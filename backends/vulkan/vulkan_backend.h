@@ -163,6 +163,22 @@ class VulkanComputePipeline final : public rhi::IComputePipeline {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
+class VulkanGraphicsPipeline final : public rhi::IGraphicsPipeline {
+ public:
+  VulkanGraphicsPipeline(VulkanDevice& device, const rhi::GraphicsPipelineDesc& desc);
+  ~VulkanGraphicsPipeline() override;
+  const rhi::GraphicsPipelineDesc& desc() const override { return desc_; }
+  const rhi::PipelineBindingLayout& bindingLayout() const override { return layout_->bindingLayout(); }
+  const VulkanPipelineLayout& layout() const { return *layout_; }
+  VkPipeline handle() const { return pipeline_; }
+
+ private:
+  VulkanDevice& device_;
+  rhi::GraphicsPipelineDesc desc_;
+  std::unique_ptr<VulkanPipelineLayout> layout_;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
 class VulkanRayTracingPipeline final : public rhi::IRayTracingPipeline,
                                        public std::enable_shared_from_this<VulkanRayTracingPipeline> {
  public:
@@ -257,6 +273,12 @@ class VulkanCommandList final : public rhi::ICommandList {
                                 uint32_t count) override;
   void setRayTracingState(const rhi::RayTracingState& state) override;
   void setComputeState(const rhi::ComputeState& state) override;
+  void setGraphicsState(const rhi::GraphicsState& state) override;
+  void beginRendering(rhi::ITexture* target, const float* clearColor) override;
+  void endRendering() override;
+  void setViewport(const rhi::Viewport& viewport) override;
+  void setScissor(const rhi::ScissorRect& rect) override;
+  void drawIndexed(uint32_t indexCount, uint32_t firstIndex, int32_t vertexOffset) override;
   void setPushConstants(const void* data, size_t bytes) override;
   void dispatchRays(uint32_t width, uint32_t height, uint32_t depth) override;
   void dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) override;
@@ -298,6 +320,7 @@ class VulkanDevice final : public rhi::IDevice {
   rhi::rt::AccelStructHandle createAccelStruct(const rhi::rt::AccelStructDesc& desc) override;
   rhi::RayTracingPipelineHandle createRayTracingPipeline(const rhi::RayTracingPipelineDesc& desc) override;
   rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
+  rhi::GraphicsPipelineHandle createGraphicsPipeline(const rhi::GraphicsPipelineDesc& desc) override;
   rhi::BindingSetHandle createBindingSet(const rhi::BindingSetDesc& desc, const rhi::IPipeline& pipeline) override;
   rhi::TimerQueryHandle createTimerQuery() override;
   rhi::CommandListHandle createCommandList(const std::string& debugName) override;
@@ -321,6 +344,11 @@ class VulkanDevice final : public rhi::IDevice {
   VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
   VkQueue queue() const { return queue_; }
   bool canPresent() const { return canPresent_; }
+  // Whether VK_KHR_dynamic_rendering is enabled (the raster subset needs it).
+  bool dynamicRendering() const { return dynamicRendering_; }
+  // The shader stages a barrier for shader access waits on or blocks: ray
+  // tracing and compute, plus vertex and fragment on a graphics queue.
+  VkPipelineStageFlags shaderStages() const { return shaderStages_; }
   uint32_t queueFamily() const { return queueFamily_; }
   uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
   uint64_t scratchAlignment() const { return scratchAlignment_; }
@@ -343,6 +371,8 @@ class VulkanDevice final : public rhi::IDevice {
   double timestampPeriodNs_ = 1.0;
   uint32_t timestampValidBits_ = 64;
   bool canPresent_ = false;
+  bool dynamicRendering_ = false;
+  VkPipelineStageFlags shaderStages_ = 0;
   uint64_t validationBaseline_ = 0;
   std::vector<VulkanCommandList*> inFlight_;
 };

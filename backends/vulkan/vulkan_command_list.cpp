@@ -14,20 +14,18 @@ struct StageAccess {
   VkAccessFlags access;
 };
 
-constexpr VkPipelineStageFlags kShaderStages =
-    VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-
-StageAccess stageAccess(rhi::ResourceState state) {
+// `shaderStages`: the device's (VulkanDevice::shaderStages).
+StageAccess stageAccess(rhi::ResourceState state, VkPipelineStageFlags shaderStages) {
   using S = rhi::ResourceState;
   switch (state) {
     case S::Undefined:
       return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
     case S::ShaderResource:
-      return {kShaderStages, VK_ACCESS_SHADER_READ_BIT};
+      return {shaderStages, VK_ACCESS_SHADER_READ_BIT};
     case S::UnorderedAccess:
-      return {kShaderStages, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+      return {shaderStages, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
     case S::ConstantBuffer:
-      return {kShaderStages, VK_ACCESS_UNIFORM_READ_BIT};
+      return {shaderStages, VK_ACCESS_UNIFORM_READ_BIT};
     case S::CopySource:
       return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
     case S::CopyDest:
@@ -39,7 +37,7 @@ StageAccess stageAccess(rhi::ResourceState state) {
               VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
                   VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR};
     case S::AccelStructRead:
-      return {kShaderStages | VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+      return {shaderStages | VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
               VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR};
     case S::ShaderTable:
       return {VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT};
@@ -48,6 +46,9 @@ StageAccess stageAccess(rhi::ResourceState state) {
     case S::RenderTarget:
       return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
               VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
+    case S::VertexInput:
+      return {VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+              VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT};
     // The presentation engine's reads are ordered by the present semaphore.
     case S::Present:
       return {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0};
@@ -149,7 +150,7 @@ std::shared_ptr<VulkanBuffer> VulkanCommandList::makeTransientBuffer(uint64_t by
 
 void VulkanCommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState state) {
   if (!needsBarrier(buffer->state, state)) return;
-  auto from = stageAccess(buffer->state), to = stageAccess(state);
+  auto from = stageAccess(buffer->state, device_.shaderStages()), to = stageAccess(state, device_.shaderStages());
   // Buffers and acceleration structures share one global memory barrier
   // shape; drivers handle these as cheaply as buffer-range barriers.
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -162,7 +163,7 @@ void VulkanCommandList::setBufferState(rhi::IBuffer* buffer, rhi::ResourceState 
 
 void VulkanCommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::ResourceState state) {
   if (!needsBarrier(as->state, state)) return;
-  auto from = stageAccess(as->state), to = stageAccess(state);
+  auto from = stageAccess(as->state, device_.shaderStages()), to = stageAccess(state, device_.shaderStages());
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = from.access;
   barrier.dstAccessMask = to.access;
@@ -174,7 +175,7 @@ void VulkanCommandList::setAccelStructState(rhi::rt::IAccelStruct* as, rhi::Reso
 void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceState state) {
   if (!needsBarrier(texture->state, state)) return;
   auto* t = static_cast<VulkanTexture*>(texture);
-  auto from = stageAccess(texture->state), to = stageAccess(state);
+  auto from = stageAccess(texture->state, device_.shaderStages()), to = stageAccess(state, device_.shaderStages());
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = from.access;
   barrier.dstAccessMask = to.access;
@@ -398,6 +399,69 @@ void VulkanCommandList::setComputeState(const rhi::ComputeState& state) {
                             nullptr);
   boundLayout_ = pipeline->layout().handle();
   boundStages_ = pipeline->layout().stages();
+}
+
+void VulkanCommandList::setGraphicsState(const rhi::GraphicsState& state) {
+  auto* pipeline = static_cast<VulkanGraphicsPipeline*>(state.pipeline);
+  transitionBindingSets(state.bindingSets);
+  setBufferState(state.vertexBuffer, rhi::ResourceState::VertexInput);
+  setBufferState(state.indexBuffer, rhi::ResourceState::VertexInput);
+  vkCmdBindPipeline(commandBuffer_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->handle());
+  std::vector<VkDescriptorSet> sets;
+  for (auto* s : state.bindingSets) sets.push_back(static_cast<VulkanBindingSet*>(s)->handle());
+  if (!sets.empty())
+    vkCmdBindDescriptorSets(commandBuffer_, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                            pipeline->layout().handle(), 0, uint32_t(sets.size()), sets.data(), 0,
+                            nullptr);
+  VkBuffer vertexBuffer = static_cast<VulkanBuffer*>(state.vertexBuffer)->handle();
+  VkDeviceSize vertexOffset = state.vertexOffset;
+  vkCmdBindVertexBuffers(commandBuffer_, 0, 1, &vertexBuffer, &vertexOffset);
+  vkCmdBindIndexBuffer(commandBuffer_, static_cast<VulkanBuffer*>(state.indexBuffer)->handle(),
+                       state.indexOffset,
+                       state.indexFormat == rhi::Format::R32_UINT ? VK_INDEX_TYPE_UINT32
+                                                                  : VK_INDEX_TYPE_UINT16);
+  boundLayout_ = pipeline->layout().handle();
+  boundStages_ = pipeline->layout().stages();
+}
+
+void VulkanCommandList::beginRendering(rhi::ITexture* target, const float* clearColor) {
+  auto* t = static_cast<VulkanTexture*>(target);
+  setTextureState(target, rhi::ResourceState::RenderTarget);
+  VkRenderingAttachmentInfoKHR color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
+  color.imageView = t->view();
+  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.loadOp = clearColor ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  if (clearColor)
+    for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = clearColor[i];
+  const auto& d = target->desc();
+  VkRenderingInfoKHR info{VK_STRUCTURE_TYPE_RENDERING_INFO_KHR};
+  info.renderArea = {{0, 0}, {d.width, d.height}};
+  info.layerCount = 1;
+  info.colorAttachmentCount = 1;
+  info.pColorAttachments = &color;
+  vkCmdBeginRenderingKHR(commandBuffer_, &info);
+  setViewport({0, 0, float(d.width), float(d.height)});
+  setScissor({0, 0, d.width, d.height});
+}
+
+void VulkanCommandList::endRendering() {
+  vkCmdEndRenderingKHR(commandBuffer_);
+}
+
+void VulkanCommandList::setViewport(const rhi::Viewport& viewport) {
+  // Negative height (Vulkan 1.1): clip-space +y points up, as on D3D12.
+  VkViewport v{viewport.x, viewport.y + viewport.height, viewport.width, -viewport.height, 0.0f, 1.0f};
+  vkCmdSetViewport(commandBuffer_, 0, 1, &v);
+}
+
+void VulkanCommandList::setScissor(const rhi::ScissorRect& rect) {
+  VkRect2D r{{rect.x, rect.y}, {rect.width, rect.height}};
+  vkCmdSetScissor(commandBuffer_, 0, 1, &r);
+}
+
+void VulkanCommandList::drawIndexed(uint32_t indexCount, uint32_t firstIndex, int32_t vertexOffset) {
+  vkCmdDrawIndexed(commandBuffer_, indexCount, 1, firstIndex, vertexOffset, 0);
 }
 
 void VulkanCommandList::setPushConstants(const void* data, size_t bytes) {

@@ -41,6 +41,9 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   }
   if (family < 0) throw Error(fmt::format("vulkan: {} has no compute queue", adapter_.name));
   queueFamily_ = uint32_t(family);
+  shaderStages_ = VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+  if (families[family].queueFlags & VK_QUEUE_GRAPHICS_BIT)
+    shaderStages_ |= VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   timestampValidBits_ = families[family].timestampValidBits;
 
   VkPhysicalDeviceProperties props{};
@@ -112,6 +115,25 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   v12.descriptorBindingPartiallyBound = VK_TRUE;
   rtFeatures.pNext = &asFeatures;
   asFeatures.pNext = &v12;
+  // The raster subset draws with dynamic rendering (core in Vulkan 1.3; the
+  // instance asks for 1.2, so through the extension). Optional: without it,
+  // only createGraphicsPipeline fails.
+  VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamicRendering{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
+  if ((families[family].queueFlags & VK_QUEUE_GRAPHICS_BIT) &&
+      hasDeviceExtension(physicalDevice_, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME)) {
+    VkPhysicalDeviceDynamicRenderingFeaturesKHR supportedDynamic{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
+    VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    query.pNext = &supportedDynamic;
+    vkGetPhysicalDeviceFeatures2(physicalDevice_, &query);
+    if (supportedDynamic.dynamicRendering) {
+      dynamicRendering.dynamicRendering = VK_TRUE;
+      v12.pNext = &dynamicRendering;
+      extensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
+      dynamicRendering_ = true;
+    }
+  }
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &rtFeatures;
 
@@ -207,6 +229,14 @@ rhi::ComputePipelineHandle VulkanDevice::createComputePipeline(const rhi::Comput
   return std::make_shared<VulkanComputePipeline>(*this, desc);
 }
 
+rhi::GraphicsPipelineHandle VulkanDevice::createGraphicsPipeline(const rhi::GraphicsPipelineDesc& desc) {
+  if (!dynamicRendering_)
+    throw Error(fmt::format("vulkan: {} cannot draw: its queue has no graphics or it lacks "
+                            "VK_KHR_dynamic_rendering",
+                            adapter_.name));
+  return std::make_shared<VulkanGraphicsPipeline>(*this, desc);
+}
+
 rhi::BindingSetHandle VulkanDevice::createBindingSet(const rhi::BindingSetDesc& desc,
                                                      const rhi::IPipeline& pipeline) {
   const VulkanPipelineLayout* layout = nullptr;
@@ -214,6 +244,8 @@ rhi::BindingSetHandle VulkanDevice::createBindingSet(const rhi::BindingSetDesc& 
     layout = &rt->layout();
   else if (auto* cs = dynamic_cast<const VulkanComputePipeline*>(&pipeline))
     layout = &cs->layout();
+  else if (auto* gp = dynamic_cast<const VulkanGraphicsPipeline*>(&pipeline))
+    layout = &gp->layout();
   else
     throw Error("vulkan: createBindingSet needs a pipeline of this device's backend");
   return std::make_shared<VulkanBindingSet>(*this, desc, *layout);

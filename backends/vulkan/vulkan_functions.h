@@ -96,6 +96,14 @@
   X(vkCmdBindDescriptorSets)                       \
   X(vkCmdPushConstants)                            \
   X(vkCmdDispatch)                                 \
+  X(vkCreateGraphicsPipelines)                     \
+  X(vkCmdBindVertexBuffers)                        \
+  X(vkCmdBindIndexBuffer)                          \
+  X(vkCmdSetViewport)                              \
+  X(vkCmdSetScissor)                               \
+  X(vkCmdDrawIndexed)                              \
+  X(vkCmdBeginRenderingKHR)                        \
+  X(vkCmdEndRenderingKHR)                          \
   X(vkCreateAccelerationStructureKHR)              \
   X(vkDestroyAccelerationStructureKHR)             \
   X(vkGetAccelerationStructureBuildSizesKHR)       \

@@ -44,6 +44,10 @@ VkShaderStageFlagBits toVkStage(rhi::ShaderStage stage) {
       return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
     case rhi::ShaderStage::Intersection:
       return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    case rhi::ShaderStage::Vertex:
+      return VK_SHADER_STAGE_VERTEX_BIT;
+    case rhi::ShaderStage::Pixel:
+      return VK_SHADER_STAGE_FRAGMENT_BIT;
   }
   return VK_SHADER_STAGE_ALL;
 }
@@ -138,6 +142,108 @@ VulkanComputePipeline::VulkanComputePipeline(VulkanDevice& device,
 }
 
 VulkanComputePipeline::~VulkanComputePipeline() {
+  vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
+}
+
+VulkanGraphicsPipeline::VulkanGraphicsPipeline(VulkanDevice& device,
+                                               const rhi::GraphicsPipelineDesc& desc)
+    : device_(device), desc_(desc) {
+  rhi::PipelineBindingLayout reflected;
+  rhi::mergeBindingLayout(reflected, desc.vertexShader.bindingLayout, desc.vertexShader.exportName);
+  rhi::mergeBindingLayout(reflected, desc.pixelShader.bindingLayout, desc.pixelShader.exportName);
+  layout_ = std::make_unique<VulkanPipelineLayout>(
+      device_, std::move(reflected), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+
+  std::vector<VkVertexInputAttributeDescription> attributes;
+  for (const auto& a : desc.vertexLayout.attributes)
+    attributes.push_back({a.location, 0, toVkFormat(a.format), a.offset});
+  VkVertexInputBindingDescription binding{0, desc.vertexLayout.stride, VK_VERTEX_INPUT_RATE_VERTEX};
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertexInput.vertexBindingDescriptionCount = 1;
+  vertexInput.pVertexBindingDescriptions = &binding;
+  vertexInput.vertexAttributeDescriptionCount = uint32_t(attributes.size());
+  vertexInput.pVertexAttributeDescriptions = attributes.data();
+  VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  inputAssembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineColorBlendAttachmentState blend{};
+  blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                         VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  if (desc.blend == rhi::BlendMode::AlphaBlend) {
+    blend.blendEnable = VK_TRUE;
+    blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+    blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    blend.colorBlendOp = VK_BLEND_OP_ADD;
+    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    blend.alphaBlendOp = VK_BLEND_OP_ADD;
+  }
+  VkPipelineColorBlendStateCreateInfo colorBlend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  colorBlend.attachmentCount = 1;
+  colorBlend.pAttachments = &blend;
+  // No depth attachment, so no depth-stencil state.
+  const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = 2;
+  dynamic.pDynamicStates = dynamicStates;
+  const VkFormat colorFormat = toVkFormat(desc.renderTargetFormat);
+  VkPipelineRenderingCreateInfoKHR rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO_KHR};
+  rendering.colorAttachmentCount = 1;
+  rendering.pColorAttachmentFormats = &colorFormat;
+
+  VkShaderModule vertexModule = createModule(device_, desc.vertexShader);
+  VkShaderModule pixelModule = VK_NULL_HANDLE;
+  try {
+    pixelModule = createModule(device_, desc.pixelShader);
+  } catch (...) {
+    vkDestroyShaderModule(device_.handle(), vertexModule, nullptr);
+    throw;
+  }
+  VkPipelineShaderStageCreateInfo stages[2] = {
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vertexModule;
+  stages[0].pName = desc.vertexShader.entryPoint.c_str();
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = pixelModule;
+  stages[1].pName = desc.pixelShader.entryPoint.c_str();
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.pNext = &rendering;
+  info.stageCount = 2;
+  info.pStages = stages;
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &inputAssembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pColorBlendState = &colorBlend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout_->handle();
+  VkResult r =
+      vkCreateGraphicsPipelines(device_.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
+  vkDestroyShaderModule(device_.handle(), vertexModule, nullptr);
+  vkDestroyShaderModule(device_.handle(), pixelModule, nullptr);
+  check(r, "vkCreateGraphicsPipelines");
+  device_.setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), desc.debugName);
+}
+
+VulkanGraphicsPipeline::~VulkanGraphicsPipeline() {
   vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
 }
 

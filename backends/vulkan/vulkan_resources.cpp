@@ -23,6 +23,8 @@ VkFormat toVkFormat(rhi::Format format) {
       return VK_FORMAT_R32_UINT;
     case rhi::Format::R16_UINT:
       return VK_FORMAT_R16_UINT;
+    case rhi::Format::RG32_FLOAT:
+      return VK_FORMAT_R32G32_SFLOAT;
     case rhi::Format::Unknown:
       break;
   }
@@ -46,6 +48,8 @@ VulkanBuffer::VulkanBuffer(VulkanDevice& device, const rhi::BufferDesc& desc, ui
     usage |= VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR;
   if (hasFlag(desc.usage, BufferUsage::ShaderTable))
     usage |= VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR;
+  if (hasFlag(desc.usage, BufferUsage::VertexBuffer)) usage |= VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+  if (hasFlag(desc.usage, BufferUsage::IndexBuffer)) usage |= VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
 
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = desc.byteSize + (alignment > 1 ? alignment : 0);

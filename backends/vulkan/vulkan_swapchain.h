@@ -21,10 +21,6 @@ class VulkanSwapchain final : public rhi::ISwapchain {
   void setVsync(bool vsync) override;
   uint32_t imageCount() const override { return uint32_t(images_.size()); }
 
-  // For the viewer's UI renderer (vulkan_interop.h).
-  VkFormat vkFormat() const { return vkFormat_; }
-  VkImageView imageView(uint32_t index) const { return images_.at(index)->view(); }
-  uint32_t currentImage() const { return imageIndex_; }
 
  private:
   void create();

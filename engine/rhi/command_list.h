@@ -28,6 +28,28 @@ struct ComputeState {
   std::vector<IBindingSet*> bindingSets;
 };
 
+// The raster subset's state (pipeline.h). The vertex buffer holds
+// `pipeline->desc().vertexLayout.stride`-byte vertices from vertexOffset on;
+// the index buffer R16_UINT or R32_UINT indices from indexOffset on.
+struct GraphicsState {
+  IGraphicsPipeline* pipeline = nullptr;
+  std::vector<IBindingSet*> bindingSets;  // index = space; graphics pipelines only read resources
+  IBuffer* vertexBuffer = nullptr;        // BufferUsage::VertexBuffer
+  uint64_t vertexOffset = 0;
+  IBuffer* indexBuffer = nullptr;         // BufferUsage::IndexBuffer
+  uint64_t indexOffset = 0;
+  Format indexFormat = Format::R16_UINT;
+};
+
+// Pixels, origin at the target's top-left corner.
+struct Viewport {
+  float x = 0, y = 0, width = 0, height = 0;
+};
+struct ScissorRect {
+  int32_t x = 0, y = 0;
+  uint32_t width = 0, height = 0;
+};
+
 // D3D12: ID3D12GraphicsCommandList4 + allocator. Vulkan: VkCommandBuffer + pool.
 class ICommandList {
  public:
@@ -93,6 +115,36 @@ class ICommandList {
   // Applies to the pipeline bound last. D3D12: SetComputeRoot32BitConstants.
   // Vulkan: vkCmdPushConstants.
   virtual void setPushConstants(const void* data, size_t bytes) = 0;
+  // Moves the vertex and index buffers to VertexInput and the binding sets'
+  // resources to their shader states (the barriers go before the rendering
+  // pass, so between beginRendering and endRendering the state may only
+  // change pipelines, sets and buffers already in those states).
+  // D3D12: SetPipelineState + SetGraphicsRootSignature + descriptor tables +
+  // IASetPrimitiveTopology(TRIANGLELIST) + IASetVertexBuffers + IASetIndexBuffer.
+  // Vulkan: vkCmdBindPipeline(GRAPHICS) + vkCmdBindDescriptorSets +
+  // vkCmdBindVertexBuffers + vkCmdBindIndexBuffer.
+  virtual void setGraphicsState(const GraphicsState& state) = 0;
+  // Starts drawing into `target` (TextureUsage::RenderTarget, moved to
+  // RenderTarget first), keeping its contents, or clearing them to
+  // `clearColor` when given; viewport and scissor start as the whole target.
+  // No copies, barriers, dispatches or queries until endRendering.
+  // D3D12: ResourceBarrier + OMSetRenderTargets (an RTV in the list's own
+  // descriptor heap) + ClearRenderTargetView + RSSetViewports + RSSetScissorRects.
+  // Vulkan: vkCmdPipelineBarrier + vkCmdBeginRendering (LOAD_OP_LOAD or CLEAR,
+  // STORE_OP_STORE) + vkCmdSetViewport + vkCmdSetScissor.
+  virtual void beginRendering(ITexture* target, const float* clearColor = nullptr) = 0;
+  // D3D12: nothing to record. Vulkan: vkCmdEndRendering.
+  virtual void endRendering() = 0;
+  // Depth range [0, 1]. D3D12: RSSetViewports. Vulkan: vkCmdSetViewport with
+  // y = y + height and a negative height, so clip space is +y up as on D3D12.
+  virtual void setViewport(const Viewport& viewport) = 0;
+  // D3D12: RSSetScissorRects. Vulkan: vkCmdSetScissor.
+  virtual void setScissor(const ScissorRect& rect) = 0;
+  // Draws indexCount indices from firstIndex on, each added to vertexOffset.
+  // D3D12: DrawIndexedInstanced(indexCount, 1, firstIndex, vertexOffset, 0).
+  // Vulkan: vkCmdDrawIndexed(indexCount, 1, firstIndex, vertexOffset, 0).
+  virtual void drawIndexed(uint32_t indexCount, uint32_t firstIndex = 0, int32_t vertexOffset = 0) = 0;
+
   // D3D12: DispatchRays with the shader table's ranges.
   // Vulkan: vkCmdTraceRaysKHR with the shader table's strided regions.
   virtual void dispatchRays(uint32_t width, uint32_t height, uint32_t depth = 1) = 0;

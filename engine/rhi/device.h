@@ -66,6 +66,10 @@ class IDevice {
   virtual RayTracingPipelineHandle createRayTracingPipeline(const RayTracingPipelineDesc& desc) = 0;
   // D3D12: CreateComputePipelineState. Vulkan: vkCreateComputePipelines.
   virtual ComputePipelineHandle createComputePipeline(const ComputePipelineDesc& desc) = 0;
+  // The raster subset (pipeline.h).
+  // D3D12: CreateGraphicsPipelineState + root signature. Vulkan: vkCreateGraphicsPipelines
+  // (dynamic rendering: VK_KHR_dynamic_rendering, enabled where the device has it).
+  virtual GraphicsPipelineHandle createGraphicsPipeline(const GraphicsPipelineDesc& desc) = 0;
   // Checks the items against the pipeline's reflected layout for that space
   // (every slot filled, types matching) and throws penumbra::Error otherwise.
   // D3D12: descriptors written into a shader-visible heap range.

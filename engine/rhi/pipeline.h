@@ -177,11 +177,62 @@ struct ComputePipelineDesc {
   std::string debugName;
 };
 
+// ---- The raster subset ----------------------------------------------------
+// Enough rasterisation for the viewer's UI and overlays, the same on both
+// APIs: indexed triangle lists from one vertex buffer, no depth or stencil,
+// no culling, one render target, optional alpha blending. Clip space is
+// D3D12's on both backends (+y up; Vulkan flips its viewport), so one vertex
+// shader serves both.
+
+// One per-vertex attribute. `location` is GLSL's `layout(location = N) in`
+// and HLSL's semantic TEXCOORD<N>, which the shared dialect's
+// PT_VERTEX_INPUT(N, ...) declares on both sides.
+// D3D12: a D3D12_INPUT_ELEMENT_DESC (TEXCOORD, N, format, slot 0, offset, PER_VERTEX_DATA).
+// Vulkan: a VkVertexInputAttributeDescription (location N, binding 0, format, offset).
+struct VertexAttribute {
+  uint32_t location = 0;
+  Format format = Format::RG32_FLOAT;  // RG32_FLOAT, RGB32_FLOAT, RGBA32_FLOAT or RGBA8_UNORM
+  uint32_t offset = 0;                 // bytes from the vertex's start
+};
+
+// One vertex buffer of `stride`-byte vertices.
+// D3D12: D3D12_INPUT_LAYOUT_DESC + the stride of IASetVertexBuffers' view.
+// Vulkan: one VkVertexInputBindingDescription (binding 0, INPUT_RATE_VERTEX).
+struct VertexLayout {
+  uint32_t stride = 0;
+  std::vector<VertexAttribute> attributes;
+};
+
+enum class BlendMode : uint8_t {
+  Opaque,      // the pixel shader's output replaces the target
+  AlphaBlend,  // colour = src * src.a + dst * (1 - src.a); alpha = src.a + dst.a * (1 - src.a)
+};
+
+struct GraphicsPipelineDesc {
+  ShaderDesc vertexShader;  // ShaderStage::Vertex
+  ShaderDesc pixelShader;   // ShaderStage::Pixel, writing SV_Target0 / location 0
+  VertexLayout vertexLayout;
+  BlendMode blend = BlendMode::Opaque;
+  Format renderTargetFormat = Format::RGBA8_UNORM;  // RGBA8_UNORM or BGRA8_UNORM
+  std::string debugName;
+};
+
 class IPipeline {
  public:
   virtual ~IPipeline() = default;
   virtual const PipelineBindingLayout& bindingLayout() const = 0;
 };
+
+// D3D12: ID3D12PipelineState from a D3D12_GRAPHICS_PIPELINE_STATE_DESC
+// (TRIANGLE topology, CULL_NONE, depth off, one RTV format) + root signature.
+// Vulkan: VkPipeline from vkCreateGraphicsPipelines for dynamic rendering
+// (VkPipelineRenderingCreateInfo: one colour format), dynamic viewport and
+// scissor, CULL_MODE_NONE, no depth.
+class IGraphicsPipeline : public IPipeline {
+ public:
+  virtual const GraphicsPipelineDesc& desc() const = 0;
+};
+using GraphicsPipelineHandle = std::shared_ptr<IGraphicsPipeline>;
 
 // D3D12: ID3D12PipelineState (compute) + root signature.
 // Vulkan: VkPipeline (compute) + VkPipelineLayout.

@@ -11,6 +11,7 @@ uint32_t formatByteSize(Format format) {
     case Format::RGB32_FLOAT: return 12;
     case Format::R32_UINT: return 4;
     case Format::R16_UINT: return 2;
+    case Format::RG32_FLOAT: return 8;
     case Format::Unknown: return 0;
   }
   return 0;
@@ -42,6 +43,7 @@ const char* resourceStateName(ResourceState state) {
     case ResourceState::ShaderTable: return "ShaderTable";
     case ResourceState::HostRead: return "HostRead";
     case ResourceState::RenderTarget: return "RenderTarget";
+    case ResourceState::VertexInput: return "VertexInput";
     case ResourceState::Present: return "Present";
   }
   return "?";
@@ -55,6 +57,8 @@ const char* shaderStageName(ShaderStage stage) {
     case ShaderStage::ClosestHit: return "closest hit";
     case ShaderStage::AnyHit: return "any hit";
     case ShaderStage::Intersection: return "intersection";
+    case ShaderStage::Vertex: return "vertex";
+    case ShaderStage::Pixel: return "pixel";
   }
   return "?";
 }

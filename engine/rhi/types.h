@@ -17,6 +17,7 @@ enum class Format : uint8_t {
   R16_UINT,
   RGBA8_SRGB,     // D3D12: DXGI_FORMAT_R8G8B8A8_UNORM_SRGB Vulkan: VK_FORMAT_R8G8B8A8_SRGB (sampled colour
                   // textures; the sampler decodes sRGB to linear before filtering)
+  RG32_FLOAT,     // D3D12: DXGI_FORMAT_R32G32_FLOAT        Vulkan: VK_FORMAT_R32G32_SFLOAT (vertex attributes)
 };
 uint32_t formatByteSize(Format format);
 
@@ -33,6 +34,8 @@ enum class BufferUsage : uint32_t {
   ShaderTable = 1 << 4,          // shader binding table records
   CopySource = 1 << 5,
   CopyDest = 1 << 6,
+  VertexBuffer = 1 << 7,         // D3D12: IASetVertexBuffers. Vulkan: VERTEX_BUFFER
+  IndexBuffer = 1 << 8,          // D3D12: IASetIndexBuffer. Vulkan: INDEX_BUFFER
 };
 constexpr BufferUsage operator|(BufferUsage a, BufferUsage b) {
   return BufferUsage(uint32_t(a) | uint32_t(b));
@@ -71,6 +74,9 @@ enum class ResourceState : uint8_t {
   HostRead,              // mapped and read by the CPU after a copy
   RenderTarget,          // drawn into by raster passes (the viewer's UI); D3D12 RENDER_TARGET,
                          // Vulkan COLOR_ATTACHMENT_OPTIMAL
+  VertexInput,           // vertex and index buffers read by draws; D3D12
+                         // VERTEX_AND_CONSTANT_BUFFER | INDEX_BUFFER (upload heaps' GENERIC_READ
+                         // includes both), Vulkan VERTEX_INPUT stage, VERTEX_ATTRIBUTE_READ | INDEX_READ
   Present,               // a back buffer handed to the swapchain; D3D12 PRESENT, Vulkan PRESENT_SRC_KHR
 };
 const char* resourceStateName(ResourceState state);
@@ -82,6 +88,8 @@ enum class ShaderStage : uint8_t {
   ClosestHit,
   AnyHit,
   Intersection,
+  Vertex,  // D3D12: vs_6_0. Vulkan: VERTEX
+  Pixel,   // D3D12: ps_6_0. Vulkan: FRAGMENT
 };
 const char* shaderStageName(ShaderStage stage);
 

@@ -22,14 +22,4 @@ namespace penumbra::rhi::validation {
 // Puts the validation layer in front of a backend's device.
 DeviceHandle wrapDevice(DeviceHandle backendDevice);
 
-// The backend's object behind a wrapper, or the object itself when it is not
-// one. For backend code reached through the interfaces with objects the
-// application holds (vulkan_interop.h).
-IDevice& backendObject(IDevice& device);
-ICommandList& backendObject(ICommandList& commandList);
-ISwapchain& backendObject(ISwapchain& swapchain);
-const IPipeline& backendObject(const IPipeline& pipeline);
-IShaderTable* backendObject(IShaderTable* shaderTable);
-IBindingSet* backendObject(IBindingSet* bindingSet);
-
 }  // namespace penumbra::rhi::validation

@@ -58,6 +58,12 @@ std::string bufferStateProblem(const BufferDesc& d, ResourceState state) {
       return upload ? "is an upload buffer, which copies cannot write" : "";
     case ResourceState::HostRead:
       return readback ? "" : "is not a readback buffer";
+    case ResourceState::VertexInput:
+      if (readback) return "is a readback buffer, which draws cannot read";
+      return hasFlag(d.usage, BufferUsage::VertexBuffer) ||
+                     hasFlag(d.usage, BufferUsage::IndexBuffer)
+                 ? ""
+                 : "lacks BufferUsage::VertexBuffer and BufferUsage::IndexBuffer";
     case ResourceState::Undefined:
     case ResourceState::AccelStructWrite:
     case ResourceState::AccelStructRead:
@@ -99,10 +105,24 @@ void ValidationCommandList::requireOpen(const char* call) const {
   if (!open_) fail(call, "command list '{}' is not open", debugName_);
 }
 
+void ValidationCommandList::requireOutsideRendering(const char* call) const {
+  requireOpen(call);
+  if (renderTarget_)
+    fail(call, "command list '{}' is rendering into {}; call endRendering first", debugName_,
+         nameOf(renderTarget_->desc()));
+}
+
+void ValidationCommandList::requireInsideRendering(const char* call) const {
+  requireOpen(call);
+  if (!renderTarget_) fail(call, "command list '{}': no beginRendering before it", debugName_);
+}
+
 void ValidationCommandList::open() {
   if (open_) fail("open", "command list '{}' is already open", debugName_);
   backend_->open();
   open_ = true;
+  renderTarget_ = nullptr;
+  boundGraphics_ = nullptr;
   bound_ = Bound::Nothing;
   boundPushConstantBytes_ = 0;
   runningQueries_.clear();
@@ -120,7 +140,7 @@ void ValidationCommandList::close() {
 void ValidationCommandList::writeBuffer(IBuffer* buffer, const void* data, size_t bytes,
                                         uint64_t offset) {
   const char* call = "writeBuffer";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (!buffer) fail(call, "command list '{}': no buffer", debugName_);
   const BufferDesc& d = buffer->desc();
   if (!fits(offset, bytes, d.byteSize))
@@ -132,7 +152,7 @@ void ValidationCommandList::writeBuffer(IBuffer* buffer, const void* data, size_
 
 void ValidationCommandList::writeTexture(ITexture* texture, const void* data, size_t bytes) {
   const char* call = "writeTexture";
-  requireOpen(call);
+  requireOutsideRendering(call);
   const TextureDesc& d = texture->desc();
   const uint64_t expected = uint64_t(d.width) * d.height * formatByteSize(d.format);
   if (bytes != expected)
@@ -144,7 +164,7 @@ void ValidationCommandList::writeTexture(ITexture* texture, const void* data, si
 void ValidationCommandList::copyBuffer(IBuffer* dst, uint64_t dstOffset, IBuffer* src,
                                        uint64_t srcOffset, uint64_t bytes) {
   const char* call = "copyBuffer";
-  requireOpen(call);
+  requireOutsideRendering(call);
   const BufferDesc &s = src->desc(), &d = dst->desc();
   if (!fits(srcOffset, bytes, s.byteSize))
     fail(call, "{} bytes at offset {} overflow the source, {} ({} bytes)", bytes, srcOffset,
@@ -163,7 +183,7 @@ void ValidationCommandList::copyBuffer(IBuffer* dst, uint64_t dstOffset, IBuffer
 
 void ValidationCommandList::copyTextureToBuffer(ITexture* src, IBuffer* dst, uint64_t dstOffset) {
   const char* call = "copyTextureToBuffer";
-  requireOpen(call);
+  requireOutsideRendering(call);
   const TextureDesc& s = src->desc();
   const BufferDesc& d = dst->desc();
   const uint64_t bytes = uint64_t(s.width) * s.height * formatByteSize(s.format);
@@ -177,7 +197,7 @@ void ValidationCommandList::copyTextureToBuffer(ITexture* src, IBuffer* dst, uin
 
 void ValidationCommandList::copyTexture(ITexture* dst, ITexture* src) {
   const char* call = "copyTexture";
-  requireOpen(call);
+  requireOutsideRendering(call);
   const TextureDesc &d = dst->desc(), &s = src->desc();
   if (dst == src) fail(call, "{} onto itself", nameOf(s));
   if (d.width != s.width || d.height != s.height)
@@ -191,7 +211,7 @@ void ValidationCommandList::copyTexture(ITexture* dst, ITexture* src) {
 void ValidationCommandList::clearTextureFloat(ITexture* texture, float r, float g, float b,
                                               float a) {
   const char* call = "clearTextureFloat";
-  requireOpen(call);
+  requireOutsideRendering(call);
   // D3D12 clears through an unordered-access view.
   if (!hasFlag(texture->desc().usage, TextureUsage::Storage))
     fail(call, "{} lacks TextureUsage::Storage", nameOf(texture->desc()));
@@ -200,7 +220,7 @@ void ValidationCommandList::clearTextureFloat(ITexture* texture, float r, float 
 
 void ValidationCommandList::clearBufferUint(IBuffer* buffer, uint32_t value) {
   const char* call = "clearBufferUint";
-  requireOpen(call);
+  requireOutsideRendering(call);
   // D3D12 clears through a raw unordered-access view.
   if (auto problem = bufferStateProblem(buffer->desc(), ResourceState::UnorderedAccess);
       !problem.empty())
@@ -210,7 +230,7 @@ void ValidationCommandList::clearBufferUint(IBuffer* buffer, uint32_t value) {
 
 void ValidationCommandList::setBufferState(IBuffer* buffer, ResourceState state) {
   const char* call = "setBufferState";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (auto problem = bufferStateProblem(buffer->desc(), state); !problem.empty())
     fail(call, "{} to {}: it {}", nameOf(buffer->desc()), resourceStateName(state), problem);
   backend_->setBufferState(buffer, state);
@@ -218,7 +238,7 @@ void ValidationCommandList::setBufferState(IBuffer* buffer, ResourceState state)
 
 void ValidationCommandList::setTextureState(ITexture* texture, ResourceState state) {
   const char* call = "setTextureState";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (auto problem = textureStateProblem(texture->desc(), state); !problem.empty())
     fail(call, "{} to {}: it {}", nameOf(texture->desc()), resourceStateName(state), problem);
   backend_->setTextureState(texture, state);
@@ -226,7 +246,7 @@ void ValidationCommandList::setTextureState(ITexture* texture, ResourceState sta
 
 void ValidationCommandList::setAccelStructState(rt::IAccelStruct* as, ResourceState state) {
   const char* call = "setAccelStructState";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (state != ResourceState::AccelStructRead && state != ResourceState::AccelStructWrite)
     fail(call, "'{}' to {}: acceleration structures are only AccelStructRead or AccelStructWrite",
          as->desc().debugName, resourceStateName(state));
@@ -235,7 +255,7 @@ void ValidationCommandList::setAccelStructState(rt::IAccelStruct* as, ResourceSt
 
 void ValidationCommandList::buildBottomLevelAccelStruct(rt::IAccelStruct* as) {
   const char* call = "buildBottomLevelAccelStruct";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (as->desc().isTopLevel)
     fail(call, "'{}' is a top level; use buildTopLevelAccelStruct", as->desc().debugName);
   backend_->buildBottomLevelAccelStruct(as);
@@ -245,7 +265,7 @@ void ValidationCommandList::buildTopLevelAccelStruct(rt::IAccelStruct* as,
                                                      const rt::InstanceDesc* instances,
                                                      uint32_t count) {
   const char* call = "buildTopLevelAccelStruct";
-  requireOpen(call);
+  requireOutsideRendering(call);
   const rt::AccelStructDesc& d = as->desc();
   if (!d.isTopLevel)
     fail(call, "'{}' is a bottom level; use buildBottomLevelAccelStruct", d.debugName);
@@ -294,7 +314,7 @@ std::vector<IBindingSet*> ValidationCommandList::checkBindingSets(
 
 void ValidationCommandList::setRayTracingState(const RayTracingState& state) {
   const char* call = "setRayTracingState";
-  requireOpen(call);
+  requireOutsideRendering(call);
   auto* pipeline = dynamic_cast<ValidationRayTracingPipeline*>(state.pipeline);
   auto* table = dynamic_cast<ValidationShaderTable*>(state.shaderTable);
   if (!pipeline) fail(call, "command list '{}': no ray-tracing pipeline", debugName_);
@@ -311,6 +331,7 @@ void ValidationCommandList::setRayTracingState(const RayTracingState& state) {
   backendState.bindingSets =
       checkBindingSets(call, pipeline->bindingLayout(), state.bindingSets, name);
   backend_->setRayTracingState(backendState);
+  boundGraphics_ = nullptr;
   bound_ = Bound::RayTracing;
   boundPushConstantBytes_ = pipeline->bindingLayout().pushConstantBytes;
   boundPipelineName_ = name;
@@ -318,7 +339,7 @@ void ValidationCommandList::setRayTracingState(const RayTracingState& state) {
 
 void ValidationCommandList::setComputeState(const ComputeState& state) {
   const char* call = "setComputeState";
-  requireOpen(call);
+  requireOutsideRendering(call);
   auto* pipeline = dynamic_cast<ValidationComputePipeline*>(state.pipeline);
   if (!pipeline) fail(call, "command list '{}': no compute pipeline", debugName_);
   const std::string& name = pipeline->debugName();
@@ -327,6 +348,7 @@ void ValidationCommandList::setComputeState(const ComputeState& state) {
   backendState.bindingSets =
       checkBindingSets(call, pipeline->bindingLayout(), state.bindingSets, name);
   backend_->setComputeState(backendState);
+  boundGraphics_ = nullptr;
   bound_ = Bound::Compute;
   boundPushConstantBytes_ = state.pipeline->bindingLayout().pushConstantBytes;
   boundPipelineName_ = name;
@@ -345,9 +367,142 @@ void ValidationCommandList::setPushConstants(const void* data, size_t bytes) {
   backend_->setPushConstants(data, bytes);
 }
 
+// The state a binding set's item needs for a raster stage to read it (the
+// pipeline checked at creation that nothing is written).
+static ResourceState readState(ResourceType type) {
+  return type == ResourceType::ConstantBuffer ? ResourceState::ConstantBuffer
+                                              : ResourceState::ShaderResource;
+}
+
+void ValidationCommandList::setGraphicsState(const GraphicsState& state) {
+  const char* call = "setGraphicsState";
+  requireOpen(call);
+  auto* pipeline = dynamic_cast<ValidationGraphicsPipeline*>(state.pipeline);
+  if (!pipeline) fail(call, "command list '{}': no graphics pipeline", debugName_);
+  const GraphicsPipelineDesc& desc = pipeline->desc();
+  const std::string& name = desc.debugName;
+  if (!state.vertexBuffer) fail(call, "pipeline '{}': no vertex buffer", name);
+  if (!state.indexBuffer) fail(call, "pipeline '{}': no index buffer", name);
+  const BufferDesc &v = state.vertexBuffer->desc(), &i = state.indexBuffer->desc();
+  if (!hasFlag(v.usage, BufferUsage::VertexBuffer) || v.memory == MemoryLocation::Readback)
+    fail(call, "{} lacks BufferUsage::VertexBuffer or is a readback buffer", nameOf(v));
+  if (!hasFlag(i.usage, BufferUsage::IndexBuffer) || i.memory == MemoryLocation::Readback)
+    fail(call, "{} lacks BufferUsage::IndexBuffer or is a readback buffer", nameOf(i));
+  if (state.vertexOffset >= v.byteSize)
+    fail(call, "vertex offset {} is past the end of {} ({} bytes)", state.vertexOffset, nameOf(v),
+         v.byteSize);
+  if (state.indexFormat != Format::R16_UINT && state.indexFormat != Format::R32_UINT)
+    fail(call, "indices are R16_UINT or R32_UINT");
+  const uint32_t indexBytes = formatByteSize(state.indexFormat);
+  if (state.indexOffset % indexBytes != 0 || state.indexOffset > i.byteSize)
+    fail(call, "index offset {} of {} is not a multiple of {} bytes inside the buffer",
+         state.indexOffset, nameOf(i), indexBytes);
+  GraphicsState backendState = state;
+  backendState.pipeline = pipeline->backend();
+  backendState.bindingSets =
+      checkBindingSets(call, pipeline->bindingLayout(), state.bindingSets, name);
+  if (renderTarget_) {
+    // Inside a pass the backend may record no barrier: everything must be in
+    // its state already (a setGraphicsState before beginRendering puts it there).
+    if (desc.renderTargetFormat != renderTarget_->desc().format)
+      fail(call, "pipeline '{}' draws {} pixels, but {} is another format", name,
+           desc.renderTargetFormat == Format::BGRA8_UNORM ? "BGRA8" : "RGBA8",
+           nameOf(renderTarget_->desc()));
+    auto requireState = [&](ResourceState current, ResourceState wanted, const std::string& what) {
+      if (current != wanted)
+        fail(call,
+             "inside beginRendering, {} is in {} but the draw needs {}; set the state before "
+             "beginRendering",
+             what, resourceStateName(current), resourceStateName(wanted));
+    };
+    requireState(state.vertexBuffer->state, ResourceState::VertexInput, nameOf(v));
+    requireState(state.indexBuffer->state, ResourceState::VertexInput, nameOf(i));
+    for (auto* set : state.bindingSets)
+      for (const auto& item : set->desc().items) {
+        if (item.type == ResourceType::SampledTexture)
+          for (const auto& texture : item.textures)
+            requireState(texture->state, ResourceState::ShaderResource, nameOf(texture->desc()));
+        else if (item.type == ResourceType::StorageBuffer ||
+                 item.type == ResourceType::ConstantBuffer)
+          requireState(item.buffer->state, readState(item.type), nameOf(item.buffer->desc()));
+        else if (item.type == ResourceType::StorageTexture)
+          requireState(item.texture->state, ResourceState::ShaderResource,
+                       nameOf(item.texture->desc()));
+      }
+  }
+  backend_->setGraphicsState(backendState);
+  bound_ = Bound::Graphics;
+  boundGraphics_ = &desc;
+  boundIndexBuffer_ = &i;
+  boundIndexOffset_ = state.indexOffset;
+  boundIndexBytes_ = indexBytes;
+  boundPushConstantBytes_ = pipeline->bindingLayout().pushConstantBytes;
+  boundPipelineName_ = name;
+}
+
+void ValidationCommandList::beginRendering(ITexture* target, const float* clearColor) {
+  const char* call = "beginRendering";
+  requireOutsideRendering(call);
+  if (!target) fail(call, "command list '{}': no render target", debugName_);
+  const TextureDesc& d = target->desc();
+  if (!hasFlag(d.usage, TextureUsage::RenderTarget))
+    fail(call, "{} lacks TextureUsage::RenderTarget", nameOf(d));
+  if (d.format != Format::RGBA8_UNORM && d.format != Format::BGRA8_UNORM)
+    fail(call, "{}: render targets are RGBA8_UNORM or BGRA8_UNORM", nameOf(d));
+  backend_->beginRendering(target, clearColor);
+  renderTarget_ = target;
+}
+
+void ValidationCommandList::endRendering() {
+  const char* call = "endRendering";
+  requireInsideRendering(call);
+  backend_->endRendering();
+  renderTarget_ = nullptr;
+}
+
+void ValidationCommandList::setViewport(const Viewport& viewport) {
+  const char* call = "setViewport";
+  requireInsideRendering(call);
+  if (!(viewport.width > 0 && viewport.height > 0))
+    fail(call, "a {}x{} viewport; width and height must be positive", viewport.width,
+         viewport.height);
+  backend_->setViewport(viewport);
+}
+
+void ValidationCommandList::setScissor(const ScissorRect& rect) {
+  const char* call = "setScissor";
+  requireInsideRendering(call);
+  const TextureDesc& d = renderTarget_->desc();
+  if (rect.x < 0 || rect.y < 0 || uint64_t(rect.x) + rect.width > d.width ||
+      uint64_t(rect.y) + rect.height > d.height)
+    fail(call, "scissor ({}, {}) {}x{} leaves {} ({}x{})", rect.x, rect.y, rect.width, rect.height,
+         nameOf(d), d.width, d.height);
+  backend_->setScissor(rect);
+}
+
+void ValidationCommandList::drawIndexed(uint32_t indexCount, uint32_t firstIndex,
+                                        int32_t vertexOffset) {
+  const char* call = "drawIndexed";
+  requireInsideRendering(call);
+  if (bound_ != Bound::Graphics)
+    fail(call, "command list '{}': no setGraphicsState since open or the last other state",
+         debugName_);
+  if (boundGraphics_->renderTargetFormat != renderTarget_->desc().format)
+    fail(call, "pipeline '{}' draws another format than {}", boundPipelineName_,
+         nameOf(renderTarget_->desc()));
+  // The indices' range is checked; the vertices they name are not (that
+  // would mean reading the indices).
+  const uint64_t end = boundIndexOffset_ + (uint64_t(firstIndex) + indexCount) * boundIndexBytes_;
+  if (end > boundIndexBuffer_->byteSize)
+    fail(call, "indices {} .. {} overflow {} ({} bytes from offset {})", firstIndex,
+         uint64_t(firstIndex) + indexCount, nameOf(*boundIndexBuffer_), boundIndexBuffer_->byteSize,
+         boundIndexOffset_);
+  backend_->drawIndexed(indexCount, firstIndex, vertexOffset);
+}
+
 void ValidationCommandList::dispatchRays(uint32_t width, uint32_t height, uint32_t depth) {
   const char* call = "dispatchRays";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (bound_ != Bound::RayTracing)
     fail(call, "command list '{}': no setRayTracingState since open or the last setComputeState",
          debugName_);
@@ -358,7 +513,7 @@ void ValidationCommandList::dispatchRays(uint32_t width, uint32_t height, uint32
 
 void ValidationCommandList::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) {
   const char* call = "dispatch";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (bound_ != Bound::Compute)
     fail(call, "command list '{}': no setComputeState since open or the last setRayTracingState",
          debugName_);
@@ -371,7 +526,7 @@ void ValidationCommandList::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_
 
 void ValidationCommandList::beginTimerQuery(ITimerQuery* query) {
   const char* call = "beginTimerQuery";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (!runningQueries_.insert(query).second)
     fail(call, "command list '{}': the query was begun already and not ended", debugName_);
   backend_->beginTimerQuery(query);
@@ -379,7 +534,7 @@ void ValidationCommandList::beginTimerQuery(ITimerQuery* query) {
 
 void ValidationCommandList::endTimerQuery(ITimerQuery* query) {
   const char* call = "endTimerQuery";
-  requireOpen(call);
+  requireOutsideRendering(call);
   if (runningQueries_.erase(query) == 0)
     fail(call, "command list '{}': the query was not begun in this recording", debugName_);
   backend_->endTimerQuery(query);

@@ -177,6 +177,45 @@ ComputePipelineHandle ValidationDevice::createComputePipeline(const ComputePipel
                                                      desc.debugName);
 }
 
+GraphicsPipelineHandle ValidationDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
+  const char* call = "createGraphicsPipeline";
+  if (desc.vertexShader.stage != ShaderStage::Vertex)
+    fail(call, "pipeline '{}': the vertex shader '{}' is a {} shader", desc.debugName,
+         desc.vertexShader.exportName, shaderStageName(desc.vertexShader.stage));
+  if (desc.pixelShader.stage != ShaderStage::Pixel)
+    fail(call, "pipeline '{}': the pixel shader '{}' is a {} shader", desc.debugName,
+         desc.pixelShader.exportName, shaderStageName(desc.pixelShader.stage));
+  if (desc.renderTargetFormat != Format::RGBA8_UNORM &&
+      desc.renderTargetFormat != Format::BGRA8_UNORM)
+    fail(call, "pipeline '{}': render targets are RGBA8_UNORM or BGRA8_UNORM", desc.debugName);
+  const VertexLayout& v = desc.vertexLayout;
+  if (v.stride == 0 || v.stride > 2048)
+    fail(call, "pipeline '{}': a vertex stride of {} bytes (1 to 2048)", desc.debugName, v.stride);
+  std::set<uint32_t> locations;
+  for (const auto& a : v.attributes) {
+    if (a.format != Format::RG32_FLOAT && a.format != Format::RGB32_FLOAT &&
+        a.format != Format::RGBA32_FLOAT && a.format != Format::RGBA8_UNORM)
+      fail(call, "pipeline '{}': attribute {} has a format vertex input does not take",
+           desc.debugName, a.location);
+    if (uint64_t(a.offset) + formatByteSize(a.format) > v.stride)
+      fail(call, "pipeline '{}': attribute {} ({} bytes at offset {}) overflows the {}-byte vertex",
+           desc.debugName, a.location, formatByteSize(a.format), a.offset, v.stride);
+    if (!locations.insert(a.location).second)
+      fail(call, "pipeline '{}': two attributes at location {}", desc.debugName, a.location);
+  }
+  // The raster subset reads resources only: a draw's barriers go before
+  // beginRendering, and nothing orders a pixel shader's writes.
+  PipelineBindingLayout merged;
+  mergeBindingLayout(merged, desc.vertexShader.bindingLayout, desc.vertexShader.exportName);
+  mergeBindingLayout(merged, desc.pixelShader.bindingLayout, desc.pixelShader.exportName);
+  for (const auto& space : merged.spaces)
+    for (const auto& item : space.items)
+      if (item.writable)
+        fail(call, "pipeline '{}': '{}' is written by a raster stage; graphics pipelines only read",
+             desc.debugName, item.name);
+  return std::make_shared<ValidationGraphicsPipeline>(backend_->createGraphicsPipeline(desc));
+}
+
 BindingSetHandle ValidationDevice::createBindingSet(const BindingSetDesc& desc,
                                                     const IPipeline& pipeline) {
   const char* call = "createBindingSet";
@@ -355,42 +394,18 @@ bool ValidationSwapchain::present(ICommandList* commandList) {
   return backend_->present(list->backend());
 }
 
-// ---- Unwrapping -------------------------------------------------------------
+// ---- Wrapping -------------------------------------------------------------
 
 DeviceHandle wrapDevice(DeviceHandle backendDevice) {
   return std::make_shared<ValidationDevice>(std::move(backendDevice));
-}
-
-IDevice& backendObject(IDevice& device) {
-  auto* wrapper = dynamic_cast<ValidationDevice*>(&device);
-  return wrapper ? wrapper->backend() : device;
-}
-
-ICommandList& backendObject(ICommandList& commandList) {
-  auto* wrapper = dynamic_cast<ValidationCommandList*>(&commandList);
-  return wrapper ? *wrapper->backend() : commandList;
-}
-
-ISwapchain& backendObject(ISwapchain& swapchain) {
-  auto* wrapper = dynamic_cast<ValidationSwapchain*>(&swapchain);
-  return wrapper ? *wrapper->backend() : swapchain;
 }
 
 const IPipeline& backendObject(const IPipeline& pipeline) {
   if (auto* rt = dynamic_cast<const ValidationRayTracingPipeline*>(&pipeline))
     return *rt->backend();
   if (auto* cs = dynamic_cast<const ValidationComputePipeline*>(&pipeline)) return *cs->backend();
+  if (auto* gp = dynamic_cast<const ValidationGraphicsPipeline*>(&pipeline)) return *gp->backend();
   return pipeline;
-}
-
-IShaderTable* backendObject(IShaderTable* shaderTable) {
-  auto* wrapper = dynamic_cast<ValidationShaderTable*>(shaderTable);
-  return wrapper ? wrapper->backend() : shaderTable;
-}
-
-IBindingSet* backendObject(IBindingSet* bindingSet) {
-  auto* wrapper = dynamic_cast<ValidationBindingSet*>(bindingSet);
-  return wrapper ? wrapper->backend() : bindingSet;
 }
 
 }  // namespace penumbra::rhi::validation

@@ -19,6 +19,9 @@ template <class... Args>
 
 class ValidationDevice;
 
+// The backend's pipeline behind a wrapper (binding sets are created against it).
+const IPipeline& backendObject(const IPipeline& pipeline);
+
 class ValidationRayTracingPipeline final
     : public IRayTracingPipeline,
       public std::enable_shared_from_this<ValidationRayTracingPipeline> {
@@ -51,6 +54,18 @@ class ValidationComputePipeline final : public IComputePipeline {
  private:
   ComputePipelineHandle backend_;
   std::string debugName_;
+};
+
+class ValidationGraphicsPipeline final : public IGraphicsPipeline {
+ public:
+  explicit ValidationGraphicsPipeline(GraphicsPipelineHandle backend)
+      : backend_(std::move(backend)) {}
+  const GraphicsPipelineDesc& desc() const override { return backend_->desc(); }
+  const PipelineBindingLayout& bindingLayout() const override { return backend_->bindingLayout(); }
+  IGraphicsPipeline* backend() const { return backend_.get(); }
+
+ private:
+  GraphicsPipelineHandle backend_;
 };
 
 class ValidationShaderTable final : public IShaderTable {
@@ -116,6 +131,12 @@ class ValidationCommandList final : public ICommandList {
                                 uint32_t count) override;
   void setRayTracingState(const RayTracingState& state) override;
   void setComputeState(const ComputeState& state) override;
+  void setGraphicsState(const GraphicsState& state) override;
+  void beginRendering(ITexture* target, const float* clearColor) override;
+  void endRendering() override;
+  void setViewport(const Viewport& viewport) override;
+  void setScissor(const ScissorRect& rect) override;
+  void drawIndexed(uint32_t indexCount, uint32_t firstIndex, int32_t vertexOffset) override;
   void setPushConstants(const void* data, size_t bytes) override;
   void dispatchRays(uint32_t width, uint32_t height, uint32_t depth) override;
   void dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) override;
@@ -129,12 +150,16 @@ class ValidationCommandList final : public ICommandList {
 
  private:
   void requireOpen(const char* call) const;
+  // Open and outside beginRendering/endRendering: copies, barriers, builds,
+  // dispatches and queries cannot be recorded inside a Vulkan render pass.
+  void requireOutsideRendering(const char* call) const;
+  void requireInsideRendering(const char* call) const;
   // Checks the binding sets against the pipeline's layout and returns the
   // backend's sets, in the same order.
   std::vector<IBindingSet*> checkBindingSets(const char* call, const PipelineBindingLayout& layout,
                                              const std::vector<IBindingSet*>& sets,
                                              const std::string& pipelineName) const;
-  enum class Bound : uint8_t { Nothing, RayTracing, Compute };
+  enum class Bound : uint8_t { Nothing, RayTracing, Compute, Graphics };
 
   CommandListHandle backend_;
   std::string debugName_;
@@ -144,6 +169,11 @@ class ValidationCommandList final : public ICommandList {
   uint32_t boundPushConstantBytes_ = 0;
   std::string boundPipelineName_;
   std::set<const ITimerQuery*> runningQueries_;
+  ITexture* renderTarget_ = nullptr;  // between beginRendering and endRendering
+  const GraphicsPipelineDesc* boundGraphics_ = nullptr;
+  const BufferDesc* boundIndexBuffer_ = nullptr;
+  uint64_t boundIndexOffset_ = 0;
+  uint32_t boundIndexBytes_ = 0;
 };
 
 class ValidationSwapchain final : public ISwapchain {
@@ -176,6 +206,7 @@ class ValidationDevice final : public IDevice {
   rt::AccelStructHandle createAccelStruct(const rt::AccelStructDesc& desc) override;
   RayTracingPipelineHandle createRayTracingPipeline(const RayTracingPipelineDesc& desc) override;
   ComputePipelineHandle createComputePipeline(const ComputePipelineDesc& desc) override;
+  GraphicsPipelineHandle createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
   BindingSetHandle createBindingSet(const BindingSetDesc& desc, const IPipeline& pipeline) override;
   TimerQueryHandle createTimerQuery() override { return backend_->createTimerQuery(); }
   CommandListHandle createCommandList(const std::string& debugName) override;

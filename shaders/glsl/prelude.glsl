@@ -61,6 +61,10 @@ float3 saturate(float3 x) { return clamp(x, float3(0.0, 0.0, 0.0), float3(1.0, 1
 #define PT_SAMPLER_ARRAY(name, s) layout(set = 0, binding = PENUMBRA_S(s)) uniform sampler name[]
 #define PT_SAMPLE_LEVEL0(textures, samplers, textureIndex, samplerIndex, uv) \
   textureLod(sampler2D(textures[nonuniformEXT(textureIndex)], samplers[nonuniformEXT(samplerIndex)]), uv, 0.0)
+// One sampled texture and one sampler (raster stages).
+#define PT_SAMPLED_TEXTURE(name, t) layout(set = 0, binding = PENUMBRA_T(t)) uniform texture2D name
+#define PT_SAMPLER(name, s) layout(set = 0, binding = PENUMBRA_S(s)) uniform sampler name
+#define PT_SAMPLE(tex, smp, uv) texture(sampler2D(tex, smp), uv)
 // The push-constant block, read through `loader()` (a copy, as HLSL's
 // ConstantBuffer<T> must be read).
 #define PT_PUSH_CONSTANTS(type, loader) \
@@ -95,6 +99,25 @@ float3 saturate(float3 x) { return clamp(x, float3(0.0, 0.0, 0.0), float3(1.0, 1
 #define PT_COMPUTE(name, x, y) \
   layout(local_size_x = x, local_size_y = y) in; \
   void main()
+
+// Raster stages (rhi::GraphicsPipelineDesc). The interface is a list of
+// PT_VERTEX_INPUT / PT_VERTEX_OUTPUT / PT_PIXEL_INPUT, one macro argument
+// without separators: GLSL declares them at file scope, HLSL as the entry
+// point's parameters. Location N is HLSL's TEXCOORD<N> (rhi::VertexAttribute).
+// The vertex shader writes PT_POSITION (clip space, +y up as in D3D12: the
+// RHI flips Vulkan's viewport), the pixel shader PT_TARGET (render target 0).
+#define PT_VERTEX_INPUT(index, type, name) layout(location = index) in type name;
+#define PT_VERTEX_OUTPUT(index, type, name) layout(location = index) out type name;
+#define PT_PIXEL_INPUT(index, type, name) layout(location = index) in type name;
+#define PT_VERTEX(name, interface) \
+  interface \
+  void main()
+#define PT_PIXEL(name, interface) \
+  interface \
+  layout(location = 0) out float4 ptTarget; \
+  void main()
+#define PT_POSITION gl_Position
+#define PT_TARGET ptTarget
 
 // --- Built-ins ------------------------------------------------------------
 #define PT_DISPATCH_THREAD_ID gl_GlobalInvocationID

@@ -44,6 +44,11 @@
 #endif
 #define PT_SAMPLE_LEVEL0(textures, samplers, textureIndex, samplerIndex, uv) \
   textures[PT_NON_UNIFORM(textureIndex)].SampleLevel(samplers[PT_NON_UNIFORM(samplerIndex)], uv, 0.0)
+// One sampled texture and one sampler (raster stages).
+#define PT_SAMPLED_TEXTURE(name, t) \
+  [[vk::binding(PENUMBRA_T(t), 0)]] Texture2D<float4> name : PENUMBRA_REGISTER_T(t)
+#define PT_SAMPLER(name, s) [[vk::binding(PENUMBRA_S(s), 0)]] SamplerState name : PENUMBRA_REGISTER_S(s)
+#define PT_SAMPLE(tex, smp, uv) tex.Sample(smp, uv)
 // The push constants (D3D12 root constants), wrapped in a struct so that
 // `loader()` returns a plain value (a ConstantBuffer<T> is not a T).
 #define PT_PUSH_CONSTANTS(type, loader) \
@@ -54,6 +59,19 @@
 #define PT_COMPUTE(name, x, y) \
   [numthreads(x, y, 1)] void name(uint3 ptDispatchThreadId : SV_DispatchThreadID)
 #define PT_DISPATCH_THREAD_ID ptDispatchThreadId
+
+// Raster stages: the interface macros become the entry point's parameters
+// (glsl/prelude.glsl says how a stage lists them). SV_Position comes first
+// in the vertex shader's outputs and the pixel shader's inputs, so the two
+// signatures line up element for element.
+#define PT_VERTEX_INPUT(index, type, name) , in type name : TEXCOORD##index
+#define PT_VERTEX_OUTPUT(index, type, name) , out type name : TEXCOORD##index
+#define PT_PIXEL_INPUT(index, type, name) , in type name : TEXCOORD##index
+#define PT_VERTEX(name, interface) void name(out float4 ptPosition : SV_Position interface)
+#define PT_PIXEL(name, interface) \
+  void name(out float4 ptTarget : SV_Target0, in float4 ptFragCoord : SV_Position interface)
+#define PT_POSITION ptPosition
+#define PT_TARGET ptTarget
 
 #if defined(PENUMBRA_HLSL_CHECK)
 // --- glslang's HLSL front-end: the stages as compute shaders ----------------
