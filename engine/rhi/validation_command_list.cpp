@@ -129,7 +129,7 @@ void ValidationCommandList::open() {
 }
 
 void ValidationCommandList::close() {
-  requireOpen("close");
+  requireOutsideRendering("close");  // a pass ends in the recording that began it
   if (!runningQueries_.empty())
     fail("close", "command list '{}' has {} timer quer{} begun but not ended", debugName_,
          runningQueries_.size(), runningQueries_.size() == 1 ? "y" : "ies");
