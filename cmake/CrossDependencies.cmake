@@ -66,3 +66,53 @@ add_library(penumbra_tinyexr STATIC ${PROJECT_SOURCE_DIR}/engine/image/tinyexr_i
 target_include_directories(penumbra_tinyexr SYSTEM PUBLIC ${_farm}/tinyexr PRIVATE ${PENUMBRA_MINGW_ZLIB_INCLUDE})
 target_link_libraries(penumbra_tinyexr PRIVATE ${PENUMBRA_MINGW_ZLIB})
 add_library(tinyexr::tinyexr ALIAS penumbra_tinyexr)
+
+# GLFW and Dear ImGui for penumbra-viewer.exe. Debian ships both for Linux
+# only, so scripts/setup.sh unpacks Debian's SOURCE packages of the versions
+# the native build uses (glfw3 3.3.8-1, imgui 1.86+ds-1) into
+# PENUMBRA_WINDOWS_SOURCES, and they are compiled here for Win32 as static
+# libraries: GLFW through its own CMake (target glfw, as find_package(glfw3)
+# gives natively), the ImGui core as imgui::imgui (vcpkg's name), with
+# IMGUI_INCLUDE_DIRS and IMGUI_BACKEND_SOURCES/HEADERS (imgui_impl_glfw) set
+# as apps/viewer expects. Third-party code: no Penumbra warnings, headers SYSTEM.
+set(PENUMBRA_WINDOWS_SOURCES /usr/local/src/penumbra-deps CACHE PATH
+    "Debian's glfw3 and imgui sources for the cross build's viewer (scripts/setup.sh unpacks them)")
+set(_glfw_source ${PENUMBRA_WINDOWS_SOURCES}/glfw3)
+set(_imgui_source ${PENUMBRA_WINDOWS_SOURCES}/imgui)
+foreach(_file ${_glfw_source}/CMakeLists.txt ${_glfw_source}/src/win32_window.c
+              ${_imgui_source}/imgui.cpp ${_imgui_source}/backends/imgui_impl_glfw.cpp)
+  if(NOT EXISTS ${_file})
+    message(FATAL_ERROR "Cross build: ${_file} is missing: scripts/setup.sh unpacks Debian's glfw3 "
+                        "and imgui sources into /usr/local/src/penumbra-deps (or set PENUMBRA_WINDOWS_SOURCES)")
+  endif()
+endforeach()
+
+# In a function so that its settings stay local to GLFW's directory.
+function(penumbra_add_glfw source)
+  set(BUILD_SHARED_LIBS OFF)
+  set(GLFW_BUILD_EXAMPLES OFF)
+  set(GLFW_BUILD_TESTS OFF)
+  set(GLFW_BUILD_DOCS OFF)
+  set(GLFW_INSTALL OFF)
+  add_subdirectory(${source} ${CMAKE_BINARY_DIR}/third_party/glfw3 EXCLUDE_FROM_ALL)
+endfunction()
+penumbra_add_glfw(${_glfw_source})
+# Its include directory as a system one for its users (warnings as errors).
+set_property(TARGET glfw APPEND PROPERTY INTERFACE_SYSTEM_INCLUDE_DIRECTORIES ${_glfw_source}/include)
+
+# The core as Debian's libimgui.a has it, with ImGui's own stb_truetype and
+# stb_rect_pack (Debian's build takes them from libstb, a Linux .so).
+add_library(penumbra_imgui STATIC
+  ${_imgui_source}/imgui.cpp
+  ${_imgui_source}/imgui_demo.cpp
+  ${_imgui_source}/imgui_draw.cpp
+  ${_imgui_source}/imgui_tables.cpp
+  ${_imgui_source}/imgui_widgets.cpp
+  ${_imgui_source}/misc/cpp/imgui_stdlib.cpp)
+target_include_directories(penumbra_imgui SYSTEM PUBLIC ${_imgui_source})
+# Not Penumbra's code: 1.86's C++20 deprecation warnings are not ours to fix.
+target_compile_options(penumbra_imgui PRIVATE -w)
+add_library(imgui::imgui ALIAS penumbra_imgui)
+set(IMGUI_INCLUDE_DIRS ${_imgui_source})
+set(IMGUI_BACKEND_SOURCES ${_imgui_source}/backends)
+set(IMGUI_BACKEND_HEADERS ${_imgui_source}/backends)

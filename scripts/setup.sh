@@ -7,6 +7,15 @@
 # three come from bookworm-backports. The backports entry is
 # derived from the machine's existing Debian source entry (same archive, same
 # keyring) so no archive address is written into this repository.
+#
+# The Windows cross build's viewer needs GLFW and Dear ImGui compiled for
+# Windows; Debian ships them for Linux only, so their Debian SOURCE packages,
+# at the versions of the Linux packages (WINDOWS_SOURCES below), are fetched
+# from the same archive (a deb-src entry in a temporary apt configuration; the
+# system's is left alone; apt checks the files against the signed index) and
+# unpacked into $PENUMBRA_WINDOWS_SOURCES (default /usr/local/src/penumbra-deps:
+# imgui/ and glfw3/), where cmake/CrossDependencies.cmake looks for them
+# (its PENUMBRA_WINDOWS_SOURCES cache variable). Skipped when already there.
 set -euo pipefail
 
 SUDO=""
@@ -33,33 +42,21 @@ BASE_PACKAGES=(
   # The Windows cross build (scripts/build-windows-cross.sh): compiler, and
   # zlib for tinyexr; DirectX-Headers come from backports below.
   g++-mingw-w64-x86-64-posix libz-mingw-w64-dev
+  # dpkg-source unpacks the viewer's GLFW and Dear ImGui sources for it.
+  dpkg-dev
   # penumbra study's report: its plots, and the headless browser that
   # tests the page.
   python3-matplotlib chromium
 )
 BACKPORT_PACKAGES=(mesa-vulkan-drivers catch2 directx-headers-dev)
+# Source packages for the cross build's viewer: the versions of bookworm's
+# libimgui-dev and libglfw3-dev (source=version, pinned).
+WINDOWS_SOURCES=(imgui=1.86+ds-1 glfw3=3.3.8-1)
+WINDOWS_SOURCES_DIR=${PENUMBRA_WINDOWS_SOURCES:-/usr/local/src/penumbra-deps}
 
-missing=()
-for p in "${BASE_PACKAGES[@]}" "${BACKPORT_PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-# Mesa must be the backports version (25.x); bookworm's 22.3 lacks ray tracing.
-mesa_version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
-case "$mesa_version" in 2[5-9].*|[3-9][0-9].*) ;; *) missing+=(mesa-vulkan-drivers) ;; esac
-catch_version=$(dpkg-query -W -f='${Version}' catch2 2>/dev/null || true)
-case "$catch_version" in 3.*) ;; *) missing+=(catch2) ;; esac
-# DirectX-Headers 1.614 (backports) for DXR 1.1 declarations; bookworm has 1.606.
-dxh_version=$(dpkg-query -W -f='${Version}' directx-headers-dev 2>/dev/null || true)
-case "$dxh_version" in 1.61[4-9]*|1.6[2-9]*|1.[7-9]*|[2-9].*) ;; *) missing+=(directx-headers-dev) ;; esac
-
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "setup.sh: all packages present"
-  exit 0
-fi
-
-backports_file=/etc/apt/sources.list.d/penumbra-bookworm-backports.sources
-if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
-  # Take URI and keyring from the existing bookworm entry (deb822 or one-line form).
+# debian_archive: sets uri and keyring from the machine's bookworm entry
+# (deb822 or one-line form); exits if there is none.
+debian_archive() {
   uri="" keyring=""
   for f in /etc/apt/sources.list.d/*.sources; do
     [ -f "$f" ] || continue
@@ -75,16 +72,92 @@ if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.
     keyring=$(echo "$line" | sed -nE 's/.*signed-by=([^] ]+).*/\1/p')
   fi
   if [ -z "$uri" ]; then
-    echo "setup.sh: no Debian bookworm source entry found to derive bookworm-backports from" >&2
+    echo "setup.sh: no Debian bookworm source entry found to derive $1 from" >&2
     exit 1
   fi
   [ -n "$keyring" ] || keyring=/usr/share/keyrings/debian-archive-keyring.gpg
-  printf 'Types: deb\nURIs: %s\nSuites: bookworm-backports\nComponents: main\nSigned-By: %s\n' \
-    "$uri" "$keyring" | $SUDO tee "$backports_file" >/dev/null
-fi
+}
 
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${BASE_PACKAGES[@]}"
-$SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports "${BACKPORT_PACKAGES[@]}"
+# fetch_windows_sources: downloads and unpacks WINDOWS_SOURCES not yet in
+# WINDOWS_SOURCES_DIR at their pinned version (the version is recorded in
+# <dir>/<source>/.penumbra-source-version once unpacked).
+fetch_windows_sources() {
+  local wanted=() spec name version
+  for spec in "${WINDOWS_SOURCES[@]}"; do
+    name=${spec%%=*} version=${spec#*=}
+    if [ "$(cat "$WINDOWS_SOURCES_DIR/$name/.penumbra-source-version" 2>/dev/null)" != "$version" ]; then
+      wanted+=("$spec")
+    fi
+  done
+  if [ ${#wanted[@]} -eq 0 ]; then
+    echo "setup.sh: Windows viewer sources present in $WINDOWS_SOURCES_DIR"
+    return
+  fi
+  debian_archive "the source packages' archive"
+  local tmp
+  tmp=$(mktemp -d)
+  # shellcheck disable=SC2064  # the directory is known now; tmp is local
+  trap "rm -rf '$tmp'" EXIT
+  chmod 755 "$tmp"
+  mkdir -p "$tmp/lists/partial" "$tmp/cache" "$tmp/download" "$tmp/unpacked"
+  # apt downloads as _apt where it can write.
+  if id _apt >/dev/null 2>&1 && [ "$(id -u)" -eq 0 ]; then chown _apt "$tmp/download"; fi
+  printf 'deb-src [signed-by=%s] %s bookworm main\n' "$keyring" "$uri" > "$tmp/sources.list"
+  local apt_options=(-o "Dir::Etc::SourceList=$tmp/sources.list" -o Dir::Etc::SourceParts=/dev/null
+                     -o "Dir::State::Lists=$tmp/lists" -o "Dir::Cache=$tmp/cache")
+  if ! $SUDO apt-get "${apt_options[@]}" update -q ||
+     ! (cd "$tmp/download" && $SUDO apt-get "${apt_options[@]}" source --download-only -q "${wanted[@]}"); then
+    echo "setup.sh: could not download the Debian source packages ${wanted[*]} from $uri (bookworm, deb-src);" \
+         "the Windows cross build's viewer is compiled from them" >&2
+    exit 1
+  fi
+  $SUDO mkdir -p "$WINDOWS_SOURCES_DIR"
+  for spec in "${wanted[@]}"; do
+    name=${spec%%=*} version=${spec#*=}
+    # --no-check: apt has checked these files against the archive's signed
+    # index (dpkg-source would look for the uploader's key in keyrings this
+    # machine does not have).
+    $SUDO dpkg-source --no-check -x "$tmp/download/${name}_${version}.dsc" "$tmp/unpacked/$name" >/dev/null ||
+      { echo "setup.sh: dpkg-source could not unpack $name $version" >&2; exit 1; }
+    echo "$version" | $SUDO tee "$tmp/unpacked/$name/.penumbra-source-version" >/dev/null
+    $SUDO rm -rf "${WINDOWS_SOURCES_DIR:?}/$name"
+    $SUDO mv "$tmp/unpacked/$name" "$WINDOWS_SOURCES_DIR/$name"
+    echo "setup.sh: unpacked $name $version into $WINDOWS_SOURCES_DIR/$name"
+  done
+}
+
+missing=()
+for p in "${BASE_PACKAGES[@]}" "${BACKPORT_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+# Mesa must be the backports version (25.x); bookworm's 22.3 lacks ray tracing.
+mesa_version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
+case "$mesa_version" in 2[5-9].*|[3-9][0-9].*) ;; *) missing+=(mesa-vulkan-drivers) ;; esac
+catch_version=$(dpkg-query -W -f='${Version}' catch2 2>/dev/null || true)
+case "$catch_version" in 3.*) ;; *) missing+=(catch2) ;; esac
+# DirectX-Headers 1.614 (backports) for DXR 1.1 declarations; bookworm has 1.606.
+dxh_version=$(dpkg-query -W -f='${Version}' directx-headers-dev 2>/dev/null || true)
+case "$dxh_version" in 1.61[4-9]*|1.6[2-9]*|1.[7-9]*|[2-9].*) ;; *) missing+=(directx-headers-dev) ;; esac
+
+install_packages() {
+  backports_file=/etc/apt/sources.list.d/penumbra-bookworm-backports.sources
+  if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+    # Take URI and keyring from the existing bookworm entry.
+    debian_archive bookworm-backports
+    printf 'Types: deb\nURIs: %s\nSuites: bookworm-backports\nComponents: main\nSigned-By: %s\n' \
+      "$uri" "$keyring" | $SUDO tee "$backports_file" >/dev/null
+  fi
+
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -q
+  $SUDO apt-get install -y -q --no-install-recommends "${BASE_PACKAGES[@]}"
+  $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports "${BACKPORT_PACKAGES[@]}"
+}
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup.sh: all packages present"
+else
+  install_packages
+fi
+fetch_windows_sources
 echo "setup.sh: done"
