@@ -82,8 +82,9 @@ set(_imgui_source ${PENUMBRA_WINDOWS_SOURCES}/imgui)
 foreach(_file ${_glfw_source}/CMakeLists.txt ${_glfw_source}/src/win32_window.c
               ${_imgui_source}/imgui.cpp ${_imgui_source}/backends/imgui_impl_glfw.cpp)
   if(NOT EXISTS ${_file})
-    message(FATAL_ERROR "Cross build: ${_file} is missing: scripts/setup.sh unpacks Debian's glfw3 "
-                        "and imgui sources into /usr/local/src/penumbra-deps (or set PENUMBRA_WINDOWS_SOURCES)")
+    message(FATAL_ERROR "Cross build: ${_file} is missing. scripts/setup.sh unpacks Debian's glfw3 and "
+                        "imgui sources into /usr/local/src/penumbra-deps (or where the environment variable "
+                        "PENUMBRA_WINDOWS_SOURCES says); point -DPENUMBRA_WINDOWS_SOURCES= at that directory")
   endif()
 endforeach()
 

@@ -39,10 +39,12 @@ void onGlfwError(int, const char* description) {
   gLastGlfwError = description ? description : "?";
 }
 
+#if !defined(_WIN32)
 bool envSet(const char* name) {
   const char* value = std::getenv(name);
   return value && *value;
 }
+#endif
 
 }  // namespace
 

@@ -22,11 +22,12 @@ bool hasInstanceLayer(const char* name) {
   return false;
 }
 
-bool hasInstanceExtension(const char* name) {
+// `layer`: an extension a layer provides (nullptr: the loader's and drivers').
+bool hasInstanceExtension(const char* name, const char* layer = nullptr) {
   uint32_t count = 0;
-  vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+  vkEnumerateInstanceExtensionProperties(layer, &count, nullptr);
   std::vector<VkExtensionProperties> exts(count);
-  vkEnumerateInstanceExtensionProperties(nullptr, &count, exts.data());
+  vkEnumerateInstanceExtensionProperties(layer, &count, exts.data());
   for (const auto& e : exts)
     if (std::strcmp(e.extensionName, name) == 0) return true;
   return false;
@@ -108,11 +109,15 @@ VulkanInstance::VulkanInstance(bool validation, rhi::WindowSystem presentation) 
 
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
+  bool validationFeatures = false;
   if (validation) {
     if (!hasInstanceLayer("VK_LAYER_KHRONOS_validation"))
       throw Error("vulkan: validation was requested but VK_LAYER_KHRONOS_validation is not "
                   "installed (Debian: vulkan-validationlayers)");
     layers.push_back("VK_LAYER_KHRONOS_validation");
+    validationFeatures = hasInstanceExtension(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME,
+                                              "VK_LAYER_KHRONOS_validation");
+    if (validationFeatures) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
   }
   debugUtils_ = hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   if (debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -147,6 +152,18 @@ VulkanInstance::VulkanInstance(bool validation, rhi::WindowSystem presentation) 
   create.ppEnabledExtensionNames = extensions.data();
   // Also report problems of vkCreateInstance/vkDestroyInstance themselves.
   if (debugUtils_) create.pNext = &messengerInfo;
+  // Validation includes synchronization validation: a missing or wrong
+  // barrier is as much a bug as a wrong argument, and the RHI records its
+  // barriers itself, so every test exercises them.
+  const VkValidationFeatureEnableEXT enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enables;
+  if (validationFeatures) {
+    features.pNext = create.pNext;
+    create.pNext = &features;
+  }
   VkResult created = vkCreateInstance(&create, nullptr, &instance_);
   if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
     throw Error("vulkan: no Vulkan driver found; install a GPU driver or Mesa's lavapipe "
