@@ -194,6 +194,24 @@ ExrChannels loadExrChannels(const std::string& path) {
   return result;
 }
 
+std::pair<uint64_t, uint64_t> exrSize(const std::string& path) {
+  EXRVersion version;
+  EXRHeader header;
+  InitEXRHeader(&header);
+  const char* err = nullptr;
+  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS ||
+      ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    std::string reason = err ? err : "not an OpenEXR file";
+    if (err) FreeEXRErrorMessage(err);
+    throw Error(fmt::format("image '{}': {}", path, reason));
+  }
+  const EXRBox2i w = header.data_window;
+  FreeEXRHeader(&header);
+  // int64 first: max - min + 1 of two ints can overflow an int.
+  auto extent = [](int lo, int hi) { return hi >= lo ? uint64_t(int64_t(hi) - lo + 1) : 0; };
+  return {extent(w.min_x, w.max_x), extent(w.min_y, w.max_y)};
+}
+
 Image loadExr(const std::string& path) {
   float* data = nullptr;
   int w = 0, h = 0;

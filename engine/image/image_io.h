@@ -2,6 +2,7 @@
 // Reading and writing image files. Writes are atomic: the data goes to a
 // temporary file beside the target, renamed into place only when complete, so
 // a failure never leaves a partial file.
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +26,10 @@ void checkWritable(const std::string& path);
 // Linear float RGB(A) as OpenEXR (32-bit float channels, ZIP compressed).
 void saveExr(const std::string& path, const Image& image);
 Image loadExr(const std::string& path);
+// The width and height an EXR file's header declares (its data window),
+// read without decoding: loadExr allocates that much whatever the file
+// holds, so callers bound it first. penumbra::Error if unreadable.
+std::pair<uint64_t, uint64_t> exrSize(const std::string& path);
 
 // A named group of channels of a layered EXR: channel k of `image` is
 // written as "<name>.<channels[k]>" (e.g. "albedo.R"), one to four of them.

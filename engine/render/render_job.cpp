@@ -3,12 +3,15 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "render/image_size.h"
+#include "scene/input_limits.h"
+#include "scene/json_reading.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -90,24 +93,47 @@ std::optional<Enum> parseName(const Named<Enum> (&table)[N], std::string_view na
   return std::nullopt;
 }
 
+// Every read checks type and range before converting: nlohmann's get<T>()
+// turns 1e300 into an unsigned integer by undefined behaviour (a render with
+// seed 0) and 1e39 into a float infinity. Messages are "<file>: "<field>" ...".
 class Reader {
  public:
   Reader(const json& document, const std::string& source) : doc_(document), source_(source) {}
 
-  template <class T>
-  void read(const char* key, T& out) const {
+  void read(const char* key, std::string& out) const {
     if (!doc_.contains(key)) return;
-    try {
-      out = doc_.at(key).get<T>();
-    } catch (const json::exception&) {
-      fail(key, "has the wrong type");
-    }
+    const json& value = doc_.at(key);
+    if (!value.is_string())
+      fail(key, fmt::format("must be a string (got {})", scene::jsonTypeName(value)));
+    out = value.get<std::string>();
+  }
+  void read(const char* key, bool& out) const {
+    if (!doc_.contains(key)) return;
+    const json& value = doc_.at(key);
+    if (!value.is_boolean())
+      fail(key, fmt::format("must be true or false (got {})", scene::jsonTypeName(value)));
+    out = value.get<bool>();
+  }
+  // A whole number in lo..hi (3.0 is 3; 2.5 and 1e300 are refused).
+  void read(const char* key, uint32_t& out, uint32_t lo = 0,
+            uint32_t hi = std::numeric_limits<uint32_t>::max()) const {
+    if (doc_.contains(key)) out = whole(doc_.at(key), key, lo, hi);
+  }
+  // A finite float in lo..hi.
+  void read(const char* key, float& out, float lo = -std::numeric_limits<float>::max(),
+            float hi = std::numeric_limits<float>::max()) const {
+    if (!doc_.contains(key)) return;
+    out = finite(doc_.at(key), key);
+    if (!(out >= lo && out <= hi)) fail(key, fmt::format("{} is outside {}..{}", out, lo, hi));
+  }
+  uint32_t whole(const json& value, const std::string& key, uint32_t lo, uint32_t hi) const {
+    return uint32_t(scene::toInteger(value, source_, key, lo, hi));
   }
   glm::vec3 vec3(const json& value, const std::string& key) const {
     if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
         !value[2].is_number())
       fail(key, "must be an array of 3 numbers");
-    return {value[0].get<float>(), value[1].get<float>(), value[2].get<float>()};
+    return {finite(value[0], key), finite(value[1], key), finite(value[2], key)};
   }
   template <class Enum>
   void readEnum(const char* key, Enum& out, std::optional<Enum> (*parse)(std::string_view)) const {
@@ -371,17 +397,23 @@ std::string renderJobToJson(const RenderJob& job) {
   return doc.dump(2) + "\n";
 }
 
-RenderJob renderJobFromJson(const std::string& text, const std::string& source) {
+RenderJob renderJobFromJson(const std::string& text, const std::string& source,
+                            const scene::InputLimits& limits) {
+  // Bounded before parsing, as scene files are (scene/input_limits.h).
+  scene::requireAtMost(text.size(), limits.maxJsonBytes, "maxJsonBytes",
+                       source + ": JSON text size in bytes");
+  scene::requireJsonDepth(text, limits, source);
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // Syntax errors, and numbers too large for a double (1e400).
     throw Error(fmt::format("{}: not valid JSON ({})", source, e.what()));
   }
-  if (!doc.is_object() || doc.value("format", "") != "penumbra-render")
+  if (!doc.is_object() || !doc.contains("format") || doc["format"] != "penumbra-render")
     throw Error(fmt::format(
         "{}: not a penumbra render settings file (\"format\": \"penumbra-render\")", source));
-  if (doc.value("version", 0) != 1)
+  if (!doc.contains("version") || doc["version"] != 1)
     throw Error(fmt::format("{}: unsupported version (this build reads version 1)", source));
   Reader r(doc, source);
   RenderJob job;
@@ -397,41 +429,47 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
     camera.position = r.vec3(c["position"], "camera.position");
     camera.forward = r.vec3(c["forward"], "camera.forward");
     camera.up = r.vec3(c["up"], "camera.up");
+    // Zero would normalise to NaN; parallel ones leave no image plane.
+    if (!(glm::length(camera.forward) > 0.0f) || !std::isfinite(glm::length(camera.forward)))
+      r.fail("camera.forward", "must be a non-zero direction of finite length");
+    if (!(glm::length(glm::cross(camera.forward, camera.up)) > 0.0f))
+      r.fail("camera.up", "must be non-zero and not parallel to camera.forward");
     if (c.contains("verticalFovDegrees")) {
-      if (!c["verticalFovDegrees"].is_number())
-        r.fail("camera.verticalFovDegrees", "must be a number");
-      camera.verticalFovDegrees = c["verticalFovDegrees"].get<float>();
+      camera.verticalFovDegrees = r.finite(c["verticalFovDegrees"], "camera.verticalFovDegrees");
+      if (!(camera.verticalFovDegrees > 0.0f && camera.verticalFovDegrees < 180.0f))
+        r.fail("camera.verticalFovDegrees", "must lie in (0, 180)");
     }
     for (auto [key, field] : {std::pair{"apertureRadius", &scene::Camera::apertureRadius},
                               std::pair{"focusDistance", &scene::Camera::focusDistance},
                               std::pair{"aspectRatio", &scene::Camera::aspectRatio}}) {
       if (!c.contains(key)) continue;
-      if (!c[key].is_number()) r.fail(std::string("camera.") + key, "must be a number");
-      camera.*field = c[key].get<float>();
+      camera.*field = r.finite(c[key], std::string("camera.") + key);
     }
-    if (c.contains("apertureBlades")) {
-      if (!c["apertureBlades"].is_number_unsigned())
-        r.fail("camera.apertureBlades", "must be a whole number >= 0");
-      camera.apertureBlades = c["apertureBlades"].get<uint32_t>();
+    if (c.contains("apertureBlades"))
+      camera.apertureBlades = r.whole(c["apertureBlades"], "camera.apertureBlades", 0, 32);
+    try {
+      scene::validateCamera(camera);
+    } catch (const Error& e) {
+      throw Error(fmt::format("{}: {}", source, e.what()));
     }
     job.camera = camera;
   }
   r.read("width", job.width);
   r.read("height", job.height);
-  r.read("spp", job.spp);
+  r.read("spp", job.spp, 1, kMaxSamplesPerPixel);
   r.read("sppPerFrame", job.sppPerFrame);
   auto& s = job.settings;
   r.readEnum("integrator", s.integrator, &parseIntegrator);
   r.readEnum("strategy", s.strategy, &parseStrategy);
   r.readEnum("misHeuristic", s.misHeuristic, &parseMisHeuristic);
   r.readEnum("sampler", s.sampler, &parseSampler);
-  r.read("maxDepth", s.maxDepth);
+  r.read("maxDepth", s.maxDepth, 0, kMaxPathDepth);
   r.read("russianRoulette", s.russianRoulette);
-  r.read("rouletteStartDepth", s.rouletteStartDepth);
-  r.read("radianceClamp", s.radianceClamp);
+  r.read("rouletteStartDepth", s.rouletteStartDepth, 0, kMaxPathDepth);
+  r.read("radianceClamp", s.radianceClamp, 0.0f);
   r.read("seed", s.seed);
   r.read("guides", s.writeGuides);
-  r.read("exposure", job.toneMapping.exposure);
+  r.read("exposure", job.toneMapping.exposure, 0.0f);
   r.readEnum("toneMapping", job.toneMapping.toneOperator, &parseToneMapOperator);
   r.read("allEffects", job.allEffects);
   if (doc.contains("environment")) {
@@ -445,9 +483,10 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source) 
     for (auto [key, field] : {std::pair{"rotation", &EnvironmentChoice::rotationDegrees},
                               std::pair{"intensity", &EnvironmentChoice::intensity}}) {
       if (!e.contains(key)) continue;
-      if (!e[key].is_number()) r.fail(std::string("environment.") + key, "must be a number");
-      choice.*field = e[key].get<float>();
+      choice.*field = r.finite(e[key], std::string("environment.") + key);
     }
+    if (choice.intensity && !(*choice.intensity >= 0.0f))
+      r.fail("environment.intensity", "must be >= 0");
     if (e.contains("background")) {
       if (!e["background"].is_boolean()) r.fail("environment.background", "must be true or false");
       choice.visibleBackground = e["background"].get<bool>();
@@ -473,12 +512,18 @@ void saveRenderJob(const std::string& path, const RenderJob& job) {
   if (!out) throw Error(fmt::format("cannot write render settings '{}'", path));
 }
 
-RenderJob loadRenderJob(const std::string& path) {
+RenderJob loadRenderJob(const std::string& path, const scene::InputLimits& limits) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(fmt::format("cannot read render settings '{}'", path));
+  // Refused before reading: maxJsonBytes bounds the text as well as the tree.
+  std::error_code ec;
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec)
+    scene::requireAtMost(size, limits.maxJsonBytes, "maxJsonBytes",
+                         path + ": JSON text size in bytes");
   std::stringstream text;
   text << in.rdbuf();
-  return renderJobFromJson(text.str(), path);
+  return renderJobFromJson(text.str(), path, limits);
 }
 
 }  // namespace penumbra::render

@@ -38,6 +38,7 @@
 
 #include "render/path_tracer.h"
 #include "render/tone_mapping.h"
+#include "scene/input_limits.h"
 #include "scene/scene.h"
 
 namespace penumbra::render {
@@ -121,10 +122,19 @@ std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Materia
 void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverride>& overrides,
                             const std::string& source);
 
+// The ranges a record's counts must lie in (the CLI's --spp and --max-depth
+// take the same): larger ones are refused, not rendered for days.
+inline constexpr uint32_t kMaxSamplesPerPixel = 1u << 20;
+inline constexpr uint32_t kMaxPathDepth = 1024;  // maxDepth, rouletteStartDepth
+
 std::string renderJobToJson(const RenderJob& job);
-// Throws penumbra::Error naming `source` and the field on a malformed document.
-RenderJob renderJobFromJson(const std::string& text, const std::string& source);
+// Throws penumbra::Error naming `source` and the field on a malformed
+// document: a wrong type, a number out of its range (whole numbers where
+// the field is one, floats finite), a zero camera direction, or text past
+// limits.maxJsonBytes or nested past limits.maxJsonDepth (scene/input_limits.h).
+RenderJob renderJobFromJson(const std::string& text, const std::string& source,
+                            const scene::InputLimits& limits = {});
 void saveRenderJob(const std::string& path, const RenderJob& job);
-RenderJob loadRenderJob(const std::string& path);
+RenderJob loadRenderJob(const std::string& path, const scene::InputLimits& limits = {});
 
 }  // namespace penumbra::render

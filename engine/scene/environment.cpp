@@ -22,6 +22,17 @@ glm::vec3 mapDirection(double u, double v) {
                    -std::sin(theta) * std::cos(phi));
 }
 
+// The environment limits (validateEnvironment) on the size a map's header
+// declares, before it is decoded: the decoders allocate that much (16 bytes
+// a texel as RGBA float) however little the file holds.
+void checkDeclaredSize(const std::string& path, uint64_t width, uint64_t height) {
+  if (width > kMaxEnvironmentWidth || height > kMaxEnvironmentWidth ||
+      width * height > kMaxEnvironmentTexels)
+    throw Error(fmt::format(
+        "environment '{}': its header declares {}x{} texels, more than 16384x8192 ({} texels)",
+        path, width, height, kMaxEnvironmentTexels));
+}
+
 }  // namespace
 
 Environment loadEnvironmentMap(const std::string& path) {
@@ -32,6 +43,13 @@ Environment loadEnvironmentMap(const std::string& path) {
   const std::string ext = image::lowerExtension(path);
   if (ext == ".exr") {
     image::Image img;
+    std::pair<uint64_t, uint64_t> declared;
+    try {
+      declared = image::exrSize(path);
+    } catch (const Error& e) {
+      throw Error(fmt::format("environment: {}", e.what()));
+    }
+    checkDeclaredSize(path, declared.first, declared.second);
     try {
       img = image::loadExr(path);
     } catch (const Error& e) {
@@ -46,6 +64,9 @@ Environment loadEnvironmentMap(const std::string& path) {
     if (!stbi_is_hdr(path.c_str()))
       throw Error(fmt::format("environment '{}': not a Radiance HDR (RGBE) image", path));
     int w = 0, h = 0, components = 0;
+    if (!stbi_info(path.c_str(), &w, &h, &components))
+      throw Error(fmt::format("environment '{}': {}", path, stbi_failure_reason()));
+    checkDeclaredSize(path, uint64_t(std::max(w, 0)), uint64_t(std::max(h, 0)));
     float* data = stbi_loadf(path.c_str(), &w, &h, &components, 3);
     if (!data) throw Error(fmt::format("environment '{}': {}", path, stbi_failure_reason()));
     env.width = uint32_t(w);

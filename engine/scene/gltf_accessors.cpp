@@ -154,9 +154,8 @@ std::vector<T> readComponents(const tinygltf::Model& model, const tinygltf::Acce
     for (size_t i = 0; i < a.count; ++i)
       for (int c = 0; c < comps; ++c) out.push_back(decode(base + i * stride + size_t(c) * csize));
   } else {
-    // No buffer view: zeros, possibly overridden by sparse values (glTF 3.6.2.3).
-    if (a.count > (size_t(1) << 28))
-      throw Error(fmt::format("{}: {} elements without a buffer view", where, a.count));
+    // No buffer view: zeros, possibly overridden by sparse values (glTF
+    // 3.6.2.3); decodedBytes has bounded the count.
     out.assign(a.count * size_t(comps), T(0));
   }
   if (!a.sparse.isSparse) return out;
@@ -211,9 +210,21 @@ size_t accessorCount(const tinygltf::Model& model, int index, const std::string&
   return accessorAt(model, index, where).count;
 }
 
-std::vector<float> readFloats(const tinygltf::Model& model, int index, int components,
-                              const std::string& where) {
+uint64_t decodedBytes(const tinygltf::Model& model, int index, const InputLimits& limits,
+                      const std::string& where) {
   const std::string at = fmt::format("{} (accessor {})", where, index);
+  const auto& a = accessorAt(model, index, at);
+  if (a.bufferView < 0)
+    requireAtMost(a.count, limits.maxZeroFilledElements, "maxZeroFilledElements",
+                  at + " element count without a buffer view");
+  requireAtMost(a.count, limits.maxAccessorElements, "maxAccessorElements", at + " element count");
+  return uint64_t(a.count) * uint64_t(componentCount(a.type)) * 4;
+}
+
+std::vector<float> readFloats(const tinygltf::Model& model, int index, int components,
+                              const std::string& where, const InputLimits& limits) {
+  const std::string at = fmt::format("{} (accessor {})", where, index);
+  decodedBytes(model, index, limits, where);
   const auto& a = accessorAt(model, index, at);
   if (componentSize(a.componentType) == 0)
     throw Error(fmt::format("{}: unknown component type {}", at, a.componentType));
@@ -230,9 +241,10 @@ std::vector<float> readFloats(const tinygltf::Model& model, int index, int compo
   });
 }
 
-std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index,
-                                  const std::string& where) {
+std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index, const std::string& where,
+                                  const InputLimits& limits) {
   const std::string at = fmt::format("{} (accessor {})", where, index);
+  decodedBytes(model, index, limits, where);
   const auto& a = accessorAt(model, index, at);
   const int type = a.componentType;
   if (a.type != TINYGLTF_TYPE_SCALAR || a.normalized ||

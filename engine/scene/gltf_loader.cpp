@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <optional>
+#include <string_view>
 
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
@@ -102,10 +104,13 @@ Camera framingCamera(const Scene& scene) {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const gltf::ImageDecoding& decoding, std::string file)
+  Importer(const tinygltf::Model& model, gltf::ImageDecoding& decoding, std::string file,
+           const InputLimits& limits)
       : model_(model),
         file_(std::move(file)),
-        textures_(model, decoding, at(), out_.scene, out_.warnings) {}
+        textures_(model, decoding, at(), out_.scene, out_.warnings) {
+    budget_.limits = limits;
+  }
 
   GltfImport run() {
     out_.scene.name = fs::path(file_).stem().string();
@@ -222,7 +227,7 @@ class Importer {
         throw Error(fmt::format("{}: material {} does not exist ({} materials)", name,
                                 prim.material, model_.materials.size()));
       }
-      auto mesh = gltf::convertPrimitive(model_, prim, material, name, out_.warnings);
+      auto mesh = gltf::convertPrimitive(model_, prim, material, name, out_.warnings, budget_);
       if (!mesh) continue;
       warnMissingTexCoords(*mesh, name);
       mesh->name =
@@ -301,15 +306,18 @@ class Importer {
       if (seen[index] == 1)
         warn(fmt::format("{}: has more than one parent; instanced under each", where));
       seen[index] = uint8_t(std::min(seen[index] + 1, 2));
-      if (++visits > 10'000'000)
-        throw Error(fmt::format("{}: the node graph expands to more than 10 million nodes", at()));
+      requireAtMost(++visits, budget_.limits.maxNodeVisits, "maxNodeVisits",
+                    at() + " node graph's node visits");
       onPath[index] = 1;
       stack.push_back({step.node, glm::dmat4(1.0), true});
 
       const glm::dmat4 world = step.parent * localTransform(node, where);
       if (node.mesh >= 0)
-        for (uint32_t mesh : meshesOf(node.mesh, where))
+        for (uint32_t mesh : meshesOf(node.mesh, where)) {
+          requireAtMost(out_.scene.instances.size() + 1, budget_.limits.maxInstances,
+                        "maxInstances", at() + " instance count");
           out_.scene.instances.push_back({mesh, world});
+        }
       if (node.camera >= 0) addCamera(index, world);
       if (auto light = gltf::nodeLight(model_, node, world, where))
         out_.scene.pointLights.push_back(*light);
@@ -326,6 +334,7 @@ class Importer {
   std::string file_;
   GltfImport out_;
   gltf::TextureImporter textures_;
+  gltf::DecodeBudget budget_;
   std::vector<bool> invisible_;
   std::optional<uint32_t> defaultMaterial_;
   std::map<int, std::vector<uint32_t>> meshes_;
@@ -395,9 +404,21 @@ bool fileExists(const std::string&, void*) {
   return true;
 }
 
+// The JSON text tinygltf will parse: the whole .gltf, or a .glb's first
+// chunk where its header is sound (tinygltf refuses the file unparsed if not).
+std::string_view jsonText(const std::vector<unsigned char>& data, bool binary) {
+  const std::string_view all(reinterpret_cast<const char*>(data.data()), data.size());
+  if (!binary) return all;
+  if (data.size() < 20 || all.substr(0, 4) != "glTF") return {};
+  uint32_t length = 0;
+  std::memcpy(&length, data.data() + 12, 4);  // little-endian, as the targets
+  return uint64_t(length) <= data.size() - 20 ? all.substr(20, length) : std::string_view();
+}
+
 }  // namespace
 
-GltfImport importGltf(const std::string& path, const FileAccess& access) {
+GltfImport importGltf(const std::string& path, const FileAccess& access,
+                      const InputLimits& limits) {
   const std::string at = fmt::format("glTF '{}'", path);
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Error(fmt::format("{}: no such file", at));
@@ -410,15 +431,31 @@ GltfImport importGltf(const std::string& path, const FileAccess& access) {
                           access.allowOutsideFolder};
   loader.SetFsCallbacks({&fileExists, &expandNothing, &readWholeFile, nullptr, &policy});
   gltf::ImageDecoding decoding;
+  decoding.limits = limits;
   loader.SetImageLoader(gltf::decodeImage, &decoding);
+  // Read here rather than by tinygltf, so that the JSON's nesting is bounded
+  // before its parser, and its recursive conversion of "extras", see it.
+  std::vector<unsigned char> data;
+  std::string readError;
+  if (!readWholeFile(&data, &readError, path, &policy))
+    throw Error(fmt::format("{}: {}", at, oneLine(readError)));
+  if (data.empty()) throw Error(fmt::format("{}: the file is empty", at));
+  if (data.size() > UINT32_MAX)
+    throw Error(fmt::format("{}: larger than 4 GiB, more than glTF can address", at));
+  const bool binary = lower(fs::path(path).extension().string()) == ".glb";
+  requireJsonDepth(jsonText(data, binary), limits, at);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
   try {
-    if (lower(fs::path(path).extension().string()) == ".glb")
-      ok = loader.LoadBinaryFromFile(&model, &err, &warn, path);
+    // policy.base is the folder as tinygltf's LoadFromFile would pass it.
+    if (binary)
+      ok = loader.LoadBinaryFromMemory(&model, &err, &warn, data.data(), uint32_t(data.size()),
+                                       policy.base);
     else
-      ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
+      ok = loader.LoadASCIIFromString(&model, &err, &warn,
+                                      reinterpret_cast<const char*>(data.data()),
+                                      uint32_t(data.size()), policy.base);
   } catch (const std::exception& e) {
     // tinygltf catches its JSON parser's exceptions, but not every library error.
     throw Error(fmt::format("{}: {}", at, oneLine(e.what())));
@@ -428,14 +465,14 @@ GltfImport importGltf(const std::string& path, const FileAccess& access) {
     const std::string& reason = !err.empty() ? err : warn;
     throw Error(fmt::format("{}: {}", at, oneLine(reason.empty() ? "cannot be read" : reason)));
   }
-  GltfImport result = Importer(model, decoding, path).run();
+  GltfImport result = Importer(model, decoding, path, limits).run();
   if (!warn.empty())
     result.warnings.insert(result.warnings.begin(), fmt::format("{}: {}", at, oneLine(warn)));
   return result;
 }
 
-Scene loadGltf(const std::string& path, const FileAccess& access) {
-  GltfImport result = importGltf(path, access);
+Scene loadGltf(const std::string& path, const FileAccess& access, const InputLimits& limits) {
+  GltfImport result = importGltf(path, access, limits);
   for (const auto& w : result.warnings) log::warning("{}", w);
   return std::move(result.scene);
 }

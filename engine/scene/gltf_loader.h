@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/input_limits.h"
 #include "scene/scene.h"
 
 namespace penumbra::scene {
@@ -44,10 +45,15 @@ struct GltfImport {
 };
 
 // Reads a .gltf or .glb file; returns warnings instead of printing them.
-GltfImport importGltf(const std::string& path, const FileAccess& access = {});
+// `limits` bound what the file may make it allocate (input_limits.h): JSON
+// nesting, accessor element counts, decoded bytes, triangles, instances,
+// node visits and image sizes (read from each image's header first).
+GltfImport importGltf(const std::string& path, const FileAccess& access = {},
+                      const InputLimits& limits = {});
 
 // importGltf, with its warnings written to the log.
-Scene loadGltf(const std::string& path, const FileAccess& access = {});
+Scene loadGltf(const std::string& path, const FileAccess& access = {},
+               const InputLimits& limits = {});
 
 // Whether `path` names a glTF file by its extension (.gltf, .glb; any case).
 bool isGltfPath(const std::string& path);

@@ -41,6 +41,34 @@ int attribute(const tinygltf::Primitive& p, const char* name) {
   return it == p.attributes.end() ? -1 : it->second;
 }
 
+// The attributes convertPrimitive reads besides POSITION.
+constexpr const char* kAttributes[] = {"NORMAL", "TEXCOORD_0", "TEXCOORD_1", "TANGENT"};
+
+// Charges what converting `p` reads and makes to `budget`, from the
+// accessors' declared counts, before any of it is allocated.
+void charge(const tinygltf::Model& model, const tinygltf::Primitive& p, int position,
+            const std::string& where, DecodeBudget& budget) {
+  const InputLimits& limits = budget.limits;
+  uint64_t bytes = decodedBytes(model, position, limits, where + " POSITION");
+  // The index sequence: the indices, or one per vertex.
+  uint64_t sequence = accessorCount(model, position, where + " POSITION");
+  if (p.indices >= 0) {
+    bytes += decodedBytes(model, p.indices, limits, where + " indices");
+    sequence = accessorCount(model, p.indices, where + " indices");
+  }
+  for (const char* name : kAttributes)
+    if (const int index = attribute(p, name); index >= 0)
+      bytes += decodedBytes(model, index, limits, fmt::format("{} {}", where, name));
+  budget.decodedBytes = saturatingAdd(budget.decodedBytes, bytes);
+  requireAtMost(budget.decodedBytes, limits.maxDecodedBytes, "maxDecodedBytes",
+                where + ": the file's decoded accessor bytes");
+  const uint64_t triangles = p.mode == TINYGLTF_MODE_TRIANGLES ? sequence / 3
+                             : sequence >= 2                   ? sequence - 2
+                                                               : 0;
+  requireAtMost(saturatingAdd(budget.triangles, triangles), limits.maxTriangles, "maxTriangles",
+                where + ": the file's triangle count");
+}
+
 template <class Vec>
 std::vector<Vec> toVectors(const std::vector<float>& flat, const std::string& where) {
   constexpr int n = Vec::length();
@@ -59,7 +87,7 @@ std::vector<Vec> toVectors(const std::vector<float>& flat, const std::string& wh
 
 std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p,
                                      uint32_t material, const std::string& where,
-                                     std::vector<std::string>& warnings) {
+                                     std::vector<std::string>& warnings, DecodeBudget& budget) {
   if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
       p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
     warnings.push_back(fmt::format("{}: mode {} is not made of triangles; skipped", where, p.mode));
@@ -70,15 +98,18 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     warnings.push_back(fmt::format("{}: has no POSITION; skipped", where));
     return std::nullopt;
   }
+  charge(model, p, position, where, budget);
+  const InputLimits& limits = budget.limits;
   Mesh mesh;
   mesh.material = material;
   const std::string at = where + " POSITION";
-  mesh.positions = toVectors<glm::vec3>(readFloats(model, position, 3, at),
+  mesh.positions = toVectors<glm::vec3>(readFloats(model, position, 3, at, limits),
                                         fmt::format("{} (accessor {})", at, position));
   const size_t vertexCount = mesh.positions.size();
 
   const std::vector<uint32_t> sequence =
-      p.indices >= 0 ? readIndices(model, p.indices, where + " indices") : consecutive(vertexCount);
+      p.indices >= 0 ? readIndices(model, p.indices, where + " indices", limits)
+                     : consecutive(vertexCount);
   for (size_t i = 0; i < sequence.size(); ++i)
     if (sequence[i] >= vertexCount)
       throw Error(
@@ -113,7 +144,7 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     const int index = attribute(p, name);
     if (index < 0) return {};
     const std::string what = fmt::format("{} {}", where, name);
-    auto values = readFloats(model, index, components, what);
+    auto values = readFloats(model, index, components, what, limits);
     if (values.size() != vertexCount * size_t(components))
       throw Error(fmt::format("{} (accessor {}): has {} elements but POSITION has {}", what, index,
                               values.size() / size_t(components), vertexCount));
@@ -141,6 +172,7 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     makeFlatNormals(mesh);
   }
   if (mesh.tangents.empty()) generateTangents(mesh);
+  budget.triangles += mesh.indices.size() / 3;
   return mesh;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 #include "scene/tinygltf.h"
@@ -26,18 +27,29 @@ const tinygltf::Value* member(const tinygltf::Value& object, const char* key) {
   return object.IsObject() && object.Has(key) ? &object.Get(key) : nullptr;
 }
 
-double number(const tinygltf::Value& object, const char* key, double fallback) {
-  const auto* v = member(object, key);
-  return v && v->IsNumber() ? v->GetNumberAsDouble() : fallback;
+// A KHR_texture_transform number as a float: a larger one would become
+// infinity in the texture transform. `where` names the texture info.
+float transformFloat(double value, const char* key, const std::string& where) {
+  if (!std::isfinite(value) || std::abs(value) > double(std::numeric_limits<float>::max()))
+    throw Error(
+        fmt::format("{}: KHR_texture_transform {} {} does not fit a float", where, key, value));
+  return float(value);
 }
 
-glm::vec2 vec2(const tinygltf::Value& object, const char* key, glm::vec2 fallback) {
+float number(const tinygltf::Value& object, const char* key, float fallback,
+             const std::string& where) {
+  const auto* v = member(object, key);
+  return v && v->IsNumber() ? transformFloat(v->GetNumberAsDouble(), key, where) : fallback;
+}
+
+glm::vec2 vec2(const tinygltf::Value& object, const char* key, glm::vec2 fallback,
+               const std::string& where) {
   const auto* v = member(object, key);
   if (!v || !v->IsArray() || v->ArrayLen() != 2) return fallback;
   glm::vec2 r;
   for (int i = 0; i < 2; ++i) {
     const auto& c = v->Get(i);
-    r[i] = c.IsNumber() ? float(c.GetNumberAsDouble()) : fallback[i];
+    r[i] = c.IsNumber() ? transformFloat(c.GetNumberAsDouble(), key, where) : fallback[i];
   }
   return r;
 }
@@ -52,13 +64,47 @@ uint8_t to8(uint16_t v) {
   return uint8_t((uint32_t(v) * 255u + 32767u) / 65535u);
 }
 
+// Why an image of this size may not be decoded, from its header: the
+// decoder allocates what the header claims, however small the file.
+std::optional<std::string> refusedSize(uint64_t width, uint64_t height, ImageDecoding& decoding) {
+  const InputLimits& limits = decoding.limits;
+  if (width > limits.maxImageSide || height > limits.maxImageSide)
+    return fmt::format(
+        "its header says {} x {} pixels, more than the limit {} per side "
+        "(InputLimits::maxImageSide; docs/security.md)",
+        width, height, limits.maxImageSide);
+  if (width * height > limits.maxImagePixels)
+    return fmt::format(
+        "its header says {} x {} pixels, more than the limit {} pixels "
+        "(InputLimits::maxImagePixels; docs/security.md)",
+        width, height, limits.maxImagePixels);
+  if (decoding.pixels + width * height > limits.maxTexturePixels)
+    return fmt::format(
+        "its {} x {} pixels would bring the file's images to {} pixels, more than the limit {} "
+        "(InputLimits::maxTexturePixels; docs/security.md)",
+        width, height, decoding.pixels + width * height, limits.maxTexturePixels);
+  decoding.pixels += width * height;
+  return std::nullopt;
+}
+
 // Decodes an encoded image (PNG, JPEG, ...) into `image` with the file's
-// channel count and bit depth; returns why it failed, or nothing.
+// channel count and bit depth, once its header's size passes the limits;
+// returns why it failed, or nothing.
 std::optional<std::string> decodeInto(tinygltf::Image& image, const unsigned char* bytes,
-                                      size_t size) {
+                                      size_t size, ImageDecoding& decoding) {
   if (size > size_t(INT_MAX)) return "larger than 2 GiB";
   const int length = int(size);
   int width = 0, height = 0, components = 0, bits = 8;
+  // stb_image reads the same header to decode; a file whose header it cannot
+  // read here it cannot decode either.
+  if (!stbi_info_from_memory(bytes, length, &width, &height, &components)) {
+    const char* reason = stbi_failure_reason();
+    return std::string(reason ? reason : "unknown image format");
+  }
+  if (auto refused =
+          refusedSize(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0)), decoding))
+    return refused;
+  const uint64_t claimed = uint64_t(width) * uint64_t(height);
   void* pixels = nullptr;
   // 16-bit PNGs keep their precision until toRgba8 rounds them.
   if (stbi_is_16_bit_from_memory(bytes, length)) {
@@ -72,6 +118,10 @@ std::optional<std::string> decodeInto(tinygltf::Image& image, const unsigned cha
   if (!pixels) {
     const char* reason = stbi_failure_reason();
     return std::string(reason ? reason : "unknown image format");
+  }
+  if (uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)) > claimed) {
+    stbi_image_free(pixels);
+    return std::string("decodes larger than its header says");
   }
   image.width = width;
   image.height = height;
@@ -95,8 +145,9 @@ bool decodeImage(tinygltf::Image* image, int index, std::string* /*err*/, std::s
   // tinygltf hands over a buffer view's bytes without checking the view
   // against its buffer: TextureImporter decodes those once it has.
   if (image->bufferView >= 0) return true;
-  if (auto failure = decodeInto(*image, bytes, size_t(std::max(size, 0))))
-    static_cast<ImageDecoding*>(decoding)->failures[index] = *failure;
+  auto& state = *static_cast<ImageDecoding*>(decoding);
+  if (auto failure = decodeInto(*image, bytes, size_t(std::max(size, 0)), state))
+    state.failures[index] = *failure;
   return true;
 }
 
@@ -187,7 +238,7 @@ void setTextureTransform(TextureRef& ref, glm::vec2 offset, float rotation, glm:
   ref.transform2 = offset;
 }
 
-TextureImporter::TextureImporter(const tinygltf::Model& model, const ImageDecoding& decoding,
+TextureImporter::TextureImporter(const tinygltf::Model& model, ImageDecoding& decoding,
                                  std::string at, Scene& scene, std::vector<std::string>& warnings)
     : model_(model),
       decoding_(decoding),
@@ -226,11 +277,19 @@ uint32_t TextureImporter::textureRef(int index, int texCoord, const tinygltf::Va
   if (src.sampler >= 0) ref.sampler = sampler(src.sampler, textureName);
   if (transform) {
     // The extension's texCoord overrides the texture info's.
-    if (const auto* set = member(*transform, "texCoord"); set && set->IsNumber())
-      texCoord = int(set->GetNumberAsDouble());
-    setTextureTransform(ref, vec2(*transform, "offset", glm::vec2(0.0f)),
-                        float(number(*transform, "rotation", 0.0)),
-                        vec2(*transform, "scale", glm::vec2(1.0f)));
+    if (const auto* set = member(*transform, "texCoord"); set && set->IsNumber()) {
+      // Range first: converting a double outside int's range is undefined.
+      const double value = set->GetNumberAsDouble();
+      if (!(value >= 0.0 && value <= double(INT_MAX)) || std::floor(value) != value)
+        throw Error(fmt::format(
+            "{}: KHR_texture_transform texCoord {} is not a texture coordinate set index "
+            "(a whole number from 0 to {})",
+            where, value, INT_MAX));
+      texCoord = int(value);
+    }
+    setTextureTransform(ref, vec2(*transform, "offset", glm::vec2(0.0f), where),
+                        number(*transform, "rotation", 0.0f, where),
+                        vec2(*transform, "scale", glm::vec2(1.0f), where));
   }
   ref.texCoord = texCoordSet(texCoord, where);
   scene_.textureRefs.push_back(ref);
@@ -309,7 +368,7 @@ uint32_t TextureImporter::texture(int image, bool srgb, const std::string& where
 }
 
 const tinygltf::Image& TextureImporter::decodeBufferView(int image, const std::string& what,
-                                                         tinygltf::Image& out) const {
+                                                         tinygltf::Image& out) {
   const int index = model_.images[size_t(image)].bufferView;
   if (size_t(index) >= model_.bufferViews.size())
     throw Error(fmt::format("{}: buffer view {} does not exist ({} buffer views)", what, index,
@@ -323,7 +382,7 @@ const tinygltf::Image& TextureImporter::decodeBufferView(int image, const std::s
     throw Error(fmt::format("{}: bytes {} to {} lie outside buffer {} ({} bytes)", what,
                             view.byteOffset, view.byteOffset + view.byteLength, view.buffer,
                             buffer.size()));
-  if (auto failure = decodeInto(out, buffer.data() + view.byteOffset, view.byteLength))
+  if (auto failure = decodeInto(out, buffer.data() + view.byteOffset, view.byteLength, decoding_))
     throw Error(fmt::format("{} cannot be decoded ({})", what, *failure));
   return out;
 }

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/input_limits.h"
 #include "scene/scene.h"
 
 namespace tinygltf {
@@ -27,15 +28,22 @@ class Value;
 namespace penumbra::scene::gltf {
 
 // Why images failed to decode, by glTF image index; filled by decodeImage.
+// Every image's size is read from its header and checked against `limits`
+// (maxImageSide, maxImagePixels, and maxTexturePixels for `pixels`, the
+// file's images so far) before it is decoded: a small file can claim a huge
+// image, which stb_image would allocate (and fill) in full.
 struct ImageDecoding {
   std::map<int, std::string> failures;
+  InputLimits limits;
+  uint64_t pixels = 0;
 };
 
 // tinygltf's LoadImageDataFunction (user data: an ImageDecoding). Decodes
 // with stb_image keeping the file's channel count and bit depth. It never
-// fails: an image it cannot decode is left empty and its reason recorded, so
-// the importer reports it naming the image, and only if a material uses it.
-// Images in buffer views are left for TextureImporter to decode.
+// fails: an image it cannot decode, or whose header passes a limit, is left
+// empty and its reason recorded, so the importer reports it naming the image
+// (and the limit), and only if a material uses it. Images in buffer views
+// are left for TextureImporter to decode, under the same limits.
 bool decodeImage(tinygltf::Image* image, int index, std::string* err, std::string* warn,
                  int requiredWidth, int requiredHeight, const unsigned char* bytes, int size,
                  void* decoding);
@@ -66,7 +74,7 @@ void setTextureTransform(TextureRef& ref, glm::vec2 offset, float rotation, glm:
 class TextureImporter {
  public:
   // `at` names the file in messages; textures go into `scene`.
-  TextureImporter(const tinygltf::Model& model, const ImageDecoding& decoding, std::string at,
+  TextureImporter(const tinygltf::Model& model, ImageDecoding& decoding, std::string at,
                   Scene& scene, std::vector<std::string>& warnings);
 
   // Sets `material`'s five texture slots from `src`'s texture infos.
@@ -86,11 +94,10 @@ class TextureImporter {
   std::string describeImage(int index) const;
   // Image `image` (stored in a buffer view) decoded into `out`, its view
   // checked against its buffer first.
-  const tinygltf::Image& decodeBufferView(int image, const std::string& what,
-                                          tinygltf::Image& out) const;
+  const tinygltf::Image& decodeBufferView(int image, const std::string& what, tinygltf::Image& out);
 
   const tinygltf::Model& model_;
-  const ImageDecoding& decoding_;
+  ImageDecoding& decoding_;
   std::string at_;
   Scene& scene_;
   std::vector<std::string>& warnings_;

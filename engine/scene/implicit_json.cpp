@@ -19,25 +19,18 @@ const std::set<std::string> kSphereTracingKeys = {"maxSteps", "tolerance"};
 // The kinds scene::isSignedDistanceKind names, as the file spells them.
 const std::set<std::string> kMarchedKinds = {"torus", "roundedBox", "blend", "mandelbulb"};
 
-std::string requireString(const json& object, const char* key, const std::string& where) {
+// A shape parameter: any number, converted to float as it is. A value past
+// float's range becomes infinity, which validateImplicit refuses naming the
+// object, the parameter and the value, as it does every out-of-range size.
+float shapeParameter(const json& object, const char* key, const std::string& where) {
   const json& value = require(object, key, where);
-  if (!value.is_string()) throw Error(fmt::format("{}: \"{}\" is not a string", where, key));
-  return value.get<std::string>();
-}
-
-float requireFloat(const json& object, const char* key, const std::string& where) {
-  const json& value = require(object, key, where);
-  if (!value.is_number()) throw Error(fmt::format("{}: \"{}\" is not a number", where, key));
+  if (!value.is_number()) throwWrongType(where, key, "a number", value);
   return value.get<float>();
 }
 
 uint32_t readCount(const json& object, const char* key, uint32_t fallback,
                    const std::string& where) {
-  if (!object.contains(key)) return fallback;
-  const json& value = object.at(key);
-  if (!value.is_number_integer() || value.get<int64_t>() < 1 || value.get<int64_t>() > 1000000)
-    throw Error(fmt::format("{}: \"{}\" must be an integer in 1..1000000", where, key));
-  return uint32_t(value.get<int64_t>());
+  return uint32_t(readInteger(object, key, fallback, 1, 1000000, where));
 }
 
 glm::vec2 readVec2(const json& value, const std::string& where) {
@@ -74,21 +67,21 @@ const char* kBlendKinds = "sphere, box, torus, roundedBox";
 
 std::variant<implicit::Sphere, implicit::Box, implicit::Torus, implicit::RoundedBox>
 parseBlendableShape(const json& o, const std::string& kind, const std::string& where) {
-  if (kind == "sphere") return implicit::Sphere{requireFloat(o, "radius", where)};
+  if (kind == "sphere") return implicit::Sphere{shapeParameter(o, "radius", where)};
   if (kind == "box")
     return implicit::Box{readVec3(require(o, "halfExtents", where), where + " halfExtents")};
   if (kind == "torus")
-    return implicit::Torus{requireFloat(o, "majorRadius", where),
-                           requireFloat(o, "minorRadius", where)};
+    return implicit::Torus{shapeParameter(o, "majorRadius", where),
+                           shapeParameter(o, "minorRadius", where)};
   if (kind == "roundedBox")
     return implicit::RoundedBox{readVec3(require(o, "halfExtents", where), where + " halfExtents"),
-                                requireFloat(o, "cornerRadius", where)};
+                                shapeParameter(o, "cornerRadius", where)};
   throw Error(fmt::format("{}: kind '{}' cannot be blended ({})", where, kind, kBlendKinds));
 }
 
 implicit::Blend parseBlend(const json& o, const std::string& where) {
   implicit::Blend blend;
-  blend.blendRadius = requireFloat(o, "blendRadius", where);
+  blend.blendRadius = shapeParameter(o, "blendRadius", where);
   const json& primitives = require(o, "primitives", where);
   if (!primitives.is_array()) throw Error(where + ": \"primitives\" must be an array");
   for (const auto& p : primitives) {
@@ -144,7 +137,7 @@ glm::dmat4 parseTransform(const json& t, float unitScale, const std::string& whe
   if (t.contains("scale")) {
     const json& s = t.at("scale");
     const glm::vec3 scale =
-        s.is_number() ? glm::vec3(s.get<float>()) : readVec3(s, where + " scale");
+        s.is_number() ? glm::vec3(toFloat(s, where, "scale")) : readVec3(s, where + " scale");
     m = glm::scale(m, glm::dvec3(scale));
   }
   return glm::scale(glm::dmat4(1.0), glm::dvec3(unitScale)) * m;

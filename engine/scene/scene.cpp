@@ -155,16 +155,22 @@ void validate(const Scene& scene) {
   } catch (const Error& e) {
     fail(e.what());
   }
-  for (const auto& light : scene.pointLights)
+  for (const auto& light : scene.pointLights) {
     if (!(light.angularRadiusDegrees >= 0.0f && light.angularRadiusDegrees < 90.0f))
       fail(fmt::format("a directional light's angular radius {} is outside [0, 90) degrees",
                        light.angularRadiusDegrees));
+    // A value past float's range became infinity on the way in.
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(light.intensity[i]) || !std::isfinite(light.position[i]))
+        fail("a light's intensity or position is not finite");
+  }
   for (const auto& m : scene.materials) {
     auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
     for (int i = 0; i < 3; ++i)
-      if (!unit(m.baseColor[i]) || !(m.emission[i] >= 0.0f))
-        fail(fmt::format("material '{}': baseColor must lie in [0, 1] and emission be non-negative",
-                         m.name));
+      if (!unit(m.baseColor[i]) || !(m.emission[i] >= 0.0f) || !std::isfinite(m.emission[i]))
+        fail(fmt::format(
+            "material '{}': baseColor must lie in [0, 1] and emission be finite and non-negative",
+            m.name));
     for (float v :
          {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen, m.sheenTint,
           m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface, m.reflectivity, m.transparency})
@@ -203,8 +209,12 @@ void validate(const Scene& scene) {
   const auto& c = scene.camera;
   if (!(c.verticalFovDegrees > 0.0f && c.verticalFovDegrees < 180.0f))
     fail(fmt::format("camera vertical field of view {} is not in (0, 180)", c.verticalFovDegrees));
-  if (glm::length(c.forward) == 0.0f || glm::length(glm::cross(c.forward, c.up)) == 0.0f)
-    fail("camera forward and up must be non-zero and not parallel");
+  // Written so that NaN fails too (a normalised zero vector is NaN).
+  if (!(glm::length(c.forward) > 0.0f) || !(glm::length(glm::cross(c.forward, c.up)) > 0.0f) ||
+      !std::isfinite(glm::length(c.forward)) || !std::isfinite(glm::length(c.up)))
+    fail("camera forward and up must be non-zero, finite and not parallel");
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(c.position[i])) fail("camera position is not finite");
 }
 
 void selectCamera(Scene& scene, const std::string& name) {

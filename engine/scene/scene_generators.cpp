@@ -22,32 +22,37 @@ uint32_t materialOf(const json& entry, const char* key, const std::map<std::stri
   return it->second;
 }
 
-uint32_t readCount(const json& entry, const char* key, uint32_t fallback, uint32_t max, const std::string& where) {
-  if (!entry.contains(key)) return fallback;
-  const json& v = entry.at(key);
-  if (!v.is_number_integer() || v.get<int64_t>() < 1 || v.get<int64_t>() > int64_t(max))
-    throw Error(fmt::format("{}: \"{}\" must be an integer in 1..{}", where, key, max));
-  return v.get<uint32_t>();
+uint32_t readCount(const json& entry, const char* key, uint32_t fallback, uint32_t max,
+                   const std::string& where) {
+  return uint32_t(readInteger(entry, key, fallback, 1, max, where));
 }
 
-std::vector<uint32_t> readCounts(const json& entry, size_t n, uint32_t max, const std::string& where) {
+// The "count" array and the product of its counts (what the entry makes).
+std::vector<uint32_t> readCounts(const json& entry, size_t n, uint32_t max,
+                                 const std::string& where, uint64_t& product) {
   const json& v = require(entry, "count", where);
   if (!v.is_array() || v.size() != n)
     throw Error(fmt::format("{}: \"count\" must be an array of {} integers", where, n));
   std::vector<uint32_t> counts;
-  for (const auto& c : v) {
-    if (!c.is_number_integer() || c.get<int64_t>() < 1 || c.get<int64_t>() > int64_t(max))
-      throw Error(fmt::format("{}: each \"count\" must be an integer in 1..{}", where, max));
-    counts.push_back(c.get<uint32_t>());
+  product = 1;
+  for (size_t i = 0; i < n; ++i) {
+    counts.push_back(uint32_t(toInteger(v[i], where, fmt::format("count[{}]", i), 1, max)));
+    product *= counts.back();
   }
   return counts;
 }
 
-void addTerrain(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials, float scale,
-                const std::string& where) {
+void addTerrain(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials,
+                float scale, const std::string& where, const InputLimits& limits) {
   TerrainDesc desc;
-  desc.resolution = readCount(e, "resolution", desc.resolution, 46340, where);
+  desc.resolution = uint32_t(readInteger(e, "resolution", desc.resolution, 0, UINT32_MAX, where));
   if (desc.resolution < 2) throw Error(where + ": \"resolution\" must be at least 2");
+  // Checked here, before makeTerrain allocates (resolution^2 vertices).
+  requireAtMost(desc.resolution, limits.maxTerrainResolution, "maxTerrainResolution",
+                where + " \"resolution\"");
+  const uint64_t cells = uint64_t(desc.resolution - 1) * (desc.resolution - 1);
+  requireAtMost(saturatingAdd(storedTriangles(scene), 2 * cells), limits.maxTriangles,
+                "maxTriangles", where + ": the scene's triangle count with the terrain");
   desc.size = readFloat(e, "size", desc.size, where) * scale;
   desc.height = readFloat(e, "height", desc.height, where) * scale;
   desc.octaves = readCount(e, "octaves", desc.octaves, 16, where);
@@ -61,13 +66,21 @@ void addTerrain(Scene& scene, const json& e, const std::map<std::string, uint32_
   scene.instances.push_back(instance);
 }
 
-void addSpheres(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials, float scale,
-                const std::string& where) {
-  const auto count = readCounts(e, 2, 1024, where);
+void addSpheres(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials,
+                float scale, const std::string& where, const InputLimits& limits) {
+  uint64_t instances = 0;
+  const auto count = readCounts(e, 2, 1024, where, instances);
+  requireAtMost(scene.instances.size() + instances, limits.maxInstances, "maxInstances",
+                where + ": the scene's instance count with the grid");
   const float spacing = readFloat(e, "spacing", 1.0f, where) * scale;
   const float radius = readFloat(e, "radius", 0.4f, where) * scale;
   const glm::vec3 origin = readVec3(require(e, "origin", where), where + " origin") * scale;
-  const uint32_t subdivisions = readCount(e, "subdivisions", 4, 9, where);
+  const uint32_t subdivisions = readCount(e, "subdivisions", 4, UINT32_MAX, where);
+  requireAtMost(subdivisions, limits.maxSphereSubdivisions, "maxSphereSubdivisions",
+                where + " \"subdivisions\"");
+  requireAtMost(saturatingAdd(storedTriangles(scene), icosphereTriangles(subdivisions)),
+                limits.maxTriangles, "maxTriangles",
+                where + ": the scene's triangle count with the sphere");
   if (!(radius > 0.0f) || !(spacing > 0.0f)) throw Error(where + ": radius and spacing must be positive");
   Mesh sphere = makeIcosphere(subdivisions, radius, false, materialOf(e, "material", materials, where));
   sphere.name = fmt::format("generated icosphere ({} triangles)", sphere.triangleCount());
@@ -83,8 +96,11 @@ void addSpheres(Scene& scene, const json& e, const std::map<std::string, uint32_
 }
 
 void addImplicitGrid(Scene& scene, const json& e, const std::map<std::string, uint32_t>& materials,
-                     float scale, const std::string& where) {
-  const auto count = readCounts(e, 3, 256, where);
+                     float scale, const std::string& where, const InputLimits& limits) {
+  uint64_t objects = 0;
+  const auto count = readCounts(e, 3, 256, where, objects);
+  requireAtMost(scene.implicits.size() + objects, limits.maxImplicitObjects, "maxImplicitObjects",
+                where + ": the scene's implicit object count with the grid");
   const float spacing = readFloat(e, "spacing", 1.0f, where) * scale;
   const float size = readFloat(e, "size", 0.3f, where) * scale;
   const glm::vec3 origin = readVec3(require(e, "origin", where), where + " origin") * scale;
@@ -118,19 +134,20 @@ void addImplicitGrid(Scene& scene, const json& e, const std::map<std::string, ui
 
 }  // namespace
 
-void addGenerated(Scene& scene, const json& generated, const std::map<std::string, uint32_t>& materialIndex,
-                  float scale, const std::string& at) {
+void addGenerated(Scene& scene, const json& generated,
+                  const std::map<std::string, uint32_t>& materialIndex, float scale,
+                  const std::string& at, const InputLimits& limits) {
   if (!generated.is_array()) throw Error(at + ": \"generated\" must be an array");
   for (size_t i = 0; i < generated.size(); ++i) {
     const json& e = generated[i];
     const std::string where = fmt::format("{} generated[{}]", at, i);
-    const std::string kind = require(e, "kind", where).get<std::string>();
+    const std::string kind = requireString(e, "kind", where);
     if (kind == "terrain")
-      addTerrain(scene, e, materialIndex, scale, where);
+      addTerrain(scene, e, materialIndex, scale, where, limits);
     else if (kind == "spheres")
-      addSpheres(scene, e, materialIndex, scale, where);
+      addSpheres(scene, e, materialIndex, scale, where, limits);
     else if (kind == "implicitGrid")
-      addImplicitGrid(scene, e, materialIndex, scale, where);
+      addImplicitGrid(scene, e, materialIndex, scale, where, limits);
     else
       throw Error(fmt::format("{}: unknown kind '{}' (terrain, spheres, implicitGrid)", where, kind));
   }

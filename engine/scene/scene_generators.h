@@ -18,14 +18,18 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "scene/input_limits.h"
 #include "scene/scene.h"
 
 namespace penumbra::scene {
 
 // Appends what each entry of `generated` describes to `scene`; lengths are
-// multiplied by `scale`. Throws penumbra::Error naming the entry.
+// multiplied by `scale`. Throws penumbra::Error naming the entry, and the
+// limit, before allocating anything that would pass `limits` (terrain
+// resolution, sphere subdivisions, and the scene's triangles, instances and
+// implicit objects with the entry added).
 void addGenerated(Scene& scene, const nlohmann::json& generated,
                   const std::map<std::string, uint32_t>& materialIndex, float scale,
-                  const std::string& at);
+                  const std::string& at, const InputLimits& limits = {});
 
 }  // namespace penumbra::scene

@@ -15,6 +15,7 @@
 
 #include "scene/gltf_loader.h"
 #include "scene/implicit_json.h"
+#include "scene/input_limits.h"
 #include "scene/json_reading.h"
 #include "scene/material_row.h"
 #include "scene/scene_generators.h"
@@ -29,8 +30,9 @@ using nlohmann::json;
 // `scale`: the scene's unitScale (attenuationDistance is a length).
 Material parseMaterial(const json& m, const std::string& name, const std::string& where,
                        float scale) {
-  if (!m.is_object()) throw Error(where + ": must be an object");
-  const std::string model = m.value("model", "disney");
+  if (!m.is_object())
+    throw Error(fmt::format("{}: must be an object (got {})", where, jsonTypeName(m)));
+  const std::string model = readString(m, "model", "disney", where);
   Material material;
   if (model == "lambert") {
     material = Material::lambert(name, glm::vec3(0.8f));
@@ -56,7 +58,7 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
   material.specTrans = readFloat(m, "specTrans", material.specTrans, where);
   material.ior = readFloat(m, "ior", material.ior, where);
   material.subsurface = readFloat(m, "subsurface", material.subsurface, where);
-  material.thin = m.value("thin", false);
+  material.thin = readBool(m, "thin", false, where);
   if (m.contains("attenuationColor"))
     material.attenuationColor = readVec3(m.at("attenuationColor"), where + " attenuationColor");
   material.attenuationDistance =
@@ -70,21 +72,29 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
 
 MaterialRowDesc parseMaterialRow(const json& row, const Scene& scene,
                                  const std::map<std::string, uint32_t>& materialIndex, float scale,
-                                 const std::string& at) {
+                                 const std::string& at, const InputLimits& limits) {
   const std::string where = at + " materialTest";
   if (!row.is_object()) throw Error(where + ": must be an object");
   MaterialRowDesc desc;
-  const std::string material = require(row, "material", where).get<std::string>();
+  const std::string material = requireString(row, "material", where);
   auto it = materialIndex.find(material);
   if (it == materialIndex.end())
     throw Error(fmt::format("{}: unknown material '{}'", where, material));
   desc.base = scene.materials[it->second];
-  desc.vary = row.value("vary", desc.vary);
-  desc.count = row.value("count", desc.count);
+  desc.vary = readString(row, "vary", desc.vary, where);
+  desc.count = uint32_t(readInteger(row, "count", desc.count, 1, 64, where));
   desc.radius = readFloat(row, "radius", desc.radius / scale, where) * scale;
   desc.first = readVec3(require(row, "first", where), where + " first") * scale;
   desc.last = readVec3(require(row, "last", where), where + " last") * scale;
-  desc.subdivisions = row.value("subdivisions", desc.subdivisions);
+  desc.subdivisions =
+      uint32_t(readInteger(row, "subdivisions", desc.subdivisions, 0, UINT32_MAX, where));
+  // Each sphere is its own mesh of 20 * 4^subdivisions triangles.
+  requireAtMost(desc.subdivisions, limits.maxSphereSubdivisions, "maxSphereSubdivisions",
+                where + " \"subdivisions\"");
+  requireAtMost(saturatingAdd(storedTriangles(scene),
+                              saturatingMul(desc.count, icosphereTriangles(desc.subdivisions))),
+                limits.maxTriangles, "maxTriangles",
+                where + ": the scene's triangle count with the row");
   return desc;
 }
 
@@ -97,6 +107,8 @@ glm::dmat4 readTransform(const json& g, const std::string& where) {
     for (int i = 0; i < 16; ++i) {
       if (!m[size_t(i)].is_number()) throw Error(where + ": \"transform\" holds a non-number");
       glm::value_ptr(t)[i] = m[size_t(i)].get<double>();
+      if (!std::isfinite(glm::value_ptr(t)[i]))
+        throw Error(where + ": \"transform\" holds a non-finite number");
     }
     return t;
   }
@@ -156,23 +168,24 @@ void merge(Scene& scene, const Scene& part, const glm::dmat4& t) {
 
 // The "gltf" list; returns the view the first file suggests.
 std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::string& at,
-                                    const std::string& baseDirectory, const FileAccess& access) {
+                                    const std::string& baseDirectory, const FileAccess& access,
+                                    const InputLimits& limits) {
   if (!list.is_array()) throw Error(at + ": \"gltf\" must be an array");
   std::optional<Camera> view;
   for (size_t i = 0; i < list.size(); ++i) {
     const json& g = list[i];
     const std::string where = fmt::format("{} gltf[{}]", at, i);
-    const json& file = require(g, "file", where);
-    if (!file.is_string()) throw Error(where + ": \"file\" must be a string");
-    std::filesystem::path path(file.get<std::string>());
+    std::filesystem::path path(requireString(g, "file", where));
     if (path.is_relative() && !baseDirectory.empty())
       path = std::filesystem::path(baseDirectory) / path;
     const glm::dmat4 t = readTransform(g, where);
-    Scene part = loadGltf(path.string(), access);
-    if (g.contains("camera")) {
-      if (!g.at("camera").is_string()) throw Error(where + ": \"camera\" must be a string");
-      selectCamera(part, g.at("camera").get<std::string>());
-    }
+    Scene part = loadGltf(path.string(), access, limits);
+    if (g.contains("camera")) selectCamera(part, requireString(g, "camera", where));
+    // Each file is bounded on its own; together they must fit too.
+    requireAtMost(storedTriangles(scene) + storedTriangles(part), limits.maxTriangles,
+                  "maxTriangles", where + ": the scene's triangle count with the file");
+    requireAtMost(scene.instances.size() + part.instances.size(), limits.maxInstances,
+                  "maxInstances", where + ": the scene's instance count with the file");
     if (!view) view = transformCamera(part.camera, t);
     merge(scene, part, t);
   }
@@ -188,7 +201,7 @@ Environment parseEnvironment(const json& e, const std::string& where,
   if (e.contains("file") == e.contains("color"))
     throw Error(where + ": give exactly one of \"file\" (an .exr or .hdr map) and \"color\"");
   if (e.contains("file")) {
-    const std::filesystem::path file = e.at("file").get<std::string>();
+    const std::filesystem::path file = requireString(e, "file", where);
     env = loadEnvironmentMap((file.is_absolute() || baseDirectory.empty()
                                   ? file
                                   : std::filesystem::path(baseDirectory) / file)
@@ -199,9 +212,9 @@ Environment parseEnvironment(const json& e, const std::string& where,
       throw Error(where + " color: must be >= 0");
     env = constantEnvironment(color);
   }
-  env.rotationDegrees = e.value("rotation", 0.0f);
-  env.intensity = e.value("intensity", 1.0f);
-  env.visibleBackground = e.value("background", true);
+  env.rotationDegrees = readFloat(e, "rotation", 0.0f, where);
+  env.intensity = readFloat(e, "intensity", 1.0f, where);
+  env.visibleBackground = readBool(e, "background", true, where);
   try {
     validateEnvironment(env);
   } catch (const Error& error) {
@@ -212,56 +225,63 @@ Environment parseEnvironment(const json& e, const std::string& where,
 
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::string& source,
-                 const std::string& baseDirectory, const FileAccess& access) {
+Scene parseScene(std::string_view text, const std::string& source, const std::string& baseDirectory,
+                 const FileAccess& access, const InputLimits& limits) {
+  const std::string at = "scene '" + source + "'";
+  // Bounded before parsing: the tree takes many times the text, and
+  // copying or destroying it recurses per level.
+  requireAtMost(text.size(), limits.maxJsonBytes, "maxJsonBytes", at + " JSON text size in bytes");
+  requireJsonDepth(text, limits, at);
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     throw Error(fmt::format("scene '{}': invalid JSON at byte {}: {}", source, e.byte, e.what()));
+  } catch (const json::exception& e) {
+    // A number too large for a double (1e400) is an out_of_range error.
+    throw Error(fmt::format("scene '{}': invalid JSON: {}", source, e.what()));
   }
-  if (doc.value("format", "") != "penumbra-scene")
+  if (!doc.is_object() || !doc.contains("format") || doc.at("format") != "penumbra-scene")
     throw Error(fmt::format(
         "scene '{}': not a penumbra scene (\"format\" must be \"penumbra-scene\")", source));
-  if (doc.value("version", 0) != 1)
+  if (!doc.contains("version") || doc.at("version") != 1)
     throw Error(
         fmt::format("scene '{}': unsupported version (this build reads version 1)", source));
 
   Scene scene;
-  scene.name = doc.value("name", source);
-  const float scale = doc.value("unitScale", 1.0f);
-  const std::string at = "scene '" + source + "'";
+  scene.name = readString(doc, "name", source, at);
+  const float scale = readFloat(doc, "unitScale", 1.0f, at);
+  if (!(scale > 0.0f)) throw Error(fmt::format("{}: \"unitScale\" {} must be > 0", at, scale));
 
   const bool hasGltf = doc.contains("gltf");
   if (!hasGltf || doc.contains("camera")) {
     const json& cam = require(doc, "camera", at);
+    const std::string where = at + " camera";
+    if (!cam.is_object())
+      throw Error(fmt::format("{}: must be an object (got {})", where, jsonTypeName(cam)));
     scene.camera.position =
-        readDVec3(require(cam, "position", at + " camera"), at + " camera.position") *
-        double(scale);
-    scene.camera.forward =
-        glm::normalize(readVec3(require(cam, "forward", at + " camera"), at + " camera.forward"));
-    scene.camera.up =
-        glm::normalize(readVec3(require(cam, "up", at + " camera"), at + " camera.up"));
-    scene.camera.verticalFovDegrees =
-        require(cam, "verticalFovDegrees", at + " camera").get<float>();
-    scene.camera.aspectRatio = cam.value("aspectRatio", 0.0f);
-    scene.camera.apertureRadius = cam.value("apertureRadius", 0.0f) * scale;
-    scene.camera.focusDistance = cam.value("focusDistance", 1.0f / scale) * scale;
+        readDVec3(require(cam, "position", where), where + ".position") * double(scale);
+    scene.camera.forward = readDirection(require(cam, "forward", where), where + ".forward");
+    scene.camera.up = readDirection(require(cam, "up", where), where + ".up");
+    scene.camera.verticalFovDegrees = requireFloat(cam, "verticalFovDegrees", where);
+    if (!(scene.camera.verticalFovDegrees > 0.0f && scene.camera.verticalFovDegrees < 180.0f))
+      throw Error(fmt::format("{}: \"verticalFovDegrees\" {} must lie in (0, 180)", where,
+                              scene.camera.verticalFovDegrees));
+    scene.camera.aspectRatio = readFloat(cam, "aspectRatio", 0.0f, where);
+    scene.camera.apertureRadius = readFloat(cam, "apertureRadius", 0.0f, where) * scale;
+    scene.camera.focusDistance = readFloat(cam, "focusDistance", 1.0f / scale, where) * scale;
     // An f-number instead of a radius: the radius is focal length / (2 N),
     // with the focal length of a 35 mm frame (24 mm tall) at this field of view.
     if (cam.contains("fNumber")) {
       if (cam.contains("apertureRadius"))
         throw Error(at + " camera: give \"apertureRadius\" or \"fNumber\", not both");
-      const float fNumber = cam.at("fNumber").get<float>();
+      const float fNumber = requireFloat(cam, "fNumber", where);
       if (!(fNumber > 0.0f) || !std::isfinite(fNumber))
         throw Error(fmt::format("{} camera: fNumber {} must be finite and > 0", at, fNumber));
       scene.camera.apertureRadius =
           apertureRadiusForFNumber(fNumber, scene.camera.verticalFovDegrees);
     }
-    const int blades = cam.value("apertureBlades", 0);
-    if (blades < 0)
-      throw Error(fmt::format("{} camera: apertureBlades {} is negative", at, blades));
-    scene.camera.apertureBlades = uint32_t(blades);
+    scene.camera.apertureBlades = uint32_t(readInteger(cam, "apertureBlades", 0, 0, 32, where));
     try {
       validateCamera(scene.camera);
     } catch (const Error& e) {
@@ -282,9 +302,12 @@ Scene parseScene(std::string_view text, const std::string& source,
   if (doc.contains("lights")) {
     const json& lights = doc.at("lights");
     if (!lights.is_array()) throw Error(at + ": \"lights\" must be an array");
-    for (const auto& l : lights) {
-      const std::string where = at + " light";
-      const std::string type = require(l, "type", where).get<std::string>();
+    for (size_t i = 0; i < lights.size(); ++i) {
+      const json& l = lights[i];
+      const std::string where = fmt::format("{} light[{}]", at, i);
+      if (!l.is_object())
+        throw Error(fmt::format("{}: must be an object (got {})", where, jsonTypeName(l)));
+      const std::string type = requireString(l, "type", where);
       PointLight light;
       if (type == "point") {
         light.type = LightType::Point;
@@ -309,8 +332,8 @@ Scene parseScene(std::string_view text, const std::string& source,
         light.direction = glm::normalize(direction);
       }
       if (light.type == LightType::Spot) {
-        light.outerConeDegrees = require(l, "outerConeDegrees", where).get<float>();
-        light.innerConeDegrees = l.value("innerConeDegrees", light.outerConeDegrees);
+        light.outerConeDegrees = requireFloat(l, "outerConeDegrees", where);
+        light.innerConeDegrees = readFloat(l, "innerConeDegrees", light.outerConeDegrees, where);
         if (!(light.outerConeDegrees > 0.0f && light.outerConeDegrees < 180.0f))
           throw Error(where + " outerConeDegrees: must be in (0, 180)");
         if (!(light.innerConeDegrees >= 0.0f && light.innerConeDegrees <= light.outerConeDegrees))
@@ -318,13 +341,14 @@ Scene parseScene(std::string_view text, const std::string& source,
                                   where, light.innerConeDegrees, light.outerConeDegrees));
       }
       if (light.type == LightType::Directional && l.contains("angularRadiusDegrees")) {
-        light.angularRadiusDegrees = l.at("angularRadiusDegrees").get<float>();
+        light.angularRadiusDegrees = requireFloat(l, "angularRadiusDegrees", where);
         if (!(light.angularRadiusDegrees >= 0.0f && light.angularRadiusDegrees < 90.0f))
           throw Error(where + " angularRadiusDegrees: must be in [0, 90)");
       }
       if (light.type != LightType::Directional && l.contains("range")) {
-        light.range = l.at("range").get<float>() * scale;
-        if (!(light.range > 0.0f)) throw Error(where + " range: must be > 0");
+        light.range = requireFloat(l, "range", where) * scale;
+        if (!(light.range > 0.0f) || !std::isfinite(light.range))
+          throw Error(where + " range: must be finite and > 0");
       }
       scene.pointLights.push_back(light);
     }
@@ -333,13 +357,20 @@ Scene parseScene(std::string_view text, const std::string& source,
   if (doc.contains("environment"))
     scene.environment = parseEnvironment(doc.at("environment"), at + " environment", baseDirectory);
 
-  const json meshes = doc.value("meshes", json::array());
+  // By reference: a copy of the array would recurse through all of it.
+  static const json kEmptyArray = json::array();
+  const json& meshes = doc.contains("meshes") ? doc.at("meshes") : kEmptyArray;
   if (!meshes.is_array()) throw Error(at + ": \"meshes\" must be an array");
-  for (const auto& m : meshes) {
+  uint64_t triangles = storedTriangles(scene);
+  for (size_t n = 0; n < meshes.size(); ++n) {
+    const json& m = meshes[n];
+    const std::string numbered = fmt::format("{} meshes[{}]", at, n);
+    if (!m.is_object())
+      throw Error(fmt::format("{}: must be an object (got {})", numbered, jsonTypeName(m)));
     Mesh mesh;
-    mesh.name = m.value("name", fmt::format("mesh{}", scene.meshes.size()));
+    mesh.name = readString(m, "name", fmt::format("mesh{}", scene.meshes.size()), numbered);
     const std::string where = at + " mesh '" + mesh.name + "'";
-    const std::string materialName = require(m, "material", where).get<std::string>();
+    const std::string materialName = requireString(m, "material", where);
     auto it = materialIndex.find(materialName);
     if (it == materialIndex.end())
       throw Error(fmt::format("{}: unknown material '{}'", where, materialName));
@@ -347,34 +378,47 @@ Scene parseScene(std::string_view text, const std::string& source,
     const json& quads = require(m, "quads", where);
     if (!quads.is_array() || quads.empty())
       throw Error(where + ": \"quads\" must be a non-empty array");
-    for (const auto& quad : quads) {
+    triangles += 2 * uint64_t(quads.size());
+    requireAtMost(triangles, limits.maxTriangles, "maxTriangles",
+                  where + ": the scene's triangle count");
+    for (size_t q = 0; q < quads.size(); ++q) {
+      const json& quad = quads[q];
       if (!quad.is_array() || quad.size() != 4)
-        throw Error(where + ": each quad needs exactly 4 vertices");
+        throw Error(fmt::format("{}: quad {} needs exactly 4 vertices", where, q));
       const uint32_t base = uint32_t(mesh.positions.size());
-      for (int i = 0; i < 4; ++i)
-        mesh.positions.push_back(readVec3(quad[i], where + " quad vertex") * scale);
+      for (size_t i = 0; i < 4; ++i)
+        mesh.positions.push_back(
+            readVec3(quad[i], fmt::format("{} quad {} vertex {}", where, q, i)) * scale);
       for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
     }
     scene.instances.push_back({uint32_t(scene.meshes.size()), glm::dmat4(1.0)});
     scene.meshes.push_back(std::move(mesh));
   }
-  if (doc.contains("implicits"))
-    scene.implicits = parseImplicits(doc.at("implicits"), materialIndex, scale, at);
-  if (doc.contains("generated")) addGenerated(scene, doc.at("generated"), materialIndex, scale, at);
+  if (doc.contains("implicits")) {
+    const json& implicits = doc.at("implicits");
+    if (implicits.is_array())
+      requireAtMost(implicits.size(), limits.maxImplicitObjects, "maxImplicitObjects",
+                    at + " implicit object count");
+    scene.implicits = parseImplicits(implicits, materialIndex, scale, at);
+  }
+  if (doc.contains("generated"))
+    addGenerated(scene, doc.at("generated"), materialIndex, scale, at, limits);
   if (doc.contains("materialTest"))
-    addMaterialRow(scene,
-                   parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at));
+    addMaterialRow(
+        scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at, limits));
   if (hasGltf) {
-    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory, access);
+    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory, access, limits);
     if (!doc.contains("camera") && view) scene.camera = *view;
   }
   validate(scene);
   return scene;
 }
 
-Scene loadScene(const std::string& nameOrPath, const FileAccess& access) {
-  if (auto builtIn = embedded::find(nameOrPath + ".json")) return parseScene(*builtIn, nameOrPath);
-  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access);
+Scene loadScene(const std::string& nameOrPath, const FileAccess& access,
+                const InputLimits& limits) {
+  if (auto builtIn = embedded::find(nameOrPath + ".json"))
+    return parseScene(*builtIn, nameOrPath, "", access, limits);
+  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access, limits);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) {
     std::string names;
@@ -384,13 +428,18 @@ Scene loadScene(const std::string& nameOrPath, const FileAccess& access) {
                     "(built-in: {})",
                     nameOrPath, names));
   }
+  // Refused before reading: maxJsonBytes bounds the text as well as the tree.
+  const uintmax_t size = std::filesystem::file_size(nameOrPath, ec);
+  if (!ec)
+    requireAtMost(size, limits.maxJsonBytes, "maxJsonBytes",
+                  fmt::format("scene '{}' JSON text size in bytes", nameOrPath));
   std::ifstream file(nameOrPath, std::ios::binary);
   std::stringstream text;
   text << file.rdbuf();
   if (!file.good() && !file.eof())
     throw Error(fmt::format("scene '{}': cannot read the file", nameOrPath));
   return parseScene(text.str(), nameOrPath,
-                    std::filesystem::path(nameOrPath).parent_path().string(), access);
+                    std::filesystem::path(nameOrPath).parent_path().string(), access, limits);
 }
 
 std::vector<std::string> builtInSceneNames() {

@@ -69,6 +69,7 @@
 #include <vector>
 
 #include "scene/gltf_loader.h"
+#include "scene/input_limits.h"
 #include "scene/scene.h"
 
 namespace penumbra::scene {
@@ -76,10 +77,14 @@ namespace penumbra::scene {
 // `nameOrPath`: a built-in scene name ("cornell-box"), a path to a .json
 // scene file, or a glTF file (.gltf, .glb) loaded as a scene on its own.
 // `access`: what the glTF files it loads may read besides themselves.
-Scene loadScene(const std::string& nameOrPath, const FileAccess& access = {});
+// `limits`: what the file may make the loader allocate (input_limits.h);
+// the glTF files it names are held to them too.
+Scene loadScene(const std::string& nameOrPath, const FileAccess& access = {},
+                const InputLimits& limits = {});
 // `baseDirectory`: where the "gltf" files' relative paths start.
 Scene parseScene(std::string_view json, const std::string& source,
-                 const std::string& baseDirectory = "", const FileAccess& access = {});
+                 const std::string& baseDirectory = "", const FileAccess& access = {},
+                 const InputLimits& limits = {});
 std::vector<std::string> builtInSceneNames();
 
 }  // namespace penumbra::scene

@@ -249,3 +249,79 @@ TEST_CASE("render job: bad material overrides name the file and the field", "[re
   REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"thin\": false,", ""), "k.json"),
                       "k.json: \"materials[0].thin\" is missing");
 }
+
+// Every field's type and range is checked before it is converted
+// (docs/security.md): 1e300 as an unsigned integer was undefined behaviour
+// that rendered with 0, 1e39 as a float infinity.
+TEST_CASE("render job: out-of-range numbers and wrong types name the file and the field",
+          "[render]") {
+  auto record = [](const std::string& fields) {
+    return R"({"format":"penumbra-render","version":1,)" + fields + "}";
+  };
+  using Catch::Matchers::ContainsSubstring;
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("seed":1e300)"), "s.json"),
+                      "s.json: \"seed\" 1e+300 is not a whole number in 0..4294967295");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("maxDepth":1e300)"), "s.json"),
+                      "s.json: \"maxDepth\" 1e+300 is not a whole number in 0..1024");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("maxDepth":-1)"), "s.json"),
+                      "s.json: \"maxDepth\" -1 is not a whole number in 0..1024");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("spp":2.5)"), "s.json"),
+                      "s.json: \"spp\" 2.5 is not a whole number in 1..1048576");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("width":"wide")"), "s.json"),
+                      "s.json: \"width\" is not a whole number (got a string)");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("radianceClamp":1e39)"), "s.json"),
+                      "s.json: \"radianceClamp\" must be a finite number");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("radianceClamp":-1)"), "s.json"),
+                      ContainsSubstring("s.json: \"radianceClamp\" -1 is outside 0.."));
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("scene":["a"])"), "s.json"),
+                      "s.json: \"scene\" must be a string (got an array)");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("allEffects":"yes")"), "s.json"),
+                      "s.json: \"allEffects\" must be true or false (got a string)");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("exposure":1e400)"), "s.json"),
+                      ContainsSubstring("s.json: not valid JSON") &&
+                          ContainsSubstring("number overflow parsing '1e400'"));
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(record(R"("camera":{"position":[0,0,0],"forward":[0,0,0],
+                                                    "up":[0,1,0]})"),
+                                "s.json"),
+      "s.json: \"camera.forward\" must be a non-zero direction of finite length");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(record(R"("camera":{"position":[0,0,0],"forward":[0,0,1],
+                                                    "up":[0,0,2]})"),
+                                "s.json"),
+      "s.json: \"camera.up\" must be non-zero and not parallel to camera.forward");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(record(R"("camera":{"position":[1e39,0,0],"forward":[0,0,1],
+                                                    "up":[0,1,0]})"),
+                                "s.json"),
+      "s.json: \"camera.position\" must be a finite number");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(record(R"("camera":{"position":[0,0,0],"forward":[0,0,1],
+                                                    "up":[0,1,0],"apertureBlades":1e300})"),
+                                "s.json"),
+      "s.json: \"camera.apertureBlades\" 1e+300 is not a whole number in 0..32");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson("[1]", "s.json"),
+                      ContainsSubstring("s.json: not a penumbra render settings file"));
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(R"({"format":7,"version":1})", "s.json"),
+                      ContainsSubstring("s.json: not a penumbra render settings file"));
+
+  // The ends of each range still load.
+  const auto job = render::renderJobFromJson(
+      record(R"("seed":4294967295,"maxDepth":1024,"spp":1048576,"sppPerFrame":16.0)"), "s.json");
+  CHECK(job.settings.seed == 4294967295u);
+  CHECK(job.settings.maxDepth == 1024u);
+  CHECK(job.spp == 1048576u);
+  CHECK(job.sppPerFrame == 16u);
+}
+
+TEST_CASE("render job: records nested past the JSON depth limit are refused unparsed", "[render]") {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(
+                          R"({"format":"penumbra-render","version":1,"x":)" + deep + "}", "s.json"),
+                      Catch::Matchers::ContainsSubstring("s.json: JSON nests") &&
+                          Catch::Matchers::ContainsSubstring("InputLimits::maxJsonDepth"));
+  // 255 levels below the document's own still load.
+  const std::string ok = std::string(255, '[') + std::string(255, ']');
+  REQUIRE_NOTHROW(render::renderJobFromJson(
+      R"({"format":"penumbra-render","version":1,"x":)" + ok + "}", "s.json"));
+}

@@ -13,7 +13,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "gltf_test_files.h"
 #include "scene/gltf_loader.h"
+#include "scene/input_limits.h"
 #include "test_data.h"
 #include "util/error.h"
 
@@ -457,4 +459,110 @@ TEST_CASE("glTF URIs stay inside the file's folder unless the user allows others
   REQUIRE_THROWS_WITH(scene::loadGltf(folder), ContainsSubstring("'" + (root / "scene").string() +
                                                                  "/data' is not a readable file"));
   fs::remove_all(root);
+}
+
+// Bounded inputs (scene/input_limits.h, docs/security.md): a file past a
+// limit is one error line naming the file, the part and the limit, found
+// before the allocation or the recursion it would have caused.
+namespace {
+
+// importGltf's error for `path`, checked to be one line naming the file.
+std::string refusal(const std::string& path, const scene::InputLimits& limits = {}) {
+  try {
+    scene::importGltf(path, {}, limits);
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    CHECK(message.find(std::filesystem::path(path).filename().string()) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    return message;
+  }
+  FAIL("no error for " << path);
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("glTF JSON nested past the depth limit is refused before tinygltf parses it", "[gltf]") {
+  test::TempFolder folder("gltf-depth");
+  // 20,000 levels in "extras": tinygltf converted them recursively and
+  // overflowed the stack. In a .gltf and in a .glb's JSON chunk.
+  const std::string deep = R"({"asset":{"version":"2.0"},"extras":)" + std::string(20000, '[') +
+                           std::string(20000, ']') + "}";
+  for (const std::string& path :
+       {folder.write("deep.gltf", deep), folder.write("deep.glb", test::glb(deep))}) {
+    INFO(path);
+    CHECK_THAT(refusal(path), ContainsSubstring("JSON nests arrays and objects deeper than the "
+                                                "limit 256") &&
+                                  ContainsSubstring("InputLimits::maxJsonDepth"));
+  }
+  // transforms.gltf nests 6 levels: a limit of 6 loads it, 5 does not.
+  scene::InputLimits limits;
+  limits.maxJsonDepth = 6;
+  REQUIRE(scene::importGltf(gltf("transforms.gltf"), {}, limits).scene.instances.size() == 5u);
+  limits.maxJsonDepth = 5;
+  CHECK_THAT(refusal(gltf("transforms.gltf"), limits), ContainsSubstring("the limit 5"));
+}
+
+TEST_CASE("glTF accessors without a buffer view are bounded before they are zero-filled",
+          "[gltf]") {
+  test::TempFolder folder("gltf-zeros");
+  // 2^24 and 2^28 zero positions from a file of about 230 bytes.
+  for (uint64_t count : {uint64_t(1) << 24, uint64_t(1) << 28}) {
+    const std::string path = folder.write(
+        "zeros.gltf",
+        fmt::format(R"({{"asset":{{"version":"2.0"}},"accessors":[{{"componentType":5126,
+          "count":{},"type":"VEC3"}}],"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}}}}]}}],
+          "nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}]}})",
+                    count));
+    INFO(count);
+    CHECK_THAT(refusal(path),
+               ContainsSubstring("mesh 0 primitive 0 POSITION (accessor 0) element count "
+                                 "without a buffer view " +
+                                 std::to_string(count) + " exceeds the limit 1048576") &&
+                   ContainsSubstring("InputLimits::maxZeroFilledElements"));
+  }
+  // sparse.gltf's TEXCOORD_0 is 4 zeros with one sparse value: loads at a
+  // limit of 4, not at 3.
+  scene::InputLimits limits;
+  limits.maxZeroFilledElements = 4;
+  REQUIRE(scene::importGltf(gltf("sparse.gltf"), {}, limits).scene.meshes.size() == 1u);
+  limits.maxZeroFilledElements = 3;
+  CHECK_THAT(refusal(gltf("sparse.gltf"), limits),
+             ContainsSubstring("TEXCOORD_0 (accessor 1) element count without a buffer view 4 "
+                               "exceeds the limit 3"));
+}
+
+TEST_CASE("glTF accessor counts, decoded bytes, triangles, instances and node visits are bounded",
+          "[gltf]") {
+  // Each limit set to exactly what a small file needs (it loads), then one less.
+  struct Case {
+    const char* file;
+    uint64_t scene::InputLimits::*limit;
+    uint64_t needed;
+    const char* message;
+  };
+  const Case cases[] = {
+      // sparse.gltf: its largest accessor is the 6 indices; it decodes 4 x 3
+      // + 4 x 2 floats and 6 indices (104 bytes) into 2 triangles.
+      {"sparse.gltf", &scene::InputLimits::maxAccessorElements, 6,
+       "indices (accessor 2) element count 6 exceeds the limit 5 "
+       "(InputLimits::maxAccessorElements"},
+      {"sparse.gltf", &scene::InputLimits::maxDecodedBytes, 104,
+       "the file's decoded accessor bytes 104 exceeds the limit 103 (InputLimits::maxDecodedBytes"},
+      {"sparse.gltf", &scene::InputLimits::maxTriangles, 2,
+       "the file's triangle count 2 exceeds the limit 1 (InputLimits::maxTriangles"},
+      // transforms.gltf: 5 nodes, 5 instances.
+      {"transforms.gltf", &scene::InputLimits::maxInstances, 5,
+       "instance count 5 exceeds the limit 4 (InputLimits::maxInstances"},
+      {"transforms.gltf", &scene::InputLimits::maxNodeVisits, 5,
+       "node visits 5 exceeds the limit 4 (InputLimits::maxNodeVisits"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.file << ": " << c.message);
+    scene::InputLimits limits;
+    limits.*c.limit = c.needed;
+    CHECK_NOTHROW(scene::importGltf(gltf(c.file), {}, limits));
+    limits.*c.limit = c.needed - 1;
+    CHECK_THAT(refusal(gltf(c.file), limits), ContainsSubstring(c.message));
+  }
 }

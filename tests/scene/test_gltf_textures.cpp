@@ -9,9 +9,15 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
+#include "gltf_test_files.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
+#include "scene/input_limits.h"
 #include "test_data.h"
 #include "util/error.h"
 
@@ -427,4 +433,152 @@ TEST_CASE("scene validation checks textures and texture references", "[gltf]") {
       ContainsSubstring("material 'painted' uses texture reference 1000"));
   REQUIRE_THROWS_WITH(scene::validate(broken([](scene::Scene& s) { s.meshes[0].uv1.pop_back(); })),
                       ContainsSubstring("has 3 second texture coordinates for 4 vertices"));
+}
+
+// Image sizes come from the headers and are checked before decoding
+// (scene/input_limits.h, docs/security.md): stb_image allocates what a header
+// claims, so a few hundred bytes could ask for gigabytes.
+namespace {
+
+std::string refusal(const std::string& path, const scene::InputLimits& limits = {}) {
+  try {
+    scene::importGltf(path, {}, limits);
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    CHECK(message.find(std::filesystem::path(path).filename().string()) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    return message;
+  }
+  FAIL("no error for " << path);
+  return "";
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+constexpr const char* kTexturedMaterial =
+    R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+
+}  // namespace
+
+TEST_CASE("glTF images whose headers claim too many pixels are refused undecoded", "[gltf]") {
+  test::TempFolder folder("gltf-images");
+  folder.write("tri.bin", test::trianglePositions());
+  // A 26-byte PSD header claiming 16384 x 16384 (1 GiB of RGBA8), a 190-byte
+  // TGA claiming 16000 x 16000 (stb_image took seconds and gigabytes to fill
+  // it from nothing) and one 20000 pixels wide.
+  folder.write("big.psd", test::psdHeader(16384, 16384));
+  folder.write("big.tga", test::tgaHeader(16000, 16000));
+  folder.write("wide.tga", test::tgaHeader(20000, 1));
+  struct Case {
+    const char* image;
+    const char* reason;
+  };
+  const Case cases[] = {
+      {"big.psd",
+       "image 0 (file 'big.psd') cannot be decoded (its header says 16384 x 16384 pixels, more "
+       "than the limit 67108864 pixels (InputLimits::maxImagePixels"},
+      {"big.tga",
+       "image 0 (file 'big.tga') cannot be decoded (its header says 16000 x 16000 pixels, more "
+       "than the limit 67108864 pixels (InputLimits::maxImagePixels"},
+      {"wide.tga",
+       "image 0 (file 'wide.tga') cannot be decoded (its header says 20000 x 1 pixels, more than "
+       "the limit 16384 per side (InputLimits::maxImageSide"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.image);
+    const std::string path =
+        folder.write("image.gltf", test::triangleGltf("tri.bin", kTexturedMaterial,
+                                                      std::string(R"({"uri":")") + c.image + "\"}",
+                                                      R"({"source":0})"));
+    CHECK_THAT(refusal(path), ContainsSubstring(c.reason));
+  }
+  // The same PSD in a .glb's binary chunk, decoded by the importer itself.
+  const std::string psd = test::psdHeader(16384, 16384);
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":)" + std::to_string(36 + psd.size()) +
+      R"(}],
+      "bufferViews":[{"buffer":0,"byteLength":36},
+                     {"buffer":0,"byteOffset":36,"byteLength":)" +
+      std::to_string(psd.size()) + R"(}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],
+      "materials":[)" +
+      kTexturedMaterial +
+      R"(],"images":[{"bufferView":1,"mimeType":"image/png"}],"textures":[{"source":0}],
+      "nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})";
+  const std::string glb =
+      folder.write("image.glb", test::glb(json, test::trianglePositions() + psd));
+  CHECK_THAT(refusal(glb), ContainsSubstring("image 0 (buffer view 1) cannot be decoded (its "
+                                             "header says 16384 x 16384 pixels") &&
+                               ContainsSubstring("InputLimits::maxImagePixels"));
+}
+
+TEST_CASE("glTF image limits: an image at the limit loads, one pixel more does not", "[gltf]") {
+  // textured_quad.gltf's one image is 4 x 4.
+  struct Case {
+    uint64_t scene::InputLimits::*limit;
+    uint64_t needed;
+    const char* message;
+  };
+  const Case cases[] = {
+      {&scene::InputLimits::maxImageSide, 4, "the limit 3 per side (InputLimits::maxImageSide"},
+      {&scene::InputLimits::maxImagePixels, 16, "the limit 15 pixels (InputLimits::maxImagePixels"},
+      {&scene::InputLimits::maxTexturePixels, 16,
+       "bring the file's images to 16 pixels, more than the limit 15 "
+       "(InputLimits::maxTexturePixels"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.message);
+    scene::InputLimits limits;
+    limits.*c.limit = c.needed;
+    const auto s = scene::importGltf(gltf("textured_quad.gltf"), {}, limits).scene;
+    REQUIRE(s.textures.size() == 1u);
+    CHECK(s.textures[0].width == 4u);
+    limits.*c.limit = c.needed - 1;
+    CHECK_THAT(refusal(gltf("textured_quad.gltf"), limits),
+               ContainsSubstring(
+                   "image 0 'checker' (file 'textured_quad_checker.png') cannot be decoded") &&
+                   ContainsSubstring(c.message));
+  }
+}
+
+TEST_CASE("KHR_texture_transform numbers out of range are refused naming the texture info",
+          "[gltf]") {
+  test::TempFolder folder("gltf-transform");
+  folder.write("tri.bin", test::trianglePositions());
+  folder.write("checker.png", fileBytes(gltf("textured_quad_checker.png")));
+  auto withTransform = [&](const std::string& transform) {
+    return folder.write(
+        "transform.gltf",
+        test::triangleGltf("tri.bin",
+                           R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0,
+                               "extensions":{"KHR_texture_transform":)" +
+                               transform + "}}}}",
+                           R"({"uri":"checker.png"})", R"({"source":0})"));
+  };
+  // texCoord 1e30 was converted to int: undefined behaviour.
+  for (const char* texCoord : {"1e30", "-1", "1.5"}) {
+    INFO(texCoord);
+    CHECK_THAT(refusal(withTransform(std::string(R"({"texCoord":)") + texCoord + "}")),
+               ContainsSubstring("material 0 baseColorTexture: KHR_texture_transform texCoord") &&
+                   ContainsSubstring("is not a texture coordinate set index"));
+  }
+  // Past a float: an infinite texture transform.
+  CHECK_THAT(refusal(withTransform(R"({"offset":[1e39,0]})")),
+             ContainsSubstring("baseColorTexture: KHR_texture_transform offset 1e+39 does not fit "
+                               "a float"));
+  CHECK_THAT(refusal(withTransform(R"({"rotation":-1e300})")),
+             ContainsSubstring("KHR_texture_transform rotation -1e+300 does not fit a float"));
+  // In range, texCoord 1 is used, and 7 falls back to 0 with a warning as before.
+  const auto one = scene::importGltf(withTransform(R"({"texCoord":1,"scale":[2,2]})"));
+  REQUIRE(one.scene.textureRefs.size() == 1u);
+  CHECK(one.scene.textureRefs[0].texCoord == 1u);
+  const auto seven = scene::importGltf(withTransform(R"({"texCoord":7})"));
+  CHECK(seven.scene.textureRefs[0].texCoord == 0u);
+  CHECK(hasWarning(seven, "texCoord 7 is not supported"));
 }

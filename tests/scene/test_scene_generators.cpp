@@ -2,7 +2,10 @@
 // performance scene built from it.
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+#include <string>
+#include <vector>
 
+#include "scene/input_limits.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -68,4 +71,75 @@ TEST_CASE(
   const auto s = scene::loadScene("performance");
   REQUIRE(s.triangleCount() >= 5'000'000u);
   REQUIRE(s.implicits.size() >= 200u);
+}
+
+// Generator parameters are bounded before anything is allocated
+// (scene/input_limits.h, docs/security.md): the error names the entry, the
+// field and the limit.
+TEST_CASE("generated: sizes past the input limits are refused before allocating", "[scene]") {
+  auto fails = [](const std::string& generated, const std::vector<std::string>& mentions,
+                  const scene::InputLimits& limits = {}) {
+    try {
+      scene::parseScene(sceneWith(generated), "g.json", "", {}, limits);
+      FAIL("no error");
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      INFO(message);
+      CHECK(message.find('\n') == std::string::npos);
+      CHECK_THAT(message, ContainsSubstring("scene 'g.json' generated[0]"));
+      for (const auto& m : mentions) CHECK_THAT(message, ContainsSubstring(m));
+    }
+  };
+  // 6000: 36 million vertices; 46340, the old cap: 2.1 billion.
+  for (const char* r : {"6000", "46340"})
+    fails(std::string(R"([{"kind": "terrain", "material": "a", "resolution": )") + r + "}]",
+          {"\"resolution\" " + std::string(r) + " exceeds the limit 4096",
+           "InputLimits::maxTerrainResolution"});
+  fails(R"([{"kind": "terrain", "material": "a", "resolution": -1}])",
+        {"\"resolution\" -1 is not a whole number"});
+  fails(R"([{"kind": "terrain", "material": "a", "resolution": 1e300}])",
+        {"\"resolution\" 1e+300 is not a whole number"});
+  fails(R"([{"kind": "spheres", "material": "a", "count": [1, 1], "origin": [0, 0, 0],
+             "subdivisions": 10}])",
+        {"\"subdivisions\" 10 exceeds the limit 9", "InputLimits::maxSphereSubdivisions"});
+  // 16.7 million implicit objects.
+  fails(R"([{"kind": "implicitGrid", "materials": ["a"], "count": [256, 256, 256],
+             "origin": [0, 0, 0]}])",
+        {"implicit object count with the grid 16777216", "InputLimits::maxImplicitObjects"});
+  fails(R"([{"kind": 5}])", {"\"kind\" is not a string (got a number)"});
+  fails(R"([{"kind": "spheres", "material": "a", "count": [2, "3"], "origin": [0, 0, 0]}])",
+        {"\"count[1]\" is not a whole number (got a string)"});
+  fails(R"([{"kind": "terrain", "material": "a", "size": 1e39}])",
+        {"\"size\" 1e+39 does not fit a float"});
+
+  // At a limit (lowered here, so the test stays small) the entry loads; one past, it does not.
+  scene::InputLimits limits;
+  limits.maxTerrainResolution = 64;
+  limits.maxTriangles = 2 * 63 * 63;
+  const auto terrain =
+      scene::parseScene(sceneWith(R"([{"kind": "terrain", "material": "a", "resolution": 64}])"),
+                        "g.json", "", {}, limits);
+  CHECK(terrain.triangleCount() == 2u * 63u * 63u);
+  fails(R"([{"kind": "terrain", "material": "a", "resolution": 65}])",
+        {"\"resolution\" 65 exceeds the limit 64"}, limits);
+  limits.maxTriangles -= 1;
+  fails(
+      R"([{"kind": "terrain", "material": "a", "resolution": 64}])",
+      {"triangle count with the terrain 7938 exceeds the limit 7937", "InputLimits::maxTriangles"},
+      limits);
+  limits = {};
+  limits.maxInstances = 6;
+  const std::string grid =
+      R"([{"kind": "spheres", "material": "a", "count": [3, 2], "origin": [0, 0, 0], "subdivisions": 1}])";
+  CHECK(scene::parseScene(sceneWith(grid), "g.json", "", {}, limits).instances.size() == 6u);
+  limits.maxInstances = 5;
+  fails(grid, {"instance count with the grid 6 exceeds the limit 5", "InputLimits::maxInstances"},
+        limits);
+  limits = {};
+  limits.maxImplicitObjects = 8;
+  const std::string implicits =
+      R"([{"kind": "implicitGrid", "materials": ["a"], "count": [2, 2, 2], "origin": [0, 0, 0]}])";
+  CHECK(scene::parseScene(sceneWith(implicits), "g.json", "", {}, limits).implicits.size() == 8u);
+  limits.maxImplicitObjects = 7;
+  fails(implicits, {"InputLimits::maxImplicitObjects"}, limits);
 }

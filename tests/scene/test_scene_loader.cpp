@@ -1,12 +1,24 @@
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
+#include "image/image_io.h"
+#include "scene/input_limits.h"
 #include "scene/mesh_builders.h"
 #include "scene/scene_loader.h"
 #include "test_data.h"
 #include "util/error.h"
+#include "util/json_nesting.h"
 
 using namespace penumbra;
 using Catch::Approx;
@@ -208,4 +220,213 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
   REQUIRE_THROWS_WITH(
       scene::parseScene(withGlass(R"({"specTrans":1,"attenuationColor":[2,1,1]})"), "t.json"),
       ContainsSubstring("attenuationColor must lie in [0, 1]"));
+}
+
+// Bounded inputs (docs/security.md, scene/input_limits.h): every refusal is
+// one line naming the file and the field or the limit.
+namespace {
+
+std::string sceneText(const std::string& camera, const std::string& materials,
+                      const std::string& extra) {
+  return R"({"format":"penumbra-scene","version":1,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40)" +
+         camera + R"(},
+    "materials":{"white":{"albedo":[0.5,0.5,0.5])" +
+         materials + R"(}},)" + extra + R"(
+    "meshes":[{"name":"q","material":"white","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+}
+
+std::string withMeshes(const std::string& meshes) {
+  return R"({"format":"penumbra-scene","version":1,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
+    "materials":{"white":{"albedo":[0.5,0.5,0.5]}},"meshes":)" +
+         meshes + "}";
+}
+
+// `text` refused with one line that holds every part of `mentions`.
+void requireRefused(const std::string& text, const std::vector<std::string>& mentions,
+                    const scene::InputLimits& limits = {}) {
+  INFO(text.substr(0, 400));
+  try {
+    scene::parseScene(text, "t.json", "", {}, limits);
+    FAIL("no error");
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    INFO(message);
+    CHECK(message.find('\n') == std::string::npos);
+    CHECK_THAT(message, ContainsSubstring("t.json"));
+    for (const auto& m : mentions) CHECK_THAT(message, ContainsSubstring(m));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("JSON nesting is measured on the raw text, strings and escapes skipped", "[scene]") {
+  using penumbra::json_nesting::firstTooDeep;
+  CHECK_FALSE(firstTooDeep(R"({"a":[1,{"b":[]}]})", 4));
+  CHECK(firstTooDeep(R"({"a":[1,{"b":[]}]})", 3) == 13u);  // the innermost '['
+  // Brackets in strings, after an escaped quote and an escaped backslash, do not count.
+  CHECK_FALSE(firstTooDeep(R"(["[[[\"[[[", "\\", "{{{"])", 1));
+  CHECK(firstTooDeep(R"(["\\"[)", 1) == 5u);
+  // Closers never take the depth below zero, so they cannot buy depth later.
+  CHECK(firstTooDeep("]]]][[", 1) == 5u);
+}
+
+TEST_CASE("scene files nested past the JSON depth limit are refused before parsing", "[scene]") {
+  // A million levels in "meshes": the loader's copy of the tree recursed once
+  // per level and overflowed the stack.
+  const size_t deep = 1'000'000;
+  const std::string bomb = R"({"format":"penumbra-scene","version":1,"meshes":)" +
+                           std::string(deep, '[') + std::string(deep, ']') + "}";
+  requireRefused(bomb, {"JSON nests", "the limit 256", "InputLimits::maxJsonDepth"});
+  // The document is level 1: 255 more levels in an ignored key still load.
+  const std::string nested = std::string(255, '[') + std::string(255, ']');
+  REQUIRE_NOTHROW(scene::parseScene(sceneText("", "", "\"notes\":" + nested + ","), "t.json"));
+  requireRefused(sceneText("", "", "\"notes\":[" + nested + "],"), {"InputLimits::maxJsonDepth"});
+}
+
+TEST_CASE("scene files: a wrong type or an out-of-range number names the file and the field",
+          "[scene]") {
+  struct Case {
+    std::string text;
+    std::vector<std::string> mentions;
+  };
+  const Case cases[] = {
+      {"[1]", {"not a penumbra scene"}},
+      {R"({"format":"penumbra-scene","version":"1"})", {"unsupported version"}},
+      {sceneText("", R"(,"model":5)", ""),
+       {"material 'white'", "\"model\" is not a string (got a number)"}},
+      {sceneText("", R"(,"roughness":"x")", ""),
+       {"material 'white'", "\"roughness\" is not a number (got a string)"}},
+      {sceneText("", R"(,"thin":1)", ""), {"\"thin\" is not true or false"}},
+      {sceneText("", "", R"("materials":[1],)"), {"\"materials\" must be an object"}},
+      // Past a double: nlohmann's out_of_range, once an "internal error".
+      {sceneText("", R"(,"roughness":1e400)", ""), {"invalid JSON", "1e400"}},
+      // Past a float: infinity, which the renderer would have summed.
+      {sceneText("", R"(,"emission":[1e39,0,0])", ""),
+       {"material 'white' emission", "does not fit a float"}},
+      {sceneText("", R"(,"metallic":-1e39)", ""), {"\"metallic\"", "does not fit a float"}},
+      // A zero forward normalised to NaN, and NaN passed every comparison.
+      {R"({"format":"penumbra-scene","version":1,
+          "camera":{"position":[0,0,0],"forward":[0,0,0],"up":[0,1,0],"verticalFovDegrees":40},
+          "materials":{},"meshes":[]})",
+       {"camera.forward", "non-zero direction"}},
+      {sceneText(R"(,"apertureBlades":1e300)", "", ""),
+       {"camera", "\"apertureBlades\"", "not a whole number in 0..32"}},
+      {sceneText(R"(,"verticalFovDegrees":"wide")", "", ""),
+       {"camera", "\"verticalFovDegrees\" is not a number"}},
+      {sceneText("", "", R"("unitScale":"mm",)"), {"\"unitScale\" is not a number"}},
+      {sceneText("", "", R"("unitScale":0,)"), {"\"unitScale\" 0 must be > 0"}},
+      {sceneText("", "", R"("lights":[{"type":5}],)"), {"light[0]", "\"type\" is not a string"}},
+      {sceneText("", "", R"("lights":[[1]],)"), {"light[0]", "must be an object (got an array)"}},
+      {sceneText("", "",
+                 R"("lights":[{"type":"point","position":[0,1,0],"intensity":[1e39,1,1]}],)"),
+       {"light[0] intensity", "does not fit a float"}},
+      {sceneText("", "", R"("environment":{"color":[1,1,1],"rotation":"left"},)"),
+       {"environment", "\"rotation\" is not a number"}},
+      {sceneText("", "", R"("gltf":[{"file":7}],)"), {"gltf[0]", "\"file\" is not a string"}},
+      {withMeshes(
+           R"([{"name":"p","material":"white","quads":[[[0,0,0],[1,0,0],["a",1,0],[0,1,0]]]}])"),
+       {"mesh 'p' quad 0 vertex 2", "element 0 is not a number (got a string)"}},
+      {withMeshes(R"([{"name":3,"material":"white","quads":[]}])"),
+       {"meshes[0]", "\"name\" is not a string"}},
+      {withMeshes(R"({"name":"p"})"), {"\"meshes\" must be an array"}},
+  };
+  for (const auto& c : cases) requireRefused(c.text, c.mentions);
+}
+
+TEST_CASE("scene files: the material-test row's subdivisions and count are bounded", "[scene]") {
+  auto row = [](const std::string& fields) {
+    return R"({"format":"penumbra-scene","version":1,
+      "camera":{"position":[0,0,-5],"forward":[0,0,1],"up":[0,1,0],"verticalFovDegrees":40},
+      "materials":{"base":{"roughness":0.5}},
+      "materialTest":{"material":"base","first":[-1,0,0],"last":[1,0,0])" +
+           fields + "}}";
+  };
+  // -1 became 4294967295 subdivisions; 10 and 12 asked for 21 and 335 million
+  // triangles a sphere.
+  requireRefused(row(R"(,"subdivisions":-1)"),
+                 {"materialTest", "\"subdivisions\" -1 is not a whole number in 0..4294967295"});
+  for (const char* n : {"10", "12"})
+    requireRefused(row(std::string(R"(,"subdivisions":)") + n),
+                   {"materialTest \"subdivisions\" " + std::string(n), "the limit 9",
+                    "InputLimits::maxSphereSubdivisions"});
+  // 64 spheres of 5.2 million triangles: each sphere passes, the row does not.
+  requireRefused(row(R"(,"subdivisions":9,"count":64)"),
+                 {"materialTest", "triangle count", "InputLimits::maxTriangles"});
+  requireRefused(row(R"(,"count":"seven")"), {"materialTest", "\"count\" is not a whole number"});
+  requireRefused(row(R"(,"count":65)"),
+                 {"materialTest", "\"count\" 65 is not a whole number in 1..64"});
+  requireRefused(row(R"(,"vary":1)"), {"materialTest", "\"vary\" is not a string"});
+
+  // Just under the limits: the limit itself loads.
+  scene::InputLimits limits;
+  limits.maxSphereSubdivisions = 2;
+  limits.maxTriangles = 3 * 320;
+  const auto s = scene::parseScene(row(R"(,"subdivisions":2,"count":3)"), "t.json", "", {}, limits);
+  CHECK(s.triangleCount() == 3u * 320u);
+  requireRefused(row(R"(,"subdivisions":3,"count":3)"), {"InputLimits::maxSphereSubdivisions"},
+                 limits);
+  requireRefused(row(R"(,"subdivisions":2,"count":4)"), {"InputLimits::maxTriangles"}, limits);
+}
+
+TEST_CASE("scene files: quads, implicit objects and the file size are bounded", "[scene]") {
+  scene::InputLimits limits;
+  limits.maxTriangles = 2;  // the one quad
+  REQUIRE(scene::parseScene(sceneText("", "", ""), "t.json", "", {}, limits).triangleCount() == 2u);
+  limits.maxTriangles = 1;
+  requireRefused(sceneText("", "", ""),
+                 {"mesh 'q'", "triangle count 2", "InputLimits::maxTriangles"}, limits);
+  limits = {};
+  const std::string text = sceneText("", "", "");
+  limits.maxJsonBytes = text.size();
+  REQUIRE_NOTHROW(scene::parseScene(text, "t.json", "", {}, limits));
+  limits.maxJsonBytes = text.size() - 1;
+  requireRefused(text, {"JSON text size in bytes", "InputLimits::maxJsonBytes"}, limits);
+  limits = {};
+  limits.maxImplicitObjects = 1;
+  const std::string sphere = R"({"kind":"sphere","material":"white","radius":1})";
+  REQUIRE(scene::parseScene(sceneText("", "", "\"implicits\":[" + sphere + "],"), "t.json", "", {},
+                            limits)
+              .implicits.size() == 1u);
+  requireRefused(sceneText("", "", "\"implicits\":[" + sphere + "," + sphere + "],"),
+                 {"implicit object count 2", "InputLimits::maxImplicitObjects"}, limits);
+}
+
+TEST_CASE("environment maps whose header claims more than 16384x8192 are refused undecoded",
+          "[scene]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("penumbra-env-{}", ::getpid());
+  fs::create_directories(dir);
+  // A Radiance header of 16384 x 8193 texels and no texels: stb_image
+  // allocated 1.6 GB of floats to fill from nothing.
+  std::ofstream(dir / "huge.hdr", std::ios::binary)
+      << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8193 +X 16384\n"
+      << std::string(64, '\x01');
+  // An EXR as the renderer writes them, its data window then widened to
+  // 20000 x 2 in the header.
+  image::saveExr((dir / "huge.exr").string(), image::Image(3, 2));
+  std::string exr;
+  {
+    std::ifstream in(dir / "huge.exr", std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    exr = bytes.str();
+  }
+  const std::string attribute("dataWindow\0box2i\0", 17);
+  const size_t at = exr.find(attribute);
+  REQUIRE(at != std::string::npos);
+  const int32_t maxX = 19999;  // the box's third int: max x (little-endian, as the targets)
+  std::memcpy(&exr[at + attribute.size() + 4 + 8], &maxX, 4);
+  std::ofstream(dir / "huge.exr", std::ios::binary) << exr;
+  for (const char* file : {"huge.hdr", "huge.exr"}) {
+    INFO(file);
+    REQUIRE_THROWS_WITH(
+        scene::parseScene(
+            sceneText("", "", std::string(R"("environment":{"file":")") + file + "\"},"), "t.json",
+            dir.string()),
+        ContainsSubstring(file) && ContainsSubstring("its header declares") &&
+            ContainsSubstring("more than 16384x8192"));
+  }
+  fs::remove_all(dir);
 }
