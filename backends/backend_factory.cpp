@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "rhi/fault_injection.h"
 #include "rhi/validation.h"
 #include "util/error.h"
 #include "vulkan/vulkan_backend.h"
@@ -34,6 +35,7 @@ std::vector<std::string> availableBackends() {
 
 rhi::DeviceHandle createDevice(const std::string& backend, const rhi::DeviceCreateInfo& info) {
   requireKnown(backend);
+  rhi::faults::readEnvironment();  // a malformed PENUMBRA_INJECT_FAULT fails here
 #ifdef PENUMBRA_HAVE_D3D12
   if (backend == "d3d12") return rhi::validation::wrapDevice(d3d12::createDevice(info));
 #endif

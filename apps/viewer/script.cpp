@@ -31,6 +31,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
                                   {"environment", Kind::Environment, 0, 2},
                                   {"screenshot", Kind::Screenshot, 0, 1},
                                   {"capture", Kind::Capture, 0, 1},
+                                  {"inject-fault", Kind::InjectFault, 0, 2},
                                   {"quit", Kind::Quit, 0, 0}};
   std::vector<ScriptCommand> commands;
   std::istringstream lines(text);
@@ -73,6 +74,19 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
          shape->kind == Kind::WindowSize) &&
         (command.numbers[0] < 0 || command.numbers[0] != std::floor(command.numbers[0])))
       fail(fmt::format("'{}' needs a whole number >= 0", name));
+    if (shape->kind == Kind::InjectFault) {
+      if (args[0] != "allocation" && args[0] != "submit")
+        fail(fmt::format("inject-fault {}: the site is allocation or submit", args[0]));
+      size_t used = 0;
+      unsigned long count = 0;
+      try {
+        count = std::stoul(args[1], &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != args[1].size() || count == 0)
+        fail(fmt::format("inject-fault: '{}' is not a whole number >= 1", args[1]));
+    }
     // The parameter and its value count are known now; the material only
     // once the scene is loaded.
     if (shape->kind == Kind::Material) {

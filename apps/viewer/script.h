@@ -18,6 +18,9 @@
 //                          PATH's .json beside it, so `penumbra render --settings` reproduces it
 //   capture PATH           a .png of what the window shows: the displayed image (guide
 //                          view, denoiser) with the menus when they are on
+//   inject-fault SITE N    tests: the Nth device-memory allocation (SITE allocation) or
+//                          submit (SITE submit) from now fails as on a full or lost GPU
+//                          (rhi/fault_injection.h)
 //   quit                   close the viewer (exit status 0)
 #include <string>
 #include <vector>
@@ -38,6 +41,7 @@ struct ScriptCommand {
     Environment,
     Screenshot,
     Capture,
+    InjectFault,
     Quit
   };
   Kind kind;

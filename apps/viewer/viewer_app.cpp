@@ -15,6 +15,7 @@
 #include "render/image_size.h"
 #include "render/render_job.h"
 #include "render/render_output.h"
+#include "rhi/fault_injection.h"
 #include "scene/material_row.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
@@ -110,18 +111,36 @@ void Viewer::loadScene(const std::string& nameOrPath) {
   const scene::Environment own = scene.environment;
   render::applyEnvironmentChoice(scene, options_.environment);
   if (device_) device_->waitForIdle();
+  // The GPU side can still fail (a scene too large for the device): then the
+  // previous scene comes back, so a failed load from the menu leaves a
+  // working viewer with the error in its status line.
+  const bool hadScene = tracer_ != nullptr;
+  scene::Scene previousScene = std::move(scene_);
+  std::unique_ptr<CameraController> previousCamera = std::move(camera_);
+  const scene::Environment previousEnvironment = sceneEnvironment_;
+  const render::EnvironmentChoice previousChoice = environment_;
   sceneEnvironment_ = own;
   environment_ = options_.environment;
   scene_ = std::move(scene);
+  camera_ = std::make_unique<CameraController>(scene_.camera, speedForScene(scene_));
+  try {
+    createTracer();
+  } catch (const Error&) {
+    if (!hadScene) throw;
+    scene_ = std::move(previousScene);
+    camera_ = std::move(previousCamera);
+    sceneEnvironment_ = previousEnvironment;
+    environment_ = previousChoice;
+    createTracer();  // the scene that fitted before
+    throw;
+  }
   sceneName_ = nameOrPath;
   vary_ = scene_.materialRow ? scene_.materialRow->vary : "";
   set_.clear();
   loadedMaterials_ = scene_.materials;
   loadedRow_ = scene_.materialRow;
   selectedMaterial_ = 0;
-  camera_ = std::make_unique<CameraController>(scene_.camera, speedForScene(scene_));
   std::snprintf(scenePath_, sizeof(scenePath_), "%s", nameOrPath.c_str());
-  createTracer();
 }
 
 void Viewer::targetSize(uint32_t& width, uint32_t& height) const {
@@ -268,6 +287,11 @@ bool Viewer::stepScript() {
           break;
         case Kind::Scene:
           loadScene(c.args[0]);
+          break;
+        case Kind::InjectFault:
+          rhi::faults::arm(c.args[0] == "submit" ? rhi::faults::Site::Submit
+                                                 : rhi::faults::Site::Allocation,
+                           std::stoul(c.args[1]));
           break;
         case Kind::WindowSize:
           if (window_) {

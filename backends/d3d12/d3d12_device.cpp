@@ -6,6 +6,7 @@
 
 #include "d3d12_backend.h"
 #include "d3d12_swapchain.h"
+#include "rhi/fault_injection.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -71,8 +72,9 @@ D3D12Device::~D3D12Device() {
 void D3D12Device::checkDevice(HRESULT hr, const char* what) const {
   if (hr == DXGI_ERROR_DEVICE_REMOVED || hr == DXGI_ERROR_DEVICE_HUNG || hr == DXGI_ERROR_DEVICE_RESET) {
     drainMessages();
-    throw Error(fmt::format("d3d12: {} failed: device removed ({})", what,
-                            hresultName(device_->GetDeviceRemovedReason())));
+    throw Error(fmt::format("d3d12: {} failed: device removed ({}): the GPU hung or was reset, or "
+                            "its driver failed; nothing more can run on it",
+                            what, hresultName(device_->GetDeviceRemovedReason())));
   }
   check(hr, what);
 }
@@ -151,6 +153,10 @@ rhi::SwapchainHandle D3D12Device::createSwapchain(const rhi::SwapchainDesc& desc
 
 void D3D12Device::submit(rhi::ICommandList* commandList) {
   auto* list = static_cast<D3D12CommandList*>(commandList);
+  // An armed fault injection (rhi/fault_injection.h) reports a removed device.
+  if (rhi::faults::shouldFail(rhi::faults::Site::Submit))
+    throw Error("d3d12: submitting a command list failed: device removed (DXGI_ERROR_DEVICE_REMOVED, "
+                "injected): the GPU hung or was reset, or its driver failed; nothing more can run on it");
   ID3D12CommandList* lists[] = {list->handle()};
   queue_->ExecuteCommandLists(1, lists);
   list->setSubmissionFence(signalQueue());

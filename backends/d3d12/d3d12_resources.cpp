@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "d3d12_backend.h"
+#include "rhi/fault_injection.h"
 #include "rhi/shader_table_layout.h"
 #include "util/error.h"
 
@@ -121,8 +122,16 @@ D3D12Buffer::D3D12Buffer(D3D12Device& device, const rhi::BufferDesc& desc) : des
   rd.Layout = D3D12_TEXTURE_LAYOUT_ROW_MAJOR;
   rd.Flags = flags;
   const auto heap = heapProperties(heapType);
-  HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd, initial,
-                                                        nullptr, IID_PPV_ARGS(&resource_));
+  // An armed fault injection (rhi/fault_injection.h) fails as a full device does.
+  HRESULT hr = rhi::faults::shouldFail(rhi::faults::Site::Allocation)
+                   ? E_OUTOFMEMORY
+                   : device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd, initial,
+                                                              nullptr, IID_PPV_ARGS(&resource_));
+  if (hr == E_OUTOFMEMORY)
+    throw Error(fmt::format("d3d12: out of device memory allocating {:.1f} MiB for buffer '{}' on {} "
+                            "(E_OUTOFMEMORY): the scene or image is too large for this device",
+                            double(resourceBytes_) / (1024.0 * 1024.0), desc.debugName,
+                            device.adapter().name));
   if (FAILED(hr))
     throw Error(fmt::format("d3d12: allocating {} bytes for buffer '{}' failed: {}", resourceBytes_,
                             desc.debugName, hresultName(hr)));
@@ -165,9 +174,15 @@ D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : 
   if (hasFlag(desc.usage, rhi::TextureUsage::RenderTarget))
     rd.Flags |= D3D12_RESOURCE_FLAG_ALLOW_RENDER_TARGET;
   const auto heap = heapProperties(D3D12_HEAP_TYPE_DEFAULT);
-  HRESULT hr = device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd,
-                                                        D3D12_RESOURCE_STATE_COMMON, nullptr,
-                                                        IID_PPV_ARGS(&resource_));
+  HRESULT hr = rhi::faults::shouldFail(rhi::faults::Site::Allocation)
+                   ? E_OUTOFMEMORY
+                   : device.handle()->CreateCommittedResource(&heap, D3D12_HEAP_FLAG_NONE, &rd,
+                                                              D3D12_RESOURCE_STATE_COMMON, nullptr,
+                                                              IID_PPV_ARGS(&resource_));
+  if (hr == E_OUTOFMEMORY)
+    throw Error(fmt::format("d3d12: out of device memory creating texture '{}' ({}x{}) on {} "
+                            "(E_OUTOFMEMORY): the scene or image is too large for this device",
+                            desc.debugName, desc.width, desc.height, device.adapter().name));
   if (FAILED(hr))
     throw Error(fmt::format("d3d12: creating texture '{}' ({}x{}) failed: {}", desc.debugName,
                             desc.width, desc.height, hresultName(hr)));

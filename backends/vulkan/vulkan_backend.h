@@ -287,6 +287,9 @@ class VulkanCommandList final : public rhi::ICommandList {
 
   VkCommandBuffer handle() const { return commandBuffer_; }
   VkFence fence() const { return fence_; }
+  const std::string& debugName() const { return debugName_; }
+  // After a failed vkQueueSubmit: a new fence, created signaled.
+  void replaceFenceSignaled();
   // Called by the device once the GPU finished this list's work.
   void releaseTransientResources() { transient_.clear(); }
 
@@ -296,6 +299,7 @@ class VulkanCommandList final : public rhi::ICommandList {
                                                     const char* name);
   void transitionBindingSets(const std::vector<rhi::IBindingSet*>& sets);
   VulkanDevice& device_;
+  std::string debugName_;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
@@ -355,6 +359,9 @@ class VulkanDevice final : public rhi::IDevice {
   // Descriptors an unbounded array of `type` gets in a set layout:
   // min(rhi::kMaxBindlessDescriptors, the device's per-stage and per-set limits).
   uint32_t bindlessCapacity(rhi::ResourceType type) const;
+  // Like check(), but device loss and running out of memory get messages
+  // that say what happened to the GPU; `what` names the operation.
+  void checkDevice(VkResult result, const char* what) const;
   // VK_EXT_debug_utils object name, shown by RenderDoc/Nsight and in validation messages.
   void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
 

@@ -91,7 +91,7 @@ bool needsBarrier(rhi::ResourceState from, rhi::ResourceState to) {
 }  // namespace
 
 VulkanCommandList::VulkanCommandList(VulkanDevice& device, const std::string& debugName)
-    : device_(device) {
+    : device_(device), debugName_(debugName) {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.queueFamilyIndex = device_.queueFamily();
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
@@ -115,9 +115,19 @@ VulkanCommandList::~VulkanCommandList() {
   vkDestroyCommandPool(device_.handle(), pool_, nullptr);
 }
 
+void VulkanCommandList::replaceFenceSignaled() {
+  VkFence fresh = VK_NULL_HANDLE;
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+  check(vkCreateFence(device_.handle(), &fenceInfo, nullptr, &fresh), "vkCreateFence");
+  vkDestroyFence(device_.handle(), fence_, nullptr);
+  fence_ = fresh;
+}
+
 void VulkanCommandList::open() {
   // A list still executing is waited for before it is recorded again.
-  check(vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  device_.checkDevice(vkWaitForFences(device_.handle(), 1, &fence_, VK_TRUE, UINT64_MAX),
+                      "waiting for a command list's last submission (vkWaitForFences)");
   releaseTransientResources();
   // From here on the staging buffers are this recording's: a waitForIdle
   // while it records (a pass rebinding mid-frame) must leave them alone.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string_view>
 
+#include "rhi/fault_injection.h"
 #include "util/error.h"
 #include "vulkan_backend.h"
 #include "vulkan_surface.h"
@@ -291,13 +292,31 @@ void VulkanDevice::submit(rhi::ICommandList* commandList, VkSemaphore wait, VkSe
   }
   VkFence fence = list->fence();
   check(vkResetFences(device_, 1, &fence), "vkResetFences");
-  check(vkQueueSubmit(queue_, 1, &info, fence), "vkQueueSubmit");
+  const VkResult submitted = rhi::faults::shouldFail(rhi::faults::Site::Submit)
+                                 ? VK_ERROR_DEVICE_LOST
+                                 : vkQueueSubmit(queue_, 1, &info, fence);
+  // Nothing will signal the fence of a submission that did not happen; the
+  // list's next open() and its destructor wait on it.
+  if (submitted != VK_SUCCESS) list->replaceFenceSignaled();
+  checkDevice(submitted, fmt::format("submitting command list '{}'", list->debugName()).c_str());
   // A viewer resubmits the same few lists every frame; list them once.
   if (std::find(inFlight_.begin(), inFlight_.end(), list) == inFlight_.end()) inFlight_.push_back(list);
 }
 
+void VulkanDevice::checkDevice(VkResult result, const char* what) const {
+  if (result == VK_ERROR_DEVICE_LOST)
+    throw Error(fmt::format("vulkan: the device {} was lost {} (VK_ERROR_DEVICE_LOST): the GPU hung "
+                            "or was reset, or its driver failed; nothing more can run on it",
+                            adapter_.name, what));
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+    throw Error(fmt::format("vulkan: out of {} memory {} on {} ({})",
+                            result == VK_ERROR_OUT_OF_DEVICE_MEMORY ? "device" : "host", what,
+                            adapter_.name, resultName(result)));
+  check(result, what);
+}
+
 void VulkanDevice::waitForIdle() {
-  check(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
+  checkDevice(vkQueueWaitIdle(queue_), "waiting for the GPU to finish (vkQueueWaitIdle)");
   for (auto* list : inFlight_) list->releaseTransientResources();
   inFlight_.clear();
 }

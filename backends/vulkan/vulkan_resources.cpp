@@ -1,6 +1,7 @@
 // Buffers, textures and acceleration structures.
 #include <fmt/format.h>
 
+#include "rhi/fault_injection.h"
 #include "rhi/shader_table_layout.h"
 #include "util/error.h"
 #include "vulkan_backend.h"
@@ -30,6 +31,29 @@ VkFormat toVkFormat(rhi::Format format) {
   }
   throw Error("vulkan: unsupported format");
 }
+
+namespace {
+
+// vkAllocateMemory, or the failure an armed fault injection asks for
+// (rhi/fault_injection.h).
+VkResult allocateMemory(VulkanDevice& device, const VkMemoryAllocateInfo& info, VkDeviceMemory& memory) {
+  if (rhi::faults::shouldFail(rhi::faults::Site::Allocation)) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+  return vkAllocateMemory(device.handle(), &info, nullptr, &memory);
+}
+
+std::string allocationError(const VulkanDevice& device, uint64_t bytes, const char* kind,
+                            const std::string& name, VkResult result) {
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+    return fmt::format("vulkan: out of {} memory allocating {:.1f} MiB for {} '{}' on {} ({}): the "
+                       "scene or image is too large for this device",
+                       result == VK_ERROR_OUT_OF_DEVICE_MEMORY ? "device" : "host",
+                       double(bytes) / (1024.0 * 1024.0), kind, name, device.adapter().name,
+                       resultName(result));
+  return fmt::format("vulkan: allocating {} bytes for {} '{}' failed: {}", bytes, kind, name,
+                     resultName(result));
+}
+
+}  // namespace
 
 // `alignment` > 0 over-allocates so that deviceAddress() is a multiple of it
 // (shader tables need shaderGroupBaseAlignment, scratch buffers
@@ -79,11 +103,10 @@ VulkanBuffer::VulkanBuffer(VulkanDevice& device, const rhi::BufferDesc& desc, ui
   alloc.pNext = &flags;
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = device_.memoryType(req.memoryTypeBits, required, preferred);
-  VkResult r = vkAllocateMemory(dev, &alloc, nullptr, &memory_);
+  VkResult r = allocateMemory(device_, alloc, memory_);
   if (r != VK_SUCCESS) {
     vkDestroyBuffer(dev, buffer_, nullptr);
-    throw Error(fmt::format("vulkan: allocating {} bytes for buffer '{}' failed: {}", req.size,
-                            desc.debugName, resultName(r)));
+    throw Error(allocationError(device_, req.size, "buffer", desc.debugName, r));
   }
   check(vkBindBufferMemory(dev, buffer_, memory_, 0), "vkBindBufferMemory");
   if (desc.memory != rhi::MemoryLocation::DeviceLocal)
@@ -138,7 +161,10 @@ VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex =
       device_.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-  check(vkAllocateMemory(dev, &alloc, nullptr, &memory_), "vkAllocateMemory (texture)");
+  if (VkResult r = allocateMemory(device_, alloc, memory_); r != VK_SUCCESS) {
+    vkDestroyImage(dev, image_, nullptr);
+    throw Error(allocationError(device_, req.size, "texture", desc.debugName, r));
+  }
   check(vkBindImageMemory(dev, image_, memory_, 0), "vkBindImageMemory");
   createView();
 }

@@ -161,7 +161,8 @@ void VulkanSwapchain::create() {
 rhi::ITexture* VulkanSwapchain::acquireNextImage() {
   if (acquired_) throw Error("vulkan: acquireNextImage twice without present");
   VkDevice dev = device_.handle();
-  check(vkWaitForFences(dev, 1, &slotDone_[slot_], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  device_.checkDevice(vkWaitForFences(dev, 1, &slotDone_[slot_], VK_TRUE, UINT64_MAX),
+                      "waiting for a frame slot (vkWaitForFences)");
   VkResult result = vkAcquireNextImageKHR(dev, swapchain_, UINT64_MAX, imageAcquired_[slot_],
                                           VK_NULL_HANDLE, &imageIndex_);
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return nullptr;
