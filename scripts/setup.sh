@@ -44,6 +44,9 @@ BASE_PACKAGES=(
   g++-mingw-w64-x86-64-posix libz-mingw-w64-dev
   # dpkg-source unpacks the viewer's GLFW and Dear ImGui sources for it.
   dpkg-dev
+  # The sanitizer build and the fuzz targets (scripts/sanitize.sh): clang
+  # with its ASan, UBSan and libFuzzer runtimes.
+  clang libclang-rt-dev
   # penumbra study's report: its plots, and the headless browser that
   # tests the page.
   python3-matplotlib chromium

@@ -76,8 +76,22 @@ void checkWritable(const std::string& path) {
   std::remove(tmp.c_str());
 }
 
+// tinyexr's writers leak what they allocated when they cannot open the file
+// (found by the sanitizer build: "a failed write leaves no partial file"), so
+// the file is created here first and tinyexr only ever writes to one it can.
+static bool canCreate(const std::string& tmp, std::string& reason) {
+  FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) {
+    reason = "cannot create the file";
+    return false;
+  }
+  std::fclose(f);
+  return true;
+}
+
 void saveExr(const std::string& path, const Image& image) {
   writeAtomically(path, [&](const std::string& tmp, std::string& reason) {
+    if (!canCreate(tmp, reason)) return false;
     const char* err = nullptr;
     // tinyexr: 4 components, FP32 storage (save_as_fp16 = 0).
     int r =
@@ -141,6 +155,7 @@ void saveExrLayers(const std::string& path, const Image& beauty,
   exr.height = int(beauty.height);
   exr.images = planePointers.data();
   writeAtomically(path, [&](const std::string& tmp, std::string& reason) {
+    if (!canCreate(tmp, reason)) return false;
     const char* err = nullptr;
     if (SaveEXRImageToFile(&exr, &header, tmp.c_str(), &err) != TINYEXR_SUCCESS) {
       reason = err ? err : "tinyexr could not write the file";
@@ -170,12 +185,18 @@ ExrChannels loadExrChannels(const std::string& path) {
     if (err) FreeEXRErrorMessage(err);
     throw Error(fmt::format("image '{}': {}", path, reason));
   };
-  if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS)
+  // A header that fails part-way has some attributes allocated already
+  // (found by fuzzing: tests/fuzz/corpus/image/finding-exr-header-leak).
+  if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    FreeEXRHeader(&header);
     fail("unreadable header");
+  }
   for (int c = 0; c < header.num_channels; ++c)
     header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
   EXRImage exr;
   InitEXRImage(&exr);
+  // (A failed load frees the image's planes itself: FreeEXRImage here would
+  // free them twice.)
   if (LoadEXRImageFromFile(&exr, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
     fail("unreadable pixels");
@@ -201,6 +222,9 @@ std::pair<uint64_t, uint64_t> exrSize(const std::string& path) {
   const char* err = nullptr;
   if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS ||
       ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    // Freed on failure too: a header that fails part-way has some attributes
+    // allocated already (found by fuzzing: tests/fuzz/corpus/image/finding-exr-header-leak).
+    FreeEXRHeader(&header);
     std::string reason = err ? err : "not an OpenEXR file";
     if (err) FreeEXRErrorMessage(err);
     throw Error(fmt::format("image '{}': {}", path, reason));
@@ -212,18 +236,30 @@ std::pair<uint64_t, uint64_t> exrSize(const std::string& path) {
   return {extent(w.min_x, w.max_x), extent(w.min_y, w.max_y)};
 }
 
+// Through loadExrChannels rather than tinyexr's LoadEXR, which leaks on some
+// malformed files (found by fuzzing: tests/fuzz/corpus/image/
+// finding-exr-loadexr-leak); this way every error path frees what it parsed.
+// As LoadEXR: R, G, B and A (1 when absent), or one channel as grey.
 Image loadExr(const std::string& path) {
-  float* data = nullptr;
-  int w = 0, h = 0;
-  const char* err = nullptr;
-  if (LoadEXR(&data, &w, &h, path.c_str(), &err) != TINYEXR_SUCCESS) {
-    std::string reason = err ? err : "unreadable";
-    if (err) FreeEXRErrorMessage(err);
-    throw Error(fmt::format("image '{}': {}", path, reason));
+  ExrChannels exr = loadExrChannels(path);
+  const std::vector<float>* r = exr.find("R");
+  const std::vector<float>* g = exr.find("G");
+  const std::vector<float>* b = exr.find("B");
+  const std::vector<float>* a = exr.find("A");
+  if (!(r && g && b)) {
+    if (exr.channels.size() != 1)
+      throw Error(fmt::format("image '{}': no R, G and B channels and not a single-channel image", path));
+    r = g = b = &exr.channels.front().second;
+    a = nullptr;
   }
-  Image image{uint32_t(w), uint32_t(h)};
-  std::copy(data, data + size_t(w) * h * 4, image.rgba.begin());
-  std::free(data);
+  Image image{exr.width, exr.height};
+  const size_t pixels = size_t(exr.width) * exr.height;
+  for (size_t i = 0; i < pixels; ++i) {
+    image.rgba[i * 4 + 0] = (*r)[i];
+    image.rgba[i * 4 + 1] = (*g)[i];
+    image.rgba[i * 4 + 2] = (*b)[i];
+    image.rgba[i * 4 + 3] = a ? (*a)[i] : 1.0f;
+  }
   return image;
 }
 

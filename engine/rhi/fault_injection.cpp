@@ -35,8 +35,8 @@ void readEnvironmentLocked() {
   const unsigned long long n =
       colon == std::string::npos ? 0 : std::strtoull(spec.c_str() + colon + 1, &end, 10);
   if ((site != "allocation" && site != "submit") || n == 0 || !end || *end != '\0')
-    throw Error(fmt::format("PENUMBRA_INJECT_FAULT='{}': expected allocation:N or submit:N (N >= 1)",
-                            spec));
+    throw Error(fmt::format(
+        "PENUMBRA_INJECT_FAULT='{}': expected allocation:N or submit:N (N >= 1)", spec));
   gArmed = {true, site == "allocation" ? Site::Allocation : Site::Submit, n};
 }
 

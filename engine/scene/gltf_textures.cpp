@@ -87,6 +87,27 @@ std::optional<std::string> refusedSize(uint64_t width, uint64_t height, ImageDec
   return std::nullopt;
 }
 
+// stb_image (Debian's 2022-09 snapshot) copies a zero-length IDAT chunk
+// that comes before any image data from a null buffer (memcpy(NULL, p, 0),
+// undefined behaviour; found by fuzzing, tests/fuzz/corpus/image/
+// finding-png-empty-idat). Such a PNG is legal but pointless; it is refused
+// before stb sees it. The walk also stops at the first chunk that overruns
+// the file, which stb reports itself.
+std::optional<std::string> pngProblem(const unsigned char* bytes, size_t size) {
+  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 8 || std::memcmp(bytes, kSignature, 8) != 0) return std::nullopt;
+  size_t at = 8;
+  while (size - at >= 12) {
+    const uint32_t length = uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 |
+                            uint32_t(bytes[at + 2]) << 8 | uint32_t(bytes[at + 3]);
+    if (std::memcmp(bytes + at + 4, "IDAT", 4) == 0 && length == 0)
+      return std::string("a PNG with an empty IDAT chunk (not supported)");
+    if (length > size - at - 12) break;
+    at += 12 + size_t(length);
+  }
+  return std::nullopt;
+}
+
 // Decodes an encoded image (PNG, JPEG, ...) into `image` with the file's
 // channel count and bit depth, once its header's size passes the limits;
 // returns why it failed, or nothing.
@@ -95,6 +116,7 @@ std::optional<std::string> decodeInto(tinygltf::Image& image, const unsigned cha
   if (size > size_t(INT_MAX)) return "larger than 2 GiB";
   const int length = int(size);
   int width = 0, height = 0, components = 0, bits = 8;
+  if (auto problem = pngProblem(bytes, size)) return problem;
   // stb_image reads the same header to decode; a file whose header it cannot
   // read here it cannot decode either.
   if (!stbi_info_from_memory(bytes, length, &width, &height, &components)) {

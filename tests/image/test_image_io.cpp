@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "image/image_io.h"
+#include "test_data.h"
 #include "util/error.h"
 
 using namespace penumbra;
@@ -112,4 +113,16 @@ TEST_CASE("PNG output is written whole", "[image]") {
   image::savePng(path.string(), img);
   REQUIRE(fs::file_size(path) > 8);
   fs::remove(path);
+}
+
+// A fuzz finding (tests/fuzz/corpus/image/finding-exr-header-leak): an EXR
+// header whose channel list parses and whose data window does not. The
+// header's allocations were leaked on that path; the sanitizer build's
+// LeakSanitizer fails this test if they are again, and every build checks the
+// file is refused with a reason.
+TEST_CASE("an EXR header that fails part-way is refused and freed", "[image]") {
+  const std::string path = test::dataPath("images/exr_header_fails_late.exr");
+  REQUIRE_THROWS_WITH(image::exrSize(path), Catch::Matchers::ContainsSubstring(path));
+  REQUIRE_THROWS_WITH(image::loadExrChannels(path), Catch::Matchers::ContainsSubstring(path));
+  REQUIRE_THROWS_WITH(image::loadExr(path), Catch::Matchers::ContainsSubstring(path));
 }

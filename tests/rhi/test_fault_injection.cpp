@@ -18,9 +18,10 @@ TEST_CASE("fault injection: the armed allocation fails as out of memory, once", 
   desc.debugName = "big";
   faults::arm(faults::Site::Allocation, 2);
   auto first = device->createBuffer(desc);  // the first call still succeeds
-  REQUIRE_THROWS_WITH(device->createBuffer(desc),
-                      ContainsSubstring("out of device memory allocating 3.0 MiB for buffer 'big'") &&
-                          ContainsSubstring("VK_ERROR_OUT_OF_DEVICE_MEMORY"));
+  REQUIRE_THROWS_WITH(
+      device->createBuffer(desc),
+      ContainsSubstring("out of device memory allocating 3.0 MiB for buffer 'big'") &&
+          ContainsSubstring("VK_ERROR_OUT_OF_DEVICE_MEMORY"));
   TextureDesc t;
   t.width = t.height = 16;
   t.debugName = "after";
@@ -29,14 +30,16 @@ TEST_CASE("fault injection: the armed allocation fails as out of memory, once", 
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("fault injection: the armed submit reports a lost device naming the list", "[rhi][faults]") {
+TEST_CASE("fault injection: the armed submit reports a lost device naming the list",
+          "[rhi][faults]") {
   auto device = test::makeTestDevice();
   auto list = device->createCommandList("doomed");
   list->open();
   list->close();
   faults::arm(faults::Site::Submit, 1);
-  REQUIRE_THROWS_WITH(device->submit(list.get()),
-                      ContainsSubstring("was lost submitting command list 'doomed' (VK_ERROR_DEVICE_LOST)"));
+  REQUIRE_THROWS_WITH(
+      device->submit(list.get()),
+      ContainsSubstring("was lost submitting command list 'doomed' (VK_ERROR_DEVICE_LOST)"));
   // The device was not really lost: the next submit goes through.
   device->submit(list.get());
   device->waitForIdle();
