@@ -5,13 +5,31 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <catch2/catch_test_macros.hpp>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "scene/gltf_loader.h"
+#include "util/error.h"
+
 namespace penumbra::test {
+
+// importGltf's error for `path`, checked to be one line naming the file.
+inline std::string gltfRefusal(const std::string& path, const scene::InputLimits& limits = {}) {
+  try {
+    scene::importGltf(path, {}, limits);
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    CHECK(message.find(std::filesystem::path(path).filename().string()) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    return message;
+  }
+  FAIL("no error for " << path);
+  return "";
+}
 
 // A folder of its own under the system's temporary folder, removed with it.
 class TempFolder {

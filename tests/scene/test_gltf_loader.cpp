@@ -463,24 +463,8 @@ TEST_CASE("glTF URIs stay inside the file's folder unless the user allows others
 
 // Bounded inputs (scene/input_limits.h, docs/security.md): a file past a
 // limit is one error line naming the file, the part and the limit, found
-// before the allocation or the recursion it would have caused.
-namespace {
-
-// importGltf's error for `path`, checked to be one line naming the file.
-std::string refusal(const std::string& path, const scene::InputLimits& limits = {}) {
-  try {
-    scene::importGltf(path, {}, limits);
-  } catch (const Error& e) {
-    const std::string message = e.what();
-    CHECK(message.find(std::filesystem::path(path).filename().string()) != std::string::npos);
-    CHECK(message.find('\n') == std::string::npos);
-    return message;
-  }
-  FAIL("no error for " << path);
-  return "";
-}
-
-}  // namespace
+// before the allocation or the recursion it would have caused
+// (test::gltfRefusal checks that).
 
 TEST_CASE("glTF JSON nested past the depth limit is refused before tinygltf parses it", "[gltf]") {
   test::TempFolder folder("gltf-depth");
@@ -491,16 +475,17 @@ TEST_CASE("glTF JSON nested past the depth limit is refused before tinygltf pars
   for (const std::string& path :
        {folder.write("deep.gltf", deep), folder.write("deep.glb", test::glb(deep))}) {
     INFO(path);
-    CHECK_THAT(refusal(path), ContainsSubstring("JSON nests arrays and objects deeper than the "
-                                                "limit 256") &&
-                                  ContainsSubstring("InputLimits::maxJsonDepth"));
+    CHECK_THAT(test::gltfRefusal(path),
+               ContainsSubstring("JSON nests arrays and objects deeper than the "
+                                 "limit 256") &&
+                   ContainsSubstring("InputLimits::maxJsonDepth"));
   }
   // transforms.gltf nests 6 levels: a limit of 6 loads it, 5 does not.
   scene::InputLimits limits;
   limits.maxJsonDepth = 6;
   REQUIRE(scene::importGltf(gltf("transforms.gltf"), {}, limits).scene.instances.size() == 5u);
   limits.maxJsonDepth = 5;
-  CHECK_THAT(refusal(gltf("transforms.gltf"), limits), ContainsSubstring("the limit 5"));
+  CHECK_THAT(test::gltfRefusal(gltf("transforms.gltf"), limits), ContainsSubstring("the limit 5"));
 }
 
 TEST_CASE("glTF accessors without a buffer view are bounded before they are zero-filled",
@@ -515,7 +500,7 @@ TEST_CASE("glTF accessors without a buffer view are bounded before they are zero
           "nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}]}})",
                     count));
     INFO(count);
-    CHECK_THAT(refusal(path),
+    CHECK_THAT(test::gltfRefusal(path),
                ContainsSubstring("mesh 0 primitive 0 POSITION (accessor 0) element count "
                                  "without a buffer view " +
                                  std::to_string(count) + " exceeds the limit 1048576") &&
@@ -527,7 +512,7 @@ TEST_CASE("glTF accessors without a buffer view are bounded before they are zero
   limits.maxZeroFilledElements = 4;
   REQUIRE(scene::importGltf(gltf("sparse.gltf"), {}, limits).scene.meshes.size() == 1u);
   limits.maxZeroFilledElements = 3;
-  CHECK_THAT(refusal(gltf("sparse.gltf"), limits),
+  CHECK_THAT(test::gltfRefusal(gltf("sparse.gltf"), limits),
              ContainsSubstring("TEXCOORD_0 (accessor 1) element count without a buffer view 4 "
                                "exceeds the limit 3"));
 }
@@ -563,6 +548,6 @@ TEST_CASE("glTF accessor counts, decoded bytes, triangles, instances and node vi
     limits.*c.limit = c.needed;
     CHECK_NOTHROW(scene::importGltf(gltf(c.file), {}, limits));
     limits.*c.limit = c.needed - 1;
-    CHECK_THAT(refusal(gltf(c.file), limits), ContainsSubstring(c.message));
+    CHECK_THAT(test::gltfRefusal(gltf(c.file), limits), ContainsSubstring(c.message));
   }
 }
