@@ -317,12 +317,19 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
     std::string cached;
     if (std::filesystem::exists(cachedImage) && std::filesystem::exists(cachedKey))
       cached = readFile(cachedKey.string());
+    // A cache whose noise line is damaged is stale, not an error: render again.
+    std::optional<double> cachedNoise;
     if (cached.rfind(key + "\n", 0) == 0) {
+      std::string noise = cached.substr(key.size() + 1);
+      if (!noise.empty() && noise.back() == '\n') noise.pop_back();
+      cachedNoise = parseNumber(noise);
+    }
+    if (cachedNoise) {
       reference.image = image::loadExr(cachedImage.string());
       reference.source = cachedImage.string() + " (cached)";
       reference.spp = referenceSpp;
       reference.seed = o.referenceSeed;
-      reference.noiseRelMse = std::stod(cached.substr(key.size() + 1));
+      reference.noiseRelMse = *cachedNoise;
     } else {
       reference =
           runner.renderReference(referenceTechnique, referenceSpp, o.referenceSeed, report(0));

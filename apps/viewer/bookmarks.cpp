@@ -2,12 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "scene/json_reading.h"
 #include "util/error.h"
+#include "util/json_nesting.h"
 #include "util/log.h"
 
 namespace penumbra::viewer {
@@ -16,8 +20,38 @@ using nlohmann::json;
 json vec3(glm::vec3 v) {
   return json::array({v.x, v.y, v.z});
 }
-glm::vec3 vec3(const json& j) {
-  return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()};
+// The settings file is the user's own, but it is still read as untrusted
+// text: bounded nesting, every field type- and range-checked, so a damaged
+// or hand-edited file ends in a warning that names the field.
+constexpr size_t kMaxNesting = 16;
+
+glm::vec3 readNonZero(const json& value, const std::string& where) {
+  const glm::vec3 v = scene::readVec3(value, where);
+  if (!(glm::length(v) > 0.0f) || !std::isfinite(glm::length(v)))
+    throw Error(fmt::format("{}: must be a non-zero direction of finite length", where));
+  return v;
+}
+
+Bookmark readBookmark(const json& b, const std::string& where) {
+  if (!b.is_object()) scene::throwWrongType(where, "bookmark", "an object", b);
+  Bookmark bookmark;
+  bookmark.name = scene::requireString(b, "name", where);
+  const json& c = scene::require(b, "camera", where);
+  const std::string camera = where + " camera";
+  bookmark.camera.position =
+      scene::readVec3(scene::require(c, "position", camera), camera + ".position");
+  // Directions are kept as written (saved views come back bit for bit), but
+  // a zero one would normalise to NaN.
+  bookmark.camera.forward = readNonZero(scene::require(c, "forward", camera), camera + ".forward");
+  bookmark.camera.up = readNonZero(scene::require(c, "up", camera), camera + ".up");
+  bookmark.camera.verticalFovDegrees = scene::requireFloat(c, "verticalFovDegrees", camera);
+  if (!(bookmark.camera.verticalFovDegrees > 0.0f && bookmark.camera.verticalFovDegrees < 180.0f))
+    throw Error(fmt::format("{}: \"verticalFovDegrees\" {} is not in (0, 180)", camera,
+                            bookmark.camera.verticalFovDegrees));
+  bookmark.camera.aspectRatio = scene::readFloat(c, "aspectRatio", 0.0f, camera);
+  if (bookmark.camera.aspectRatio < 0.0f)
+    throw Error(fmt::format("{}: \"aspectRatio\" must be 0 (the image's) or positive", camera));
+  return bookmark;
 }
 }  // namespace
 
@@ -30,25 +64,28 @@ std::string BookmarkStore::defaultPath() {
 }
 
 BookmarkStore::BookmarkStore(std::string path) : path_(std::move(path)) {
-  std::ifstream in(path_);
+  std::ifstream in(path_, std::ios::binary);
   if (!in) return;  // no file yet: no bookmarks
   try {
-    json doc = json::parse(in);
-    for (auto& [scene, list] : doc.at("bookmarks").items())
-      for (const auto& b : list) {
-        Bookmark bookmark;
-        bookmark.name = b.at("name").get<std::string>();
-        const auto& c = b.at("camera");
-        bookmark.camera.position = vec3(c.at("position"));
-        bookmark.camera.forward = vec3(c.at("forward"));
-        bookmark.camera.up = vec3(c.at("up"));
-        bookmark.camera.verticalFovDegrees = c.at("verticalFovDegrees").get<float>();
-        bookmark.camera.aspectRatio = c.value("aspectRatio", 0.0f);
-        entries_.emplace_back(scene, bookmark);
-      }
-  } catch (const json::exception& e) {
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    if (auto at = json_nesting::firstTooDeep(text, kMaxNesting))
+      throw Error(fmt::format("JSON nests deeper than {} levels at byte {}", kMaxNesting, *at));
+    const json doc = json::parse(text);
+    const json& bookmarks = scene::require(doc, "bookmarks", "the file");
+    if (!bookmarks.is_object())
+      scene::throwWrongType("the file", "bookmarks", "an object", bookmarks);
+    for (const auto& [scene, list] : bookmarks.items()) {
+      const std::string where = fmt::format("bookmarks of '{}'", scene);
+      if (!list.is_array()) scene::throwWrongType("bookmarks", scene, "an array", list);
+      for (size_t i = 0; i < list.size(); ++i)
+        entries_.emplace_back(scene, readBookmark(list[i], fmt::format("{} [{}]", where, i)));
+    }
+  } catch (const std::exception& e) {
     // A damaged settings file must not keep the viewer from starting.
-    log::warning("viewer settings '{}' ignored: {}", path_, e.what());
+    readProblem_ = e.what();
+    log::warning("viewer settings '{}' ignored: {}", path_, readProblem_);
     entries_.clear();
   }
 }

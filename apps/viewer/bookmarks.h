@@ -22,6 +22,9 @@ class BookmarkStore {
   static std::string defaultPath();
   const std::string& path() const { return path_; }
   std::vector<Bookmark> list(const std::string& scene) const;
+  // Why the file was ignored ("" when it was read or absent): a damaged file
+  // leaves the viewer without bookmarks and a warning, never unable to start.
+  const std::string& readProblem() const { return readProblem_; }
   // Adds or replaces the bookmark `name` of `scene` and writes the file.
   void save(const std::string& scene, const Bookmark& bookmark);
   void remove(const std::string& scene, const std::string& name);
@@ -29,6 +32,7 @@ class BookmarkStore {
  private:
   void write() const;
   std::string path_;
+  std::string readProblem_;
   std::vector<std::pair<std::string, Bookmark>> entries_;  // (scene, bookmark)
 };
 

@@ -172,6 +172,13 @@ const std::vector<float>* ExrChannels::find(const std::string& name) const {
   return nullptr;
 }
 
+namespace {
+// max - min + 1 of a data window, in int64 first: it can overflow an int.
+uint64_t exrExtent(int lo, int hi) {
+  return hi >= lo ? uint64_t(int64_t(hi) - lo + 1) : 0;
+}
+}  // namespace
+
 ExrChannels loadExrChannels(const std::string& path) {
   EXRVersion version;
   if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS || version.multipart ||
@@ -190,6 +197,17 @@ ExrChannels loadExrChannels(const std::string& path) {
   if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
     fail("unreadable header");
+  }
+  const EXRBox2i window = header.data_window;
+  const uint64_t declaredWidth = exrExtent(window.min_x, window.max_x),
+                 declaredHeight = exrExtent(window.min_y, window.max_y);
+  if (declaredWidth * declaredHeight > kMaxExrPixels || header.num_channels > kMaxExrChannels) {
+    const int channels = header.num_channels;
+    FreeEXRHeader(&header);
+    throw Error(fmt::format(
+        "image '{}': its header declares {} x {} pixels of {} channels, more than the limit of "
+        "{} pixels and {} channels",
+        path, declaredWidth, declaredHeight, channels, kMaxExrPixels, kMaxExrChannels));
   }
   for (int c = 0; c < header.num_channels; ++c)
     header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
@@ -231,9 +249,7 @@ std::pair<uint64_t, uint64_t> exrSize(const std::string& path) {
   }
   const EXRBox2i w = header.data_window;
   FreeEXRHeader(&header);
-  // int64 first: max - min + 1 of two ints can overflow an int.
-  auto extent = [](int lo, int hi) { return hi >= lo ? uint64_t(int64_t(hi) - lo + 1) : 0; };
-  return {extent(w.min_x, w.max_x), extent(w.min_y, w.max_y)};
+  return {exrExtent(w.min_x, w.max_x), exrExtent(w.min_y, w.max_y)};
 }
 
 // Through loadExrChannels rather than tinyexr's LoadEXR, which leaks on some
@@ -248,7 +264,8 @@ Image loadExr(const std::string& path) {
   const std::vector<float>* a = exr.find("A");
   if (!(r && g && b)) {
     if (exr.channels.size() != 1)
-      throw Error(fmt::format("image '{}': no R, G and B channels and not a single-channel image", path));
+      throw Error(
+          fmt::format("image '{}': no R, G and B channels and not a single-channel image", path));
     r = g = b = &exr.channels.front().second;
     a = nullptr;
   }

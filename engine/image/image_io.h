@@ -26,9 +26,15 @@ void checkWritable(const std::string& path);
 // Linear float RGB(A) as OpenEXR (32-bit float channels, ZIP compressed).
 void saveExr(const std::string& path, const Image& image);
 Image loadExr(const std::string& path);
+// What loadExr and loadExrChannels decode at most, checked on the header
+// before anything is allocated: tinyexr allocates what the data window
+// declares whatever the file holds, so a 300-byte file could ask for
+// gigabytes. 16384 x 16384 pixels (the largest render) of 64 channels.
+inline constexpr uint64_t kMaxExrPixels = uint64_t(16384) * 16384;
+inline constexpr int kMaxExrChannels = 64;
 // The width and height an EXR file's header declares (its data window),
-// read without decoding: loadExr allocates that much whatever the file
-// holds, so callers bound it first. penumbra::Error if unreadable.
+// read without decoding, for callers with a tighter bound (environment
+// maps). penumbra::Error if unreadable.
 std::pair<uint64_t, uint64_t> exrSize(const std::string& path);
 
 // A named group of channels of a layered EXR: channel k of `image` is

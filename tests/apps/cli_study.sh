@@ -38,6 +38,12 @@ grep -q "^within 5 ms: " "$work/analyze"
 grep -q "^Pareto front" "$work/analyze"
 # The cached reference is reused by a second study of the same scene and size.
 "$penumbra" study --size 32x32 --spp 2 --seeds 1 --reference-spp 1024 --out "$work/s" | grep -q "(cached)"
+# A cache whose noise line is damaged is stale: the reference is rendered
+# again, not taken (and not an internal error).
+sed -i '2s/.*/not a number/' "$work/s/reference.txt"
+"$penumbra" study --size 32x32 --spp 2 --seeds 1 --reference-spp 1024 --out "$work/s" >"$work/recache" 2>&1 ||
+  { cat "$work/recache"; echo "a damaged reference cache failed the study"; exit 1; }
+if grep -q "(cached)" "$work/recache"; then echo "a damaged reference cache was used"; exit 1; fi
 
 fails() {  # the command must fail with exactly one line on stderr naming `what`
   local what="$1"

@@ -2,7 +2,10 @@
 
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "image/image_io.h"
 #include "test_data.h"
@@ -125,4 +128,39 @@ TEST_CASE("an EXR header that fails part-way is refused and freed", "[image]") {
   REQUIRE_THROWS_WITH(image::exrSize(path), Catch::Matchers::ContainsSubstring(path));
   REQUIRE_THROWS_WITH(image::loadExrChannels(path), Catch::Matchers::ContainsSubstring(path));
   REQUIRE_THROWS_WITH(image::loadExr(path), Catch::Matchers::ContainsSubstring(path));
+}
+
+// tinyexr allocates what the header's data window declares before it reads a
+// pixel: a small file that declares 60000 x 60000 pixels must be refused from
+// its header, naming the limit, not end in bad_alloc. (An image of
+// kMaxExrPixels itself decodes: every render up to 16384 x 16384 is read back.)
+TEST_CASE("an EXR that declares more pixels than the limit is refused from its header", "[image]") {
+  const auto path = scratchDir() / "declares-huge.exr";
+  image::Image img{2, 2};
+  img.rgba.assign(16, 0.5f);
+  image::saveExr(path.string(), img);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    bytes = buffer.str();
+  }
+  // "dataWindow\0box2i\0" + int32 size 16 + xMin yMin xMax yMax (little endian).
+  const std::string attribute("dataWindow\0box2i\0", 17);
+  const size_t at = bytes.find(attribute);
+  REQUIRE(at != std::string::npos);
+  const int32_t window[4] = {0, 0, 59999, 59999};
+  std::memcpy(&bytes[at + attribute.size() + 4], window, sizeof window);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+
+  REQUIRE(image::exrSize(path.string()) == std::pair<uint64_t, uint64_t>{60000, 60000});
+  // (Matchers are built in place: a composed matcher kept in a variable
+  // refers to temporaries.)
+  for (auto load : {+[](const std::string& p) { image::loadExrChannels(p); },
+                    +[](const std::string& p) { image::loadExr(p); }})
+    REQUIRE_THROWS_WITH(load(path.string()),
+                        Catch::Matchers::ContainsSubstring("declares 60000 x 60000 pixels") &&
+                            Catch::Matchers::ContainsSubstring("more than the limit of 268435456"));
+  fs::remove(path);
 }

@@ -1,5 +1,6 @@
 // Camera bookmarks in the viewer's settings file (apps/viewer/bookmarks.h).
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 #include <filesystem>
 #include <fstream>
 
@@ -36,5 +37,40 @@ TEST_CASE("bookmarks: saved per scene, read back by a new store, removable", "[v
   // A damaged file does not stop the viewer: no bookmarks, a warning.
   std::ofstream(path) << "{ not json";
   CHECK(viewer::BookmarkStore(path).list("material-test").empty());
+  CHECK_FALSE(viewer::BookmarkStore(path).readProblem().empty());
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bookmarks: a damaged settings file is ignored with the field named", "[viewer]") {
+  const auto dir = std::filesystem::temp_directory_path() / "penumbra-bookmarks-damaged";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "viewer.json").string();
+  const std::string good =
+      R"({"name": "a", "camera": {"position": [0, 0, 1], "forward": [0, 0, -1], "up": [0, 1, 0], )"
+      R"("verticalFovDegrees": 40}})";
+  auto problemOf = [&](const std::string& text) {
+    std::ofstream(path, std::ios::trunc) << text;
+    viewer::BookmarkStore store(path);
+    if (!store.readProblem().empty()) CHECK(store.list("s").empty());  // all or nothing
+    return store.readProblem();
+  };
+  CHECK(problemOf(R"({"bookmarks": {"s": [)" + good + "]}}").empty());
+  CHECK(viewer::BookmarkStore(path).list("s").size() == 1);
+
+  using Catch::Matchers::ContainsSubstring;
+  CHECK_THAT(problemOf(R"({"bookmarks": {"s": [)" + good + R"(, {"name": 5}]}})"),
+             ContainsSubstring("bookmarks of 's' [1]: \"name\" is not a string (got a number)"));
+  std::string zeroForward = good;
+  zeroForward.replace(zeroForward.find("[0, 0, -1]"), 10, "[0, 0, 0]");
+  CHECK_THAT(problemOf(R"({"bookmarks": {"s": [)" + zeroForward + "]}}"),
+             ContainsSubstring("camera.forward: must be a non-zero direction"));
+  std::string hugeFov = good;
+  hugeFov.replace(hugeFov.find("40"), 2, "1e300");
+  CHECK_THAT(problemOf(R"({"bookmarks": {"s": [)" + hugeFov + "]}}"),
+             ContainsSubstring("\"verticalFovDegrees\" 1e+300 does not fit a float"));
+  CHECK_THAT(problemOf(R"({"bookmarks": [1]})"),
+             ContainsSubstring("\"bookmarks\" is not an object (got an array)"));
+  // Nesting is refused before the parser recurses into it.
+  CHECK_THAT(problemOf(std::string(100000, '[')), ContainsSubstring("JSON nests deeper than 16"));
   std::filesystem::remove_all(dir);
 }
