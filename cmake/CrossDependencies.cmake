@@ -1,6 +1,6 @@
 # Dependencies of the mingw-w64 cross build (cmake/toolchains/). Everything
 # the Windows binary needs is header-only except zlib, so:
-# - header-only libraries (glm, nlohmann-json, CLI11, fmt, stb, tinygltf, tinyexr, the
+# - header-only libraries (glm, nlohmann-json, CLI11, fmt, xxHash, stb, tinygltf, tinyexr, the
 #   Vulkan headers, DirectX-Headers) come from the build machine's Debian
 #   packages through include directories that hold ONLY those libraries
 #   (symlinks under the build tree). Adding /usr/include itself would put
@@ -41,6 +41,9 @@ penumbra_cross_headers(${_farm}/fmt fmt)
 add_library(fmt::fmt-header-only INTERFACE IMPORTED)
 set_target_properties(fmt::fmt-header-only PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${_farm}/fmt
                       INTERFACE_COMPILE_DEFINITIONS FMT_HEADER_ONLY=1)
+
+penumbra_cross_headers(${_farm}/xxhash xxhash.h)
+set(PENUMBRA_XXHASH_INCLUDE_DIR ${_farm}/xxhash)
 
 penumbra_cross_headers(${_farm}/stb stb)
 set(STB_INCLUDE_DIR ${_farm}/stb/stb)

@@ -2,8 +2,9 @@
 # The sanitizer build: every target of the suite under AddressSanitizer and
 # UndefinedBehaviorSanitizer (clang, any report fatal, leaks included) into
 # ./build-sanitize (CMakePresets.json "sanitize"), then its ctest: the
-# host-side test cases and each libFuzzer target for PENUMBRA_FUZZ_SECONDS
-# (60) from its committed corpus (tests/fuzz). README's test command runs it
+# host-side test cases, the GPU cases on lavapipe in one process, and each
+# libFuzzer target for PENUMBRA_FUZZ_SECONDS (60) from its committed corpus
+# (tests/fuzz). README's test command runs it
 # after the main suite; docs/security.md says what it covers and costs.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -31,7 +31,10 @@ BASE_PACKAGES=(
   glslang-tools glslang-dev spirv-tools
   libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-dev libstb-dev
-  libtinyexr-dev libfmt-dev libboost-dev
+  libtinyexr-dev libfmt-dev libboost-dev libxxhash-dev
+  # The render farm's tests start a real Slurm controller and node
+  # (tests/farm/slurm_cluster.sh), authenticated by munge.
+  slurm-wlm munge
   clang-format
   # The viewer: GLFW (its native-window header needs Xrandr's), Dear ImGui
   # (core library + backend sources), and a virtual X server for its tests.

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   add(&app::addCompareCommand);
   add(&app::addBenchCommand);
   add(&app::addStudyCommand);
+  add(&app::addMergeCommand);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -4,21 +4,26 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <tuple>
 
 #include "backend_factory.h"
 #include "commands.h"
 #include "image/image_io.h"
+#include "penumbra_commit.h"
 #include "progress.h"
 #include "render/denoiser.h"
 #include "render/effect_set.h"
 #include "render/image_size.h"
+#include "render/partial_render.h"
 #include "render/path_tracer.h"
 #include "render/render_job.h"
 #include "render/render_loop.h"
 #include "render/render_output.h"
+#include "render/sample_split.h"
 #include "scene/material_row.h"
+#include "scene/scene_hash.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 
@@ -62,6 +67,8 @@ struct RenderOptions {
   render::DenoiseMode denoise = render::DenoiseMode::Off;
   bool noFireflyClamp = false;
   std::string aov;
+  std::string samples;  // "A:B": a piece of a split render
+  uint32_t totalSpp = 0;
 };
 
 // The auxiliary outputs --aov can write as EXR layers.
@@ -214,6 +221,34 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     return 0;
   }
   const std::vector<std::string> aovs = parseAovs(o.aov, o.out);
+  // A piece of a split render: its range is checked against the whole
+  // render's before any device is made.
+  std::optional<render::SampleTree> splitTree;
+  std::optional<render::SampleRange> splitRange;
+  if (!o.samples.empty() || cmd.count("--total-spp") > 0) {
+    if (o.samples.empty() || cmd.count("--total-spp") == 0)
+      throw Error(
+          "--samples A:B and --total-spp N go together (samples A to B-1 of an N-sample "
+          "render)");
+    if (cmd.count("--spp") > 0 && o.spp != o.totalSpp)
+      throw Error(
+          fmt::format("--spp {} and --total-spp {}: a piece renders --samples of the "
+                      "--total-spp render; give --total-spp only",
+                      o.spp, o.totalSpp));
+    if (o.denoise != render::DenoiseMode::Off || !aovs.empty())
+      throw Error(
+          "--samples: a piece holds sums of samples only; --denoise and --aov apply to "
+          "whole images");
+    if (image::formatFromPath(o.out) != image::FileFormat::Exr)
+      throw Error(
+          fmt::format("--samples: the piece '{}' must be an .exr file (`penumbra merge` "
+                      "makes the final image)",
+                      o.out));
+    job.spp = o.totalSpp;
+    splitTree.emplace(o.totalSpp, job.sppPerFrame);
+    splitRange = render::parseSampleRange(o.samples, "--samples");
+    splitTree->checkRange(*splitRange, "--samples");
+  }
   if (o.denoise != render::DenoiseMode::Off && job.settings.integrator != render::Integrator::Path)
     throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
   image::checkWritable(o.out);
@@ -255,6 +290,38 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   denoise.fireflyClamp = !o.noFireflyClamp;
   if (o.denoise != render::DenoiseMode::Off)
     denoiser = std::make_unique<render::Denoiser>(*device, width, height);
+
+  if (splitTree) {
+    Progress progress(splitRange->count());
+    render::FrameStats stats;
+    render::PartialRender piece;
+    piece.sums = render::renderSampleRange(
+        tracer, settings, *splitTree, *splitRange, [&](uint32_t done) { progress.update(done); },
+        &stats);
+    progress.finish();
+    piece.identity = {scene::contentHash(scene),
+                      render::splitSettingsHash(settings, tracer.camera(), width, height,
+                                                job.sppPerFrame, job.allEffects),
+                      width,
+                      height,
+                      settings.seed,
+                      job.spp,
+                      job.sppPerFrame,
+                      PENUMBRA_COMMIT};
+    piece.sceneName = scene.name;
+    piece.toneMapping = job.toneMapping;
+    piece.range = *splitRange;
+    piece.device = fmt::format("{} ({})", adapter.name, device->backendName());
+    render::savePartialRender(o.out, piece);
+    fmt::print("GPU time: {:.3f} ms for samples {} of {}\n", stats.gpuSeconds * 1e3,
+               render::formatSampleRange(*splitRange), job.spp);
+    fmt::print("wrote {} (a piece: `penumbra merge` combines the pieces)\n", o.out);
+    if (o.validation && device->validationMessageCount() > 0) {
+      fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
+      return 1;
+    }
+    return 0;
+  }
 
   Progress progress(job.spp);
   const render::RenderLoopResult loop =
@@ -338,6 +405,11 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")
       ->check(CLI::Range(1u, 16u))
       ->capture_default_str();
+  cmd->add_option("--samples", o->samples,
+                  "Render samples A to B-1 of a --total-spp render into an .exr piece for "
+                  "`penumbra merge` (A and B multiples of --spp-per-frame, or B the total)");
+  cmd->add_option("--total-spp", o->totalSpp, "The whole render's samples per pixel (--samples)")
+      ->check(CLI::Range(1u, render::kMaxSamplesPerPixel));
   cmd->add_option("--out", o->out, "Output image: .exr (linear float) or .png (tone-mapped sRGB)")
       ->capture_default_str();
   cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
 
 #include "util/error.h"
 
@@ -106,7 +107,7 @@ void saveExr(const std::string& path, const Image& image) {
 }
 
 void saveExrLayers(const std::string& path, const Image& beauty,
-                   const std::vector<ExrLayer>& layers) {
+                   const std::vector<ExrLayer>& layers, const ExrAttributes& attributes) {
   struct Channel {
     std::string name;
     const Image* image;
@@ -148,6 +149,19 @@ void saveExrLayers(const std::string& path, const Image& beauty,
   header.pixel_types = pixelTypes.data();
   header.requested_pixel_types = pixelTypes.data();
   header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+  std::vector<EXRAttribute> custom(attributes.size());
+  for (size_t i = 0; i < attributes.size(); ++i) {
+    const auto& [name, text] = attributes[i];
+    if (name.empty() || name.size() >= sizeof(custom[i].name) || text.size() > (1u << 24))
+      throw Error(fmt::format("image '{}': attribute '{}' cannot be written", path, name));
+    std::snprintf(custom[i].name, sizeof(custom[i].name), "%s", name.c_str());
+    std::snprintf(custom[i].type, sizeof(custom[i].type), "string");
+    // tinyexr only reads the value while writing; it is not freed here.
+    custom[i].value = reinterpret_cast<unsigned char*>(const_cast<char*>(text.data()));
+    custom[i].size = int(text.size());
+  }
+  header.num_custom_attributes = int(custom.size());
+  header.custom_attributes = custom.empty() ? nullptr : custom.data();
   EXRImage exr;
   InitEXRImage(&exr);
   exr.num_channels = int(channels.size());
@@ -164,6 +178,12 @@ void saveExrLayers(const std::string& path, const Image& beauty,
     }
     return true;
   });
+}
+
+const std::string* ExrChannels::attribute(const std::string& name) const {
+  for (const auto& [n, text] : attributes)
+    if (n == name) return &text;
+  return nullptr;
 }
 
 const std::vector<float>* ExrChannels::find(const std::string& name) const {
@@ -220,6 +240,13 @@ ExrChannels loadExrChannels(const std::string& path) {
     fail("unreadable pixels");
   }
   ExrChannels result;
+  for (int a = 0; a < header.num_custom_attributes; ++a) {
+    const EXRAttribute& attribute = header.custom_attributes[a];
+    if (std::string_view(attribute.type) == "string" && attribute.size >= 0)
+      result.attributes.emplace_back(
+          attribute.name,
+          std::string(reinterpret_cast<const char*>(attribute.value), size_t(attribute.size)));
+  }
   result.width = uint32_t(exr.width);
   result.height = uint32_t(exr.height);
   const size_t pixels = size_t(exr.width) * exr.height;

@@ -29,9 +29,10 @@ Image loadExr(const std::string& path);
 // What loadExr and loadExrChannels decode at most, checked on the header
 // before anything is allocated: tinyexr allocates what the data window
 // declares whatever the file holds, so a 300-byte file could ask for
-// gigabytes. 16384 x 16384 pixels (the largest render) of 64 channels.
+// gigabytes. 16384 x 16384 pixels (the largest render); 128 channels (a
+// partial render's tree sums, render/partial_render.h, need up to 100).
 inline constexpr uint64_t kMaxExrPixels = uint64_t(16384) * 16384;
-inline constexpr int kMaxExrChannels = 64;
+inline constexpr int kMaxExrChannels = 128;
 // The width and height an EXR file's header declares (its data window),
 // read without decoding, for callers with a tighter bound (environment
 // maps). penumbra::Error if unreadable.
@@ -47,14 +48,19 @@ struct ExrLayer {
 // The beauty image as R, G, B, A (what plain EXR readers show) plus the
 // layers' channels, all 32-bit float, ZIP compressed, channels sorted by name
 // as OpenEXR requires. Atomic like saveExr.
+// `attributes`: string attributes written into the header (name, text),
+// which loadExrChannels returns; other readers ignore them.
+using ExrAttributes = std::vector<std::pair<std::string, std::string>>;
 void saveExrLayers(const std::string& path, const Image& beauty,
-                   const std::vector<ExrLayer>& layers);
+                   const std::vector<ExrLayer>& layers, const ExrAttributes& attributes = {});
 // Every channel of an EXR file by its full name, as float rows (top row
 // first), with the image size.
 struct ExrChannels {
   uint32_t width = 0, height = 0;
   std::vector<std::pair<std::string, std::vector<float>>> channels;
+  ExrAttributes attributes;  // the header's string attributes beyond the standard ones
   const std::vector<float>* find(const std::string& name) const;
+  const std::string* attribute(const std::string& name) const;
 };
 ExrChannels loadExrChannels(const std::string& path);
 // 8-bit sRGB-encoded RGBA as PNG.

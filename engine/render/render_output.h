@@ -16,5 +16,9 @@ namespace penumbra::render {
 // `image`: the tracer's accumulation or a denoiser's output, on the tracer's device.
 void saveRender(PathTracer& tracer, const rhi::TextureHandle& image, const std::string& path,
                 const ToneMapping& toneMapping, const std::vector<image::ExrLayer>& layers = {});
+// The same for an image on the host (a merged split render): a PNG is
+// tone-mapped by the same pass on `device`, which an EXR does not need.
+void saveRender(rhi::IDevice* device, const image::Image& image, const std::string& path,
+                const ToneMapping& toneMapping);
 
 }  // namespace penumbra::render

@@ -1,0 +1,255 @@
+#include "render/partial_render.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "image/image_io.h"
+#include "scene/json_reading.h"
+#include "util/content_hash.h"
+#include "util/error.h"
+
+namespace penumbra::render {
+namespace {
+
+constexpr const char* kAttribute = "penumbra.partial";
+constexpr const char* kFormat = "penumbra-partial";
+constexpr int kVersion = 1;
+
+std::string layerName(SampleTree::Node node) {
+  return fmt::format("sum.L{}.I{}", node.level, node.index);
+}
+
+std::string sumsHash(const NodeSums& sums) {
+  ContentHash h;
+  for (size_t k = 0; k < sums.nodes.size(); ++k) {
+    h.value(sums.nodes[k].level);
+    h.value(sums.nodes[k].index);
+    h.array(sums.sums[k].rgba);
+  }
+  return h.hex();
+}
+
+uint32_t readCount(const nlohmann::json& doc, const char* key, uint32_t lo, uint32_t hi,
+                   const std::string& where) {
+  return uint32_t(scene::toInteger(scene::require(doc, key, where), where, key, lo, hi));
+}
+
+}  // namespace
+
+std::string splitSettingsHash(const PathTracerSettings& s, const scene::Camera& camera,
+                              uint32_t width, uint32_t height, uint32_t blockSpp, bool allEffects) {
+#if defined(__x86_64__) && defined(__GLIBCXX__)
+  static_assert(sizeof(PathTracerSettings) == 40,
+                "a PathTracerSettings field is not hashed (partial_render.cpp)");
+#endif
+  ContentHash h;
+  h.value(s.integrator);
+  h.value(s.strategy);
+  h.value(s.misHeuristic);
+  h.value(s.sampler);
+  h.value(s.maxDepth);
+  h.value(s.rouletteStartDepth);
+  h.value(s.russianRoulette);
+  h.value(s.radianceClamp);
+  h.value(s.seed);
+  // The pipeline variant that writes guides rounds differently on some
+  // compilers (docs/results.md): part of what decides the image.
+  h.value(s.writeGuides);
+  h.value(camera.position);
+  h.value(camera.forward);
+  h.value(camera.up);
+  for (float v :
+       {camera.verticalFovDegrees, camera.aspectRatio, camera.apertureRadius, camera.focusDistance})
+    h.value(v);
+  h.value(camera.apertureBlades);
+  h.value(width);
+  h.value(height);
+  h.value(blockSpp);
+  h.value(allEffects);
+  return h.hex();
+}
+
+void savePartialRender(const std::string& path, const PartialRender& piece) {
+  if (image::formatFromPath(path) != image::FileFormat::Exr)
+    throw Error(fmt::format("output '{}': a piece of a split render is an .exr file", path));
+  const SampleTree tree(piece.identity.totalSpp, piece.identity.blockSpp);
+  const auto& id = piece.identity;
+  nlohmann::json doc;
+  doc["format"] = kFormat;
+  doc["version"] = kVersion;
+  doc["scene"] = piece.sceneName;
+  doc["sceneHash"] = id.sceneHash;
+  doc["settingsHash"] = id.settingsHash;
+  doc["width"] = id.width;
+  doc["height"] = id.height;
+  doc["seed"] = id.seed;
+  doc["totalSpp"] = id.totalSpp;
+  doc["blockSpp"] = id.blockSpp;
+  doc["build"] = id.build;
+  doc["exposure"] = piece.toneMapping.exposure;
+  doc["toneMapping"] = toneMapOperatorName(piece.toneMapping.toneOperator);
+  doc["samples"] = {piece.range.begin, piece.range.end};
+  doc["device"] = piece.device;
+  doc["nodes"] = nlohmann::json::array();
+  for (const auto& node : piece.sums.nodes) doc["nodes"].push_back({node.level, node.index});
+  doc["sumsHash"] = sumsHash(piece.sums);
+
+  std::vector<image::ExrLayer> layers;
+  for (size_t k = 0; k < piece.sums.nodes.size(); ++k)
+    layers.push_back({layerName(piece.sums.nodes[k]), {"R", "G", "B"}, piece.sums.sums[k]});
+  std::vector<const NodeSums*> self{&piece.sums};
+  uint64_t samples = 0;
+  const image::Image sum = combineNodes(tree, self, tree.root(), samples);
+  saveExrLayers(path, meanOf(sum, samples), layers, {{kAttribute, doc.dump()}});
+}
+
+PartialRender loadPartialRender(const std::string& path) {
+  const image::ExrChannels exr = image::loadExrChannels(path);
+  const std::string where = fmt::format("piece '{}'", path);
+  const std::string* text = exr.attribute(kAttribute);
+  if (!text)
+    throw Error(
+        fmt::format("{}: not a piece of a split render (no '{}' attribute; made by "
+                    "`penumbra render --samples A:B --total-spp N`)",
+                    where, kAttribute));
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(*text);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(fmt::format("{}: its description is not JSON ({})", where, e.what()));
+  }
+  if (scene::requireString(doc, "format", where) != kFormat ||
+      scene::toInteger(scene::require(doc, "version", where), where, "version", 0, 1 << 30) !=
+          kVersion)
+    throw Error(fmt::format("{}: not a {} version {} description", where, kFormat, kVersion));
+
+  PartialRender piece;
+  auto& id = piece.identity;
+  piece.sceneName = scene::requireString(doc, "scene", where);
+  id.sceneHash = scene::requireString(doc, "sceneHash", where);
+  id.settingsHash = scene::requireString(doc, "settingsHash", where);
+  id.width = readCount(doc, "width", 1, 16384, where);
+  id.height = readCount(doc, "height", 1, 16384, where);
+  id.seed = readCount(doc, "seed", 0, UINT32_MAX, where);
+  id.totalSpp = readCount(doc, "totalSpp", 1, kMaxSamplesPerPixel, where);
+  id.blockSpp = readCount(doc, "blockSpp", 1, PathTracer::kMaxSamplesPerFrame, where);
+  id.build = scene::requireString(doc, "build", where);
+  piece.toneMapping.exposure = scene::requireFloat(doc, "exposure", where);
+  const std::string op = scene::requireString(doc, "toneMapping", where);
+  const auto parsed = parseToneMapOperator(op);
+  if (!parsed) throw Error(fmt::format("{}: unknown \"toneMapping\" '{}'", where, op));
+  piece.toneMapping.toneOperator = *parsed;
+  piece.device = scene::requireString(doc, "device", where);
+  const nlohmann::json& samples = scene::require(doc, "samples", where);
+  if (!samples.is_array() || samples.size() != 2)
+    throw Error(fmt::format("{}: \"samples\" is not [first, end]", where));
+  piece.range = {uint32_t(scene::toInteger(samples[0], where, "samples", 0, id.totalSpp)),
+                 uint32_t(scene::toInteger(samples[1], where, "samples", 0, id.totalSpp))};
+
+  if (exr.width != id.width || exr.height != id.height)
+    throw Error(fmt::format("{}: the image is {}x{}, its description says {}x{}", where, exr.width,
+                            exr.height, id.width, id.height));
+  const SampleTree tree(id.totalSpp, id.blockSpp);
+  tree.checkRange(piece.range, where.c_str());
+  const auto expected = tree.cover(piece.range);
+  const nlohmann::json& nodes = scene::require(doc, "nodes", where);
+  if (!nodes.is_array() || nodes.size() != expected.size())
+    throw Error(fmt::format("{}: \"nodes\" do not cover samples {}", where,
+                            formatSampleRange(piece.range)));
+  const size_t pixels = size_t(id.width) * id.height;
+  for (size_t k = 0; k < expected.size(); ++k) {
+    const nlohmann::json& n = nodes[k];
+    if (!n.is_array() || n.size() != 2 ||
+        SampleTree::Node{uint32_t(scene::toInteger(n[0], where, "nodes", 0, 31)),
+                         uint32_t(scene::toInteger(n[1], where, "nodes", 0, UINT32_MAX))} !=
+            expected[k])
+      throw Error(fmt::format("{}: \"nodes\" do not cover samples {}", where,
+                              formatSampleRange(piece.range)));
+    image::Image sum(id.width, id.height);
+    for (size_t c = 0; c < 3; ++c) {
+      const std::string channel = layerName(expected[k]) + "." + "RGB"[c];
+      const std::vector<float>* values = exr.find(channel);
+      if (!values || values->size() != pixels)
+        throw Error(fmt::format("{}: channel '{}' is missing", where, channel));
+      for (size_t i = 0; i < pixels; ++i) sum.rgba[i * 4 + c] = (*values)[i];
+    }
+    piece.sums.nodes.push_back(expected[k]);
+    piece.sums.sums.push_back(std::move(sum));
+  }
+  if (sumsHash(piece.sums) != scene::requireString(doc, "sumsHash", where))
+    throw Error(
+        fmt::format("{}: its sums do not match the hash written with them (the file "
+                    "was changed or damaged after it was rendered)",
+                    where));
+  return piece;
+}
+
+namespace {
+
+// The first field in which two identities differ, as "<field> <a> vs <b>".
+std::string difference(const SplitRenderIdentity& a, const SplitRenderIdentity& b) {
+  if (a.sceneHash != b.sceneHash)
+    return fmt::format("scene content {} vs {}", a.sceneHash, b.sceneHash);
+  if (a.width != b.width || a.height != b.height)
+    return fmt::format("size {}x{} vs {}x{}", a.width, a.height, b.width, b.height);
+  if (a.seed != b.seed) return fmt::format("seed {} vs {}", a.seed, b.seed);
+  if (a.totalSpp != b.totalSpp)
+    return fmt::format("total samples {} vs {}", a.totalSpp, b.totalSpp);
+  if (a.blockSpp != b.blockSpp)
+    return fmt::format("samples per frame {} vs {}", a.blockSpp, b.blockSpp);
+  if (a.settingsHash != b.settingsHash)
+    return fmt::format("render settings {} vs {}", a.settingsHash, b.settingsHash);
+  if (a.build != b.build) return fmt::format("build {} vs {}", a.build, b.build);
+  return "";
+}
+
+}  // namespace
+
+MergedRender mergePartialRenders(const std::vector<PartialRender>& pieces,
+                                 const std::vector<std::string>& names, bool allowPartial) {
+  if (pieces.empty()) throw Error("merge: no pieces given");
+  const SplitRenderIdentity& id = pieces[0].identity;
+  for (size_t k = 1; k < pieces.size(); ++k)
+    if (const std::string d = difference(id, pieces[k].identity); !d.empty())
+      throw Error(fmt::format("merge: '{}' and '{}' are pieces of different renders ({})", names[0],
+                              names[k], d));
+  std::vector<size_t> order(pieces.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return pieces[a].range.begin < pieces[b].range.begin; });
+  MergedRender merged;
+  uint32_t next = 0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const SampleRange& r = pieces[order[k]].range;
+    if (k > 0 && r.begin < pieces[order[k - 1]].range.end)
+      throw Error(fmt::format("merge: '{}' (samples {}) and '{}' (samples {}) overlap",
+                              names[order[k - 1]], formatSampleRange(pieces[order[k - 1]].range),
+                              names[order[k]], formatSampleRange(r)));
+    if (r.begin > next) merged.missing.push_back({next, r.begin});
+    next = r.end;
+  }
+  if (next < id.totalSpp) merged.missing.push_back({next, id.totalSpp});
+  if (!merged.missing.empty() && !allowPartial) {
+    std::string list;
+    for (const auto& m : merged.missing) list += (list.empty() ? "" : ", ") + formatSampleRange(m);
+    throw Error(
+        fmt::format("merge: samples {} of 0:{} are missing (no piece holds them; "
+                    "--allow-partial merges what is there)",
+                    list, id.totalSpp));
+  }
+  const SampleTree tree(id.totalSpp, id.blockSpp);
+  std::vector<const NodeSums*> sums;
+  for (const auto& piece : pieces) {
+    sums.push_back(&piece.sums);
+    if (std::find(merged.devices.begin(), merged.devices.end(), piece.device) ==
+        merged.devices.end())
+      merged.devices.push_back(piece.device);
+  }
+  const image::Image sum = combineNodes(tree, sums, tree.root(), merged.samples);
+  merged.image = meanOf(sum, merged.samples);
+  return merged;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,256 @@
+// Sample-split renders (render/sample_split.h, render/partial_render.h): the
+// block tree's covers, the merge's bit-identity for any split, the piece
+// file and the merge's refusals. Host-side; the GPU half (pieces rendered on
+// lavapipe merge to the single render) is tests/apps/cli_merge.sh.
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "image/image_io.h"
+#include "render/partial_render.h"
+#include "render/sample_split.h"
+#include "util/error.h"
+
+using namespace penumbra;
+using Catch::Matchers::ContainsSubstring;
+using render::SampleRange;
+using render::SampleTree;
+
+namespace {
+
+// Every block-aligned range of small trees: its cover's nodes are
+// contiguous, exactly the range, each one as large as it can be (its
+// parent would not fit in the range), at most two per level.
+void checkCovers(uint32_t total, uint32_t block) {
+  const SampleTree tree(total, block);
+  std::vector<uint32_t> bounds;
+  for (uint32_t s = 0; s < total; s += block) bounds.push_back(s);
+  bounds.push_back(total);
+  for (size_t a = 0; a < bounds.size(); ++a)
+    for (size_t b = a + 1; b < bounds.size(); ++b) {
+      const SampleRange range{bounds[a], bounds[b]};
+      const auto nodes = tree.cover(range);
+      uint32_t at = range.begin;
+      std::vector<int> perLevel(32, 0);
+      for (const auto& node : nodes) {
+        REQUIRE(tree.exists(node));
+        const SampleRange covered = tree.samples(node);
+        REQUIRE(covered.begin == at);
+        at = covered.end;
+        ++perLevel[node.level];
+        // Maximal: the parent covers samples outside the range.
+        const SampleTree::Node parent{node.level + 1, node.index / 2};
+        if (node.level < tree.root().level) {
+          const SampleRange p = tree.samples(parent);
+          CHECK((p.begin < range.begin || p.end > range.end || p == covered));
+        }
+      }
+      REQUIRE(at == range.end);
+      for (int count : perLevel) CHECK(count <= 2);
+    }
+}
+
+// Synthetic block sums: the tree's arithmetic without a GPU. Leaves hold
+// values of very different magnitudes (fireflies among dim pixels), where
+// float addition order shows.
+render::NodeSums sumsFor(const SampleTree& tree, const SampleRange& range) {
+  std::function<image::Image(SampleTree::Node)> value = [&](SampleTree::Node node) {
+    if (node.level == 0) {
+      image::Image leaf(5, 3);
+      std::mt19937 rng(node.index * 7919u + 13u);
+      std::uniform_real_distribution<float> u(0.0f, 1.0f);
+      for (size_t i = 0; i < leaf.rgba.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) {
+          const float x = u(rng);
+          leaf.rgba[i + c] = x < 0.05f ? x * 2e5f : x * 1e-3f;
+        }
+      return leaf;
+    }
+    image::Image sum = value({node.level - 1, node.index * 2});
+    const SampleTree::Node right{node.level - 1, node.index * 2 + 1};
+    if (tree.exists(right)) {
+      const image::Image r = value(right);
+      for (size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += r.rgba[i];
+    }
+    return sum;
+  };
+  render::NodeSums sums;
+  sums.nodes = tree.cover(range);
+  for (const auto& node : sums.nodes) sums.sums.push_back(value(node));
+  return sums;
+}
+
+render::PartialRender piece(const SampleTree& tree, const SampleRange& range, uint32_t seed = 1) {
+  render::PartialRender p;
+  p.identity = {"scenehash", "settingshash", 5, 3, seed, tree.totalSpp(), tree.blockSpp(), "test"};
+  p.sceneName = "test";
+  p.range = range;
+  p.device = "test device";
+  p.sums = sumsFor(tree, range);
+  return p;
+}
+
+std::string scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "penumbra-sample-split";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+}  // namespace
+
+TEST_CASE("sample split: covers are exact, maximal and at most two nodes a level", "[split]") {
+  for (uint32_t total : {1u, 2u, 5u, 16u, 17u, 64u, 100u, 127u, 128u, 129u})
+    for (uint32_t block : {1u, 3u, 16u}) checkCovers(total, block);
+  const SampleTree tree(64, 16);
+  CHECK(tree.blockCount() == 4);
+  CHECK(tree.cover({0, 64}) == std::vector<SampleTree::Node>{tree.root()});
+  CHECK(tree.cover({16, 64}) == std::vector<SampleTree::Node>{{0, 1}, {1, 1}});
+  // The last block may be short: 100 samples are 6 blocks of 16 and one of 4.
+  const SampleTree ragged(100, 16);
+  CHECK(ragged.blockCount() == 7);
+  CHECK(ragged.samples({0, 6}) == SampleRange{96, 100});
+  CHECK(ragged.cover({64, 100}) == std::vector<SampleTree::Node>{{2, 1}});
+}
+
+TEST_CASE("sample split: ranges off block boundaries or past the total are refused", "[split]") {
+  const SampleTree tree(100, 16);
+  CHECK_THROWS_WITH(tree.checkRange({8, 32}, "--samples"),
+                    ContainsSubstring("multiples of the samples per frame (16)"));
+  CHECK_THROWS_WITH(tree.checkRange({0, 101}, "--samples"), ContainsSubstring("within 0:100"));
+  CHECK_NOTHROW(tree.checkRange({96, 100}, "--samples"));
+  CHECK_THROWS_WITH(render::parseSampleRange("16:8", "--samples"),
+                    ContainsSubstring("FIRST < END"));
+  CHECK_THROWS_WITH(render::parseSampleRange("a:8", "--samples"), ContainsSubstring("'a:8'"));
+  CHECK(render::parseSampleRange("16:48", "--samples") == SampleRange{16, 48});
+  CHECK_THROWS_AS(SampleTree(64, 17), Error);
+}
+
+TEST_CASE("sample split: shards cover the render in near-equal whole blocks", "[split]") {
+  for (uint32_t total : {64u, 100u, 1000u})
+    for (uint32_t k : {1u, 2u, 3u, 7u, 200u}) {
+      const SampleTree tree(total, 16);
+      const auto ranges = tree.split(k);
+      REQUIRE(ranges.size() == std::min(k, tree.blockCount()));
+      uint32_t at = 0;
+      for (const auto& r : ranges) {
+        CHECK(r.begin == at);
+        CHECK_NOTHROW(tree.checkRange(r, "shard"));
+        at = r.end;
+      }
+      CHECK(at == total);
+    }
+}
+
+// The claim the farm rests on: however the render is split and in whatever
+// order the pieces come, the merge adds the same floats in the same order
+// as the render of all samples at once.
+TEST_CASE("sample split: any split, in any order, merges to the single render's bits", "[split]") {
+  const SampleTree tree(200, 16);  // 13 blocks, the last of 8 samples
+  const render::PartialRender whole = piece(tree, {0, 200});
+  const render::MergedRender single = render::mergePartialRenders({whole}, {"whole"}, false);
+  CHECK(single.samples == 200);
+  std::mt19937 rng(2024);
+  for (uint32_t k : {1u, 2u, 3u, 7u}) {
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<SampleRange> ranges = tree.split(k);
+      if (trial > 0) {  // random block-aligned cut points too
+        std::vector<uint32_t> cuts;
+        for (uint32_t b = 1; b < tree.blockCount(); ++b) cuts.push_back(b * 16);
+        std::shuffle(cuts.begin(), cuts.end(), rng);
+        cuts.resize(k - 1);
+        cuts.push_back(0);
+        cuts.push_back(200);
+        std::sort(cuts.begin(), cuts.end());
+        ranges.clear();
+        for (size_t i = 0; i + 1 < cuts.size(); ++i) ranges.push_back({cuts[i], cuts[i + 1]});
+      }
+      std::vector<render::PartialRender> pieces;
+      std::vector<std::string> names;
+      for (const auto& r : ranges) {
+        pieces.push_back(piece(tree, r));
+        names.push_back(render::formatSampleRange(r));
+      }
+      std::shuffle(pieces.begin(), pieces.end(), rng);
+      const auto merged = render::mergePartialRenders(pieces, names, false);
+      REQUIRE(merged.samples == 200);
+      REQUIRE(merged.image.rgba == single.image.rgba);
+    }
+  }
+  // The order matters in float: a plain running sum of the same leaves gives
+  // other bits, so the equality above is not one any order would pass.
+  image::Image sequential(5, 3);
+  for (uint32_t b = 0; b < tree.blockCount(); ++b) {
+    const SampleTree::Node leaf{0, b};
+    const render::NodeSums s = sumsFor(tree, tree.samples(leaf));
+    for (size_t i = 0; i < sequential.rgba.size(); ++i) sequential.rgba[i] += s.sums[0].rgba[i];
+  }
+  CHECK(render::meanOf(sequential, 200).rgba != single.image.rgba);
+}
+
+TEST_CASE("sample split: a piece file round-trips bit for bit", "[split]") {
+  const SampleTree tree(100, 16);
+  const render::PartialRender p = piece(tree, {32, 100});
+  const std::string path = scratch("round-trip.exr");
+  render::savePartialRender(path, p);
+  const render::PartialRender back = render::loadPartialRender(path);
+  CHECK(back.identity == p.identity);
+  CHECK(back.range == p.range);
+  CHECK(back.device == p.device);
+  REQUIRE(back.sums.nodes == p.sums.nodes);
+  for (size_t k = 0; k < p.sums.sums.size(); ++k)
+    CHECK(back.sums.sums[k].rgba == p.sums.sums[k].rgba);
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("sample split: merge refuses other renders, overlaps, gaps and damaged pieces",
+          "[split]") {
+  const SampleTree tree(64, 16);
+  const auto a = piece(tree, {0, 32}), b = piece(tree, {32, 64});
+  CHECK_THROWS_WITH(render::mergePartialRenders({a, piece(tree, {32, 64}, 2)}, {"a", "b"}, false),
+                    ContainsSubstring("'a' and 'b' are pieces of different renders (seed 1 vs 2)"));
+  auto otherScene = b;
+  otherScene.identity.sceneHash = "another";
+  CHECK_THROWS_WITH(render::mergePartialRenders({a, otherScene}, {"a", "b"}, false),
+                    ContainsSubstring("scene content scenehash vs another"));
+  CHECK_THROWS_WITH(render::mergePartialRenders({a, a}, {"a", "a2"}, false),
+                    ContainsSubstring("'a' (samples 0:32) and 'a2' (samples 0:32) overlap"));
+  CHECK_THROWS_WITH(render::mergePartialRenders({a, piece(tree, {16, 64})}, {"a", "c"}, false),
+                    ContainsSubstring("overlap"));
+  const auto d = piece(tree, {48, 64});
+  CHECK_THROWS_WITH(render::mergePartialRenders({d}, {"d"}, false),
+                    ContainsSubstring("samples 0:48 of 0:64 are missing"));
+  const auto partial = render::mergePartialRenders({d, piece(tree, {0, 16})}, {"d", "e"}, true);
+  CHECK(partial.samples == 32);
+  CHECK(partial.missing == std::vector<SampleRange>{{16, 48}});
+
+  // Files: not a piece, truncated, changed after writing.
+  const std::string path = scratch("damaged.exr");
+  render::savePartialRender(path, a);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    bytes = buffer.str();
+  }
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+  CHECK_THROWS_WITH(render::loadPartialRender(path), ContainsSubstring(path));
+  // A changed sum that still decodes: found by the sums' hash. (The
+  // description is edited to say other sums were written.)
+  std::string edited = bytes;
+  const size_t at = edited.find("\"sumsHash\":\"");
+  REQUIRE(at != std::string::npos);
+  edited[at + 12] = edited[at + 12] == '0' ? '1' : '0';
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << edited;
+  CHECK_THROWS_WITH(render::loadPartialRender(path),
+                    ContainsSubstring("do not match the hash written with them"));
+  image::Image plain(5, 3);
+  image::saveExr(path, plain);
+  CHECK_THROWS_WITH(render::loadPartialRender(path),
+                    ContainsSubstring("not a piece of a split render"));
+  std::filesystem::remove(path);
+}
