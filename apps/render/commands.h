@@ -16,6 +16,7 @@ Command addCompareCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addStudyCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
+Command addFarmCommand(CLI::App& app);
 // "512x512" -> (512, 512); penumbra::Error with the flag's name otherwise.
 std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text);
 

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   add(&app::addBenchCommand);
   add(&app::addStudyCommand);
   add(&app::addMergeCommand);
+  add(&app::addFarmCommand);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

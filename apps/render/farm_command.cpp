@@ -1,0 +1,316 @@
+// `penumbra farm`: a split render on a Slurm cluster (farm_plan.h says what
+// is submitted). `submit` validates the render, writes the plan and scripts
+// and calls sbatch; run again with the same options it resumes, submitting
+// only the shards that are missing. `status` shows what is done, queued and
+// missing.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "farm_plan.h"
+#include "render/render_job.h"
+#include "util/error.h"
+
+namespace penumbra::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FarmOptions {
+  std::string scene, settings, size, backend;
+  std::optional<uint32_t> seed;
+  uint32_t spp = 64, sppPerFrame = 16, shards = 0;
+  std::string out, work;
+  SlurmOptions slurm;
+  bool dryRun = false;
+  std::vector<std::string> renderOptions;  // after `--`
+};
+
+// Runs a command line (argv quoted for the shell), returning its exit status
+// and its output, stderr included.
+int runCommand(const std::vector<std::string>& argv, std::string& output) {
+#ifdef _WIN32
+  (void)argv;
+  (void)output;
+  throw Error("farm: Slurm clusters run Linux; `penumbra farm` is not available on Windows");
+#else
+  std::string line;
+  for (const auto& a : argv) {
+    if (!line.empty()) line += ' ';
+    line += shellQuote(a);
+  }
+  line += " 2>&1";
+  FILE* pipe = ::popen(line.c_str(), "r");
+  if (!pipe) throw Error(fmt::format("farm: cannot run '{}'", argv[0]));
+  output.clear();
+  char buffer[4096];
+  size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
+  const int status = ::pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+#endif
+}
+
+std::string lastLine(const std::string& text) {
+  std::string t = text;
+  while (!t.empty() && (t.back() == '\n' || t.back() == '\r')) t.pop_back();
+  const size_t nl = t.rfind('\n');
+  return nl == std::string::npos ? t : t.substr(nl + 1);
+}
+
+std::string selfPath() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw Error("farm: cannot find the penumbra binary's own path (/proc/self/exe)");
+  return self.string();
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out.good()) throw Error(fmt::format("farm: cannot write '{}'", path));
+  }
+  fs::rename(tmp, path);
+}
+
+// sbatch --parsable prints "ID" or "ID;cluster".
+std::string sbatch(const std::vector<std::string>& options, const std::string& script) {
+  std::vector<std::string> argv{"sbatch", "--parsable"};
+  argv.insert(argv.end(), options.begin(), options.end());
+  argv.push_back(script);
+  std::string output;
+  if (runCommand(argv, output) != 0)
+    throw Error(fmt::format("farm: sbatch {} failed: {}", script, lastLine(output)));
+  const std::string id = lastLine(output).substr(0, lastLine(output).find(';'));
+  if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
+    throw Error(fmt::format("farm: sbatch printed no job id ({})", lastLine(output)));
+  return id;
+}
+
+// The states of a job's tasks still in the queue: "123_4" -> "RUNNING".
+std::map<std::string, std::string> queued(const std::vector<std::string>& jobs) {
+  std::map<std::string, std::string> states;
+  if (jobs.empty()) return states;
+  std::string list;
+  for (const auto& j : jobs) {
+    if (!list.empty()) list += ',';
+    list += j;
+  }
+  std::string output;
+  // A job that left the queue long ago makes squeue fail ("Invalid job id"):
+  // then there is nothing queued of it.
+  if (runCommand({"squeue", "-h", "-r", "-j", list, "-o", "%i %T"}, output) != 0) return states;
+  std::istringstream lines(output);
+  std::string id, state;
+  while (lines >> id >> state) states[id] = state;
+  return states;
+}
+
+std::vector<std::string> recordedJobs(const std::string& work) {
+  std::vector<std::string> jobs;
+  std::istringstream in(readText(work + "/jobs.txt"));
+  std::string kind, id;
+  while (in >> kind >> id) jobs.push_back(id);
+  return jobs;
+}
+
+FarmPlan planFor(const FarmOptions& o) {
+  if (o.shards < 1) throw Error("farm: --shards must be at least 1");
+  FarmPlan plan;
+  plan.penumbra = selfPath();
+  plan.totalSpp = o.spp;
+  plan.blockSpp = o.sppPerFrame;
+  const render::SampleTree tree(o.spp, o.sppPerFrame);
+  plan.shards = tree.split(o.shards);
+  plan.out = fs::absolute(o.out).lexically_normal().string();
+  plan.work = fs::absolute(o.work.empty() ? o.out + ".farm" : o.work).lexically_normal().string();
+  plan.slurm = o.slurm;
+  if (!o.scene.empty()) plan.renderArgs.insert(plan.renderArgs.end(), {"--scene", o.scene});
+  if (!o.settings.empty())
+    plan.renderArgs.insert(plan.renderArgs.end(),
+                           {"--settings", fs::absolute(o.settings).string()});
+  if (!o.size.empty()) plan.renderArgs.insert(plan.renderArgs.end(), {"--size", o.size});
+  if (o.seed) plan.renderArgs.insert(plan.renderArgs.end(), {"--seed", std::to_string(*o.seed)});
+  if (!o.backend.empty()) plan.renderArgs.insert(plan.renderArgs.end(), {"--backend", o.backend});
+  for (const auto& option : o.renderOptions)
+    for (const char* owned : {"--samples", "--total-spp", "--out", "--spp", "--spp-per-frame"})
+      if (option == owned || option.rfind(std::string(owned) + "=", 0) == 0)
+        throw Error(
+            fmt::format("farm: {} is the farm's to set (give --spp, --spp-per-frame and "
+                        "--out to `farm submit`)",
+                        owned));
+  plan.renderArgs.insert(plan.renderArgs.end(), o.renderOptions.begin(), o.renderOptions.end());
+  return plan;
+}
+
+int runSubmit(const FarmOptions& o) {
+  const FarmPlan plan = planFor(o);
+  // Everything a shard would refuse is refused here, before anything is
+  // queued: the options and the scene (loaded, then nothing rendered).
+  std::vector<std::string> check{plan.penumbra, "render"};
+  check.insert(check.end(), plan.renderArgs.begin(), plan.renderArgs.end());
+  check.insert(check.end(), {"--spp", std::to_string(plan.totalSpp), "--spp-per-frame",
+                             std::to_string(plan.blockSpp), "--print-effects"});
+  std::string output;
+  if (runCommand(check, output) != 0)
+    throw Error(fmt::format("farm: the shards' render would fail: {}", lastLine(output)));
+  if (o.shards > plan.shards.size())
+    fmt::print("note: {} samples in frames of {} split into {} shards, not {}\n", plan.totalSpp,
+               plan.blockSpp, plan.shards.size(), o.shards);
+
+  const std::string planPath = plan.work + "/plan.json";
+  std::vector<size_t> missing;
+  std::vector<std::string> problems;
+  if (fs::exists(planPath)) {
+    const FarmPlan previous = planFromJson(readText(planPath), planPath);
+    if (!previous.sameRender(plan))
+      throw Error(
+          fmt::format("farm: '{}' holds the plan of another render (other options, "
+                      "samples, shards or output); use another --work or remove it",
+                      plan.work));
+    const auto stillQueued = queued(recordedJobs(plan.work));
+    if (!stillQueued.empty())
+      throw Error(
+          fmt::format("farm: {} task(s) of this render are still queued (e.g. job {} "
+                      "{}); wait for them or scancel them, then submit again",
+                      stillQueued.size(), stillQueued.begin()->first, stillQueued.begin()->second));
+    missing = missingShards(plan, &problems);
+    for (const auto& p : problems) fmt::print("refused, rendered again: {}\n", p);
+    fmt::print("resuming: {} of {} shards present\n", plan.shards.size() - missing.size(),
+               plan.shards.size());
+  } else {
+    for (size_t k = 0; k < plan.shards.size(); ++k) missing.push_back(k);
+  }
+
+  const std::string shards = plan.work + "/shards.sbatch", merge = plan.work + "/merge.sbatch";
+  std::vector<std::string> arrayOptions;
+  if (!missing.empty()) arrayOptions.push_back("--array=" + arraySpec(missing));
+  if (o.dryRun) {
+    fmt::print("# {}\n{}\n# {}\n{}\n", shards, shardScript(plan), merge, mergeScript(plan));
+    if (!missing.empty())
+      fmt::print("would run: sbatch --parsable {} {}\n", arrayOptions[0], shards);
+    fmt::print("would run: sbatch --parsable{} {}\n",
+               missing.empty() ? "" : " --dependency=afterok:<shards> --kill-on-invalid-dep=yes",
+               merge);
+    return 0;
+  }
+  fs::create_directories(plan.work + "/shards");
+  fs::create_directories(plan.work + "/logs");
+  writeText(planPath, planToJson(plan));
+  writeText(shards, shardScript(plan));
+  writeText(merge, mergeScript(plan));
+  std::ofstream jobs(plan.work + "/jobs.txt", std::ios::app);
+  std::vector<std::string> mergeOptions;
+  if (!missing.empty()) {
+    const std::string id = sbatch(arrayOptions, shards);
+    jobs << "shards " << id << "\n";
+    fmt::print("shards: job {} (array {}, {} task(s) of {} samples in {} shards)\n", id,
+               arraySpec(missing), missing.size(), plan.totalSpp, plan.shards.size());
+    // A failed shard cancels the merge instead of leaving it pending.
+    mergeOptions = {"--dependency=afterok:" + id, "--kill-on-invalid-dep=yes"};
+  } else {
+    fmt::print("shards: all {} present\n", plan.shards.size());
+  }
+  const std::string mergeId = sbatch(mergeOptions, merge);
+  jobs << "merge " << mergeId << "\n";
+  fmt::print("merge: job {} -> {}\n", mergeId, plan.out);
+  return 0;
+}
+
+int runStatus(const FarmOptions& o) {
+  const std::string work =
+      fs::absolute(o.work.empty() ? o.out + ".farm" : o.work).lexically_normal().string();
+  const std::string planPath = work + "/plan.json";
+  if (!fs::exists(planPath))
+    throw Error(
+        fmt::format("farm status: no plan in '{}' (give --work or the --out of `farm "
+                    "submit`)",
+                    work));
+  const FarmPlan plan = planFromJson(readText(planPath), planPath);
+  const auto jobs = recordedJobs(work);
+  const auto states = queued(jobs);
+  std::vector<std::string> problems;
+  const auto missing = missingShards(plan, &problems);
+  size_t done = 0;
+  for (size_t k = 0; k < plan.shards.size(); ++k) {
+    std::string state = "done";
+    if (std::find(missing.begin(), missing.end(), k) != missing.end()) {
+      state = "missing";
+      for (const auto& [id, s] : states)
+        if (id.size() > 2 && id.substr(id.find('_') + 1) == std::to_string(k))
+          state = fmt::format("{} (job {})", s, id);
+    } else {
+      ++done;
+    }
+    fmt::print("shard {:3}  samples {:>12}  {}\n", k, render::formatSampleRange(plan.shards[k]),
+               state);
+  }
+  for (const auto& p : problems) fmt::print("refused: {}\n", p);
+  for (const auto& [id, s] : states)
+    if (id.find('_') == std::string::npos) fmt::print("job {}: {}\n", id, s);
+  fmt::print("{} of {} shards done; output {}: {}\n", done, plan.shards.size(), plan.out,
+             fs::exists(plan.out) ? "written" : "not yet");
+  return 0;
+}
+
+}  // namespace
+
+Command addFarmCommand(CLI::App& app) {
+  auto o = std::make_shared<FarmOptions>();
+  auto* farm = app.add_subcommand("farm", "Split a render across a Slurm cluster and merge it");
+  farm->require_subcommand(1);
+  auto* submit = farm->add_subcommand(
+      "submit", "Submit a render as a Slurm job array of shards and a merge job (or resume one)");
+  submit->add_option("--scene", o->scene, "Built-in scene or scene file");
+  submit->add_option("--settings", o->settings,
+                     "Render settings file (penumbra render --settings)");
+  submit->add_option("--size", o->size, "Image size WIDTHxHEIGHT");
+  submit->add_option("--seed", o->seed, "Random seed");
+  submit->add_option("--backend", o->backend, "Backend the shards render on");
+  submit->add_option("--spp", o->spp, "Samples per pixel of the whole render")
+      ->check(CLI::Range(1u, render::kMaxSamplesPerPixel))
+      ->capture_default_str();
+  submit->add_option("--spp-per-frame", o->sppPerFrame, "Samples per GPU frame (a shard's unit)")
+      ->check(CLI::Range(1u, render::PathTracer::kMaxSamplesPerFrame))
+      ->capture_default_str();
+  submit->add_option("--shards", o->shards, "Number of shards (array tasks)")->required();
+  submit->add_option("--out", o->out, "Final image (.exr or .png) on the shared file system")
+      ->required();
+  submit->add_option("--work", o->work,
+                     "Work directory for plan, scripts, shards and logs "
+                     "(default OUT.farm)");
+  submit->add_option("--partition", o->slurm.partition, "Slurm partition");
+  submit->add_option("--gpus-per-task", o->slurm.gpusPerTask, "GPUs each shard asks for");
+  submit->add_option("--time", o->slurm.time, "Time limit of each task (Slurm's format)");
+  submit->add_flag("--dry-run", o->dryRun, "Print the scripts and sbatch calls, submit nothing");
+  submit->add_option("render-options", o->renderOptions,
+                     "More `penumbra render` options for every shard, after --");
+  auto* status = farm->add_subcommand("status", "Show a farm render's shards and jobs");
+  status->add_option("--out", o->out, "The final image given to `farm submit`");
+  status->add_option("--work", o->work, "Its work directory (default OUT.farm)");
+  return [o, submit, status]() -> int {
+    if (submit->parsed()) return runSubmit(*o);
+    if (status->parsed()) {
+      if (o->out.empty() && o->work.empty()) throw Error("farm status: give --out or --work");
+      return runStatus(*o);
+    }
+    return 1;
+  };
+}
+
+}  // namespace penumbra::app

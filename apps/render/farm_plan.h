@@ -1,0 +1,61 @@
+#pragma once
+// What `penumbra farm` submits: a render split into shards
+// (render/sample_split.h), as a Slurm job array of `penumbra render
+// --samples` tasks and a merge job, all written into a work directory on the
+// file system the cluster shares:
+//
+//   WORK/plan.json        this plan (a rerun resumes it, or refuses another)
+//   WORK/shards.sbatch    the array job: shard $SLURM_ARRAY_TASK_ID
+//   WORK/merge.sbatch     penumbra merge of every shard into the output
+//   WORK/shards/shard-NNN.exr, WORK/logs/
+//
+// The scripts take the shard index from SLURM_ARRAY_TASK_ID only, so any
+// array-job system runs them the same way (a Kubernetes indexed Job:
+// SLURM_ARRAY_TASK_ID=$JOB_COMPLETION_INDEX bash shards.sbatch).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/sample_split.h"
+
+namespace penumbra::app {
+
+struct SlurmOptions {
+  std::string partition;     // --partition; "" the cluster's default
+  uint32_t gpusPerTask = 0;  // --gpus-per-task; 0 none asked for
+  std::string time;          // --time limit per task; "" the partition's
+  bool operator==(const SlurmOptions&) const = default;
+};
+
+struct FarmPlan {
+  std::string penumbra;                 // absolute path of the binary the tasks run
+  std::vector<std::string> renderArgs;  // `penumbra render` options of every shard
+  uint32_t totalSpp = 0, blockSpp = 16;
+  std::vector<render::SampleRange> shards;
+  std::string out;   // the final image, absolute
+  std::string work;  // the work directory, absolute
+  SlurmOptions slurm;
+  bool sameRender(const FarmPlan& other) const;
+};
+
+std::string shardPath(const FarmPlan& plan, size_t index);
+// The sbatch scripts (bash): the array task renders its shard to a temporary
+// file renamed into place (render's atomic write), so a killed task leaves
+// no shard behind; Slurm requeues tasks of failed nodes (--requeue).
+std::string shardScript(const FarmPlan& plan);
+std::string mergeScript(const FarmPlan& plan);
+
+std::string planToJson(const FarmPlan& plan);
+// Throws penumbra::Error naming `source` and the field.
+FarmPlan planFromJson(const std::string& text, const std::string& source);
+
+// The shards whose file is absent, not a piece of this render's range, or
+// damaged (render/partial_render.h's checks); their indices, ascending.
+// `problems` receives a line for each file that exists but was refused.
+std::vector<size_t> missingShards(const FarmPlan& plan, std::vector<std::string>* problems);
+// Slurm's --array list: "0-3", "1,4-6".
+std::string arraySpec(const std::vector<size_t>& indices);
+// A word quoted for bash.
+std::string shellQuote(const std::string& word);
+
+}  // namespace penumbra::app
