@@ -1,8 +1,8 @@
-// `penumbra farm`: a split render on a Slurm cluster (farm_plan.h says what
-// is submitted). `submit` validates the render, writes the plan and scripts
-// and calls sbatch; run again with the same options it resumes, submitting
-// only the shards that are missing. `status` shows what is done, queued and
-// missing.
+// `penumbra farm`: a split render or study on a Slurm cluster (farm_plan.h
+// says what is submitted). `submit` and `study` validate what the tasks
+// will run, write the plan and scripts and call sbatch; run again with the
+// same options they resume, submitting only the parts that are missing.
+// `status` shows a render's shards: done, queued and missing.
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -30,6 +30,8 @@ struct FarmOptions {
   SlurmOptions slurm;
   bool dryRun = false;
   std::vector<std::string> renderOptions;  // after `--`
+  uint32_t tasks = 0;                      // farm study
+  std::vector<std::string> studyOptions;   // after `--`
 };
 
 // Runs a command line (argv quoted for the shell), returning its exit status
@@ -129,6 +131,8 @@ std::vector<std::string> recordedJobs(const std::string& work) {
   return jobs;
 }
 
+void requireNothingQueued(const std::string& work);
+
 FarmPlan planFor(const FarmOptions& o) {
   if (o.shards < 1) throw Error("farm: --shards must be at least 1");
   FarmPlan plan;
@@ -183,12 +187,7 @@ int runSubmit(const FarmOptions& o) {
           fmt::format("farm: '{}' holds the plan of another render (other options, "
                       "samples, shards or output); use another --work or remove it",
                       plan.work));
-    const auto stillQueued = queued(recordedJobs(plan.work));
-    if (!stillQueued.empty())
-      throw Error(
-          fmt::format("farm: {} task(s) of this render are still queued (e.g. job {} "
-                      "{}); wait for them or scancel them, then submit again",
-                      stillQueued.size(), stillQueued.begin()->first, stillQueued.begin()->second));
+    requireNothingQueued(plan.work);
     missing = missingShards(plan, &problems);
     for (const auto& p : problems) fmt::print("refused, rendered again: {}\n", p);
     fmt::print("resuming: {} of {} shards present\n", plan.shards.size() - missing.size(),
@@ -268,6 +267,99 @@ int runStatus(const FarmOptions& o) {
   return 0;
 }
 
+// Refuses while jobs of this work directory are still queued.
+void requireNothingQueued(const std::string& work) {
+  const auto stillQueued = queued(recordedJobs(work));
+  if (!stillQueued.empty())
+    throw Error(
+        fmt::format("farm: {} task(s) of this work are still queued (e.g. job {} {}); "
+                    "wait for them or scancel them, then submit again",
+                    stillQueued.size(), stillQueued.begin()->first, stillQueued.begin()->second));
+}
+
+int runStudySubmit(const FarmOptions& o) {
+  if (o.tasks < 1) throw Error("farm study: --tasks must be at least 1");
+  for (const auto& option : o.studyOptions)
+    for (const char* owned :
+         {"--out", "--points", "--reference-only", "--gather", "--count-points", "--analyze"})
+      if (option == owned || option.rfind(std::string(owned) + "=", 0) == 0)
+        throw Error(fmt::format("farm study: {} is the farm's to set", owned));
+  StudyFarmPlan plan;
+  plan.penumbra = selfPath();
+  plan.studyArgs = o.studyOptions;
+  plan.out = fs::absolute(o.out).lexically_normal().string();
+  plan.work = plan.out + "/farm";
+  plan.slurm = o.slurm;
+  // The study's options and scene are checked here, and its points counted.
+  std::vector<std::string> count{plan.penumbra, "study"};
+  count.insert(count.end(), plan.studyArgs.begin(), plan.studyArgs.end());
+  count.insert(count.end(), {"--out", plan.out, "--count-points"});
+  std::string output;
+  if (runCommand(count, output) != 0)
+    throw Error(fmt::format("farm study: the study would fail: {}", lastLine(output)));
+  const std::string countText = lastLine(output);
+  if (countText.empty() || countText.size() > 9 ||
+      countText.find_first_not_of("0123456789") != std::string::npos)
+    throw Error(fmt::format("farm study: could not count the study's points ({})", countText));
+  const uint32_t points = uint32_t(std::stoul(countText));
+  plan.parts = splitPoints(points, o.tasks);
+  const bool ownReference = std::find(plan.studyArgs.begin(), plan.studyArgs.end(),
+                                      "--reference") == plan.studyArgs.end();
+
+  const std::string planPath = plan.work + "/plan.json";
+  std::vector<size_t> missing;
+  if (fs::exists(planPath)) {
+    if (!studyPlanFromJson(readText(planPath), planPath).sameStudy(plan))
+      throw Error(
+          fmt::format("farm study: '{}' holds the plan of another study; use another "
+                      "--out or remove it",
+                      plan.work));
+    requireNothingQueued(plan.work);
+    missing = missingParts(plan);
+    fmt::print("resuming: {} of {} parts present\n", plan.parts.size() - missing.size(),
+               plan.parts.size());
+  } else {
+    for (size_t k = 0; k < plan.parts.size(); ++k) missing.push_back(k);
+  }
+  const std::string reference = plan.work + "/reference.sbatch",
+                    array = plan.work + "/points.sbatch", gather = plan.work + "/gather.sbatch";
+  if (o.dryRun) {
+    if (ownReference) fmt::print("# {}\n{}\n", reference, referenceScript(plan));
+    fmt::print("# {}\n{}\n# {}\n{}\n", array, pointsScript(plan), gather, gatherScript(plan));
+    fmt::print("would run: sbatch{} --array={} {}, then {} after it\n",
+               ownReference ? " (after the reference)" : "", arraySpec(missing), array, gather);
+    return 0;
+  }
+  fs::create_directories(plan.work + "/logs");
+  writeText(planPath, studyPlanToJson(plan));
+  writeText(array, pointsScript(plan));
+  writeText(gather, gatherScript(plan));
+  std::ofstream jobs(plan.work + "/jobs.txt", std::ios::app);
+  std::vector<std::string> after;
+  if (ownReference && !missing.empty()) {
+    // Cached in the study's folder: a rerun finds it and renders nothing.
+    writeText(reference, referenceScript(plan));
+    const std::string id = sbatch({}, reference);
+    jobs << "reference " << id << "\n";
+    fmt::print("reference: job {}\n", id);
+    after = {"--dependency=afterok:" + id, "--kill-on-invalid-dep=yes"};
+  }
+  std::vector<std::string> gatherOptions;
+  if (!missing.empty()) {
+    std::vector<std::string> options = after;
+    options.push_back("--array=" + arraySpec(missing));
+    const std::string id = sbatch(options, array);
+    jobs << "points " << id << "\n";
+    fmt::print("points: job {} (array {}: {} points in {} parts)\n", id, arraySpec(missing), points,
+               plan.parts.size());
+    gatherOptions = {"--dependency=afterok:" + id, "--kill-on-invalid-dep=yes"};
+  }
+  const std::string gatherId = sbatch(gatherOptions, gather);
+  jobs << "gather " << gatherId << "\n";
+  fmt::print("gather: job {} -> {}/results.csv\n", gatherId, plan.out);
+  return 0;
+}
+
 }  // namespace
 
 Command addFarmCommand(CLI::App& app) {
@@ -300,11 +392,24 @@ Command addFarmCommand(CLI::App& app) {
   submit->add_flag("--dry-run", o->dryRun, "Print the scripts and sbatch calls, submit nothing");
   submit->add_option("render-options", o->renderOptions,
                      "More `penumbra render` options for every shard, after --");
+  auto* study = farm->add_subcommand(
+      "study", "Submit a study as a reference job, a job array over its points and a gather job");
+  study->add_option("--tasks", o->tasks, "Number of array tasks the points are split into")
+      ->required();
+  study->add_option("--out", o->out, "The study's folder (results, images, parts, farm/)")
+      ->required();
+  study->add_option("--partition", o->slurm.partition, "Slurm partition");
+  study->add_option("--gpus-per-task", o->slurm.gpusPerTask, "GPUs each task asks for");
+  study->add_option("--time", o->slurm.time, "Time limit of each task (Slurm's format)");
+  study->add_flag("--dry-run", o->dryRun, "Print the scripts and sbatch calls, submit nothing");
+  study->add_option("study-options", o->studyOptions,
+                    "`penumbra study` options (scene, sweep, reference), after --");
   auto* status = farm->add_subcommand("status", "Show a farm render's shards and jobs");
   status->add_option("--out", o->out, "The final image given to `farm submit`");
   status->add_option("--work", o->work, "Its work directory (default OUT.farm)");
-  return [o, submit, status]() -> int {
+  return [o, submit, study, status]() -> int {
     if (submit->parsed()) return runSubmit(*o);
+    if (study->parsed()) return runStudySubmit(*o);
     if (status->parsed()) {
       if (o->out.empty() && o->work.empty()) throw Error("farm status: give --out or --work");
       return runStatus(*o);

@@ -58,4 +58,29 @@ std::string arraySpec(const std::vector<size_t>& indices);
 // A word quoted for bash.
 std::string shellQuote(const std::string& word);
 
+// A study split the same way (`penumbra farm study`): a job that renders
+// the reference into the study's folder, a job array whose task k measures
+// points parts[k] (`penumbra study --points A:B`, rows into
+// OUT/points/points-A-B.csv), and a job that gathers the rows into the
+// results (`--gather`). Scripts and logs in OUT/farm/.
+struct StudyFarmPlan {
+  std::string penumbra;
+  std::vector<std::string> studyArgs;      // `penumbra study` options but --out
+  std::vector<render::SampleRange> parts;  // point ranges
+  std::string out;                         // the study's folder, absolute
+  std::string work;                        // OUT/farm
+  SlurmOptions slurm;
+  bool sameStudy(const StudyFarmPlan& other) const;
+};
+// `points` near-equal ranges of [0, count).
+std::vector<render::SampleRange> splitPoints(uint32_t count, uint32_t parts);
+std::string partPath(const StudyFarmPlan& plan, size_t index);
+std::string referenceScript(const StudyFarmPlan& plan);
+std::string pointsScript(const StudyFarmPlan& plan);
+std::string gatherScript(const StudyFarmPlan& plan);
+std::string studyPlanToJson(const StudyFarmPlan& plan);
+StudyFarmPlan studyPlanFromJson(const std::string& text, const std::string& source);
+// The parts whose rows file is absent.
+std::vector<size_t> missingParts(const StudyFarmPlan& plan);
+
 }  // namespace penumbra::app

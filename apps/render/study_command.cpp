@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
@@ -17,6 +18,8 @@
 #include "penumbra_commit.h"
 #include "progress.h"
 #include "render/render_job.h"
+#include "render/sample_split.h"
+#include "scene/json_reading.h"
 #include "scene/scene_loader.h"
 #include "study/study_analysis.h"
 #include "study/study_results.h"
@@ -53,6 +56,12 @@ struct StudyOptions {
   std::string backend = "vulkan";
   int device = -1;
   bool validation = false;
+  // A study split into jobs (docs/farm.md): the reference alone, a range of
+  // points, or the gathering of the parts' rows into the results.
+  bool referenceOnly = false;
+  std::string points;  // "A:B"
+  bool gather = false;
+  bool countPoints = false;
 };
 
 // A comma-separated list, each item through `parse`; one line naming the
@@ -244,6 +253,180 @@ void makeReport(const std::string& dir) {
 #endif
 }
 
+uint32_t referenceSppOf(const StudyOptions& o) {
+  return (o.referenceSpp + 1) / 2 * 2;
+}
+
+// What a cached reference was rendered from (DIR/reference.txt's first line).
+std::string referenceKey(const StudyOptions& o) {
+  const auto [width, height] = parseImageSize(o.size);
+  return fmt::format("{} {}x{} {} spp seed {} depth {}", o.scene, width, height, referenceSppOf(o),
+                     o.referenceSeed, o.referenceMaxDepth);
+}
+
+// The reference cached in DIR for these options, if any. A cache whose
+// noise line is damaged is stale, not an error: it is rendered again.
+std::optional<study::Reference> cachedReference(const StudyOptions& o,
+                                                const std::filesystem::path& dir) {
+  const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
+  if (!std::filesystem::exists(cachedImage) || !std::filesystem::exists(cachedKey)) return {};
+  const std::string cached = readFile(cachedKey.string()), key = referenceKey(o);
+  if (cached.rfind(key + "\n", 0) != 0) return {};
+  std::string noise = cached.substr(key.size() + 1);
+  if (!noise.empty() && noise.back() == '\n') noise.pop_back();
+  const std::optional<double> noiseRelMse = parseNumber(noise);
+  if (!noiseRelMse) return {};
+  study::Reference reference;
+  reference.image = image::loadExr(cachedImage.string());
+  reference.source = cachedImage.string() + " (cached)";
+  reference.spp = referenceSppOf(o);
+  reference.seed = o.referenceSeed;
+  reference.noiseRelMse = *noiseRelMse;
+  return reference;
+}
+
+// Written whole or not at all (a killed job leaves no half file).
+void writeAtomically(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out.good()) throw Error(fmt::format("{}: cannot write it", path.string()));
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+study::StudyContext studyContext(const StudyOptions& o, uint32_t width, uint32_t height,
+                                 const study::Reference& reference) {
+  study::StudyContext context;
+  context.scene = o.scene;
+  context.width = width;
+  context.height = height;
+  context.commit = PENUMBRA_COMMIT;
+  context.referenceSource = reference.source;
+  context.referenceSpp = reference.spp;
+  context.referenceSeed = reference.seed;
+  context.referenceNoiseRelMse = reference.noiseRelMse;
+  context.budgetMs = o.budgetMs;
+  return context;
+}
+
+// results.csv, results.json, the answers and the report.
+void writeResults(const StudyOptions& o, const std::filesystem::path& dir,
+                  const study::StudyContext& context, const std::vector<study::StudyRow>& rows,
+                  OutputGuard& written) {
+  std::vector<study::Measurement> measurements;
+  for (const auto& r : rows) measurements.push_back(study::measurement(r));
+  const auto summaries = study::summarize(measurements);
+  const auto csvPath = dir / "results.csv", jsonPath = dir / "results.json";
+  std::ofstream(csvPath) << study::resultsCsv(rows);
+  written.add(csvPath);
+  std::ofstream(jsonPath) << study::resultsJson(context, rows, summaries);
+  written.add(jsonPath);
+  if (context.referenceNoiseRelMse >= 0)
+    fmt::print(
+        "reference: {}, {} spp (seeds {} and {}), its own relMSE about {:.3e}: errors "
+        "below twice that are not claimed (below_reference_noise)\n",
+        context.referenceSource, context.referenceSpp, context.referenceSeed,
+        context.referenceSeed + 1, context.referenceNoiseRelMse);
+  else
+    fmt::print("reference: {} (its own noise unknown)\n", context.referenceSource);
+  printAnswers(summaries, o.budgetMs, o.targetRelMse);
+  written.keep();
+  fmt::print("wrote {} and {} ({} rows), images in {}\n", csvPath.string(), jsonPath.string(),
+             rows.size(), (dir / "images").string());
+  makeReport(o.out);
+}
+
+// --gather: the parts' rows (DIR/points/points-A-B.csv), every point of the
+// study exactly once and all measured on one device with one build, into
+// the results a single run writes.
+int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& points,
+                const std::filesystem::path& dir) {
+  const auto [width, height] = parseImageSize(o.size);
+  study::Reference reference;
+  if (!o.reference.empty()) {
+    reference.source = o.reference;
+  } else if (std::optional<study::Reference> cached = cachedReference(o, dir)) {
+    reference = std::move(*cached);
+  } else {
+    throw Error(fmt::format("study --gather: '{}' holds no reference for this study", o.out));
+  }
+  std::vector<std::filesystem::path> parts;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "points", ec))
+    if (entry.path().extension() == ".csv") parts.push_back(entry.path());
+  std::sort(parts.begin(), parts.end());
+  if (parts.empty())
+    throw Error(fmt::format("study --gather: no parts in '{}' (run the study with --points A:B)",
+                            (dir / "points").string()));
+  std::vector<std::optional<study::StudyRow>> rows(points.size());
+  std::vector<std::string> from(points.size());
+  study::StudyContext context = studyContext(o, width, height, reference);
+  std::string firstPart;
+  for (const auto& part : parts) {
+    const std::string source = part.string();
+    nlohmann::json where;
+    try {
+      where =
+          nlohmann::json::parse(readFile(part.parent_path() / (part.stem().string() + ".json")));
+    } catch (const nlohmann::json::exception& e) {
+      throw Error(fmt::format("{}: its .json beside it is unreadable ({})", source, e.what()));
+    }
+    const std::string device = scene::requireString(where, "device", source + " (.json)");
+    const std::string commit = scene::requireString(where, "commit", source + " (.json)");
+    if (firstPart.empty()) {
+      firstPart = source;
+      context.device = device;
+      context.api = scene::requireString(where, "api", source + " (.json)");
+      context.backend = scene::requireString(where, "backend", source + " (.json)");
+      context.commit = commit;
+    } else if (device != context.device || commit != context.commit) {
+      throw Error(
+          fmt::format("study --gather: '{}' was measured on {} (build {}), '{}' on {} "
+                      "(build {}): times of different devices or builds do not compare",
+                      firstPart, context.device, context.commit, source, device, commit));
+    }
+    for (study::StudyRow& row : study::parseStudyRows(readFile(source), source, points)) {
+      size_t i = 0;
+      while (!(points[i].spp == row.point.spp && points[i].seed == row.point.seed &&
+               points[i].technique == row.point.technique))
+        ++i;
+      if (rows[i])
+        throw Error(fmt::format("study --gather: '{}' and '{}' both hold '{}' at {} spp, seed {}",
+                                from[i], source, row.point.technique.label(), row.point.spp,
+                                row.point.seed));
+      rows[i] = std::move(row);
+      from[i] = source;
+    }
+  }
+  std::vector<study::StudyRow> ordered;
+  size_t missing = 0;
+  std::string firstMissing;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (rows[i]) {
+      ordered.push_back(*rows[i]);
+    } else if (missing++ == 0) {
+      firstMissing = fmt::format("point {}: '{}' at {} spp, seed {}", i,
+                                 points[i].technique.label(), points[i].spp, points[i].seed);
+    }
+  }
+  if (missing > 0)
+    throw Error(
+        fmt::format("study --gather: {} of {} points have no row (the first: {}); run "
+                    "their --points and gather again",
+                    missing, points.size(), firstMissing));
+  fmt::print("gathered {} rows from {} parts, measured on {} (build {})\n", ordered.size(),
+             parts.size(), context.device, context.commit);
+  if (!reference.image.rgba.empty()) {
+    const auto preview = dir / "reference.png";
+    image::savePng(preview.string(), image::encodeSrgb8(reference.image));
+  }
+  OutputGuard written;
+  writeResults(o, dir, context, ordered, written);
+  return 0;
+}
+
 int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   if (!o.analyze.empty()) {
     const auto rows = study::parseResultsCsv(readFile(o.analyze), o.analyze);
@@ -274,10 +457,28 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   } else {
     study::checkReferenceIndependence(spec, o.referenceSeed);
   }
+  if (int(!o.points.empty()) + int(o.referenceOnly) + int(o.gather) > 1)
+    throw Error("study: --points, --reference-only and --gather exclude each other");
+  if (o.referenceOnly && !o.reference.empty())
+    throw Error("study --reference-only: --reference names a reference already");
+  if (o.countPoints) {  // for `penumbra farm study`, which splits the points
+    fmt::print("{}\n", points.size());
+    return 0;
+  }
   const std::filesystem::path dir(o.out);
   std::error_code ec;
   std::filesystem::create_directories(dir / "images", ec);
   if (ec) throw Error(fmt::format("--out '{}': cannot create it ({})", o.out, ec.message()));
+  if (o.gather) return gatherStudy(o, points, dir);
+  // The points this run renders: all, or a part of a split study.
+  size_t first = 0, end = points.size();
+  if (!o.points.empty()) {
+    const render::SampleRange range = render::parseSampleRange(o.points, "--points");
+    if (range.end > points.size())
+      throw Error(fmt::format("--points {}: the study has points 0:{}", o.points, points.size()));
+    first = range.begin;
+    end = range.end;
+  }
   OutputGuard written;
 
   rhi::DeviceCreateInfo info;
@@ -287,19 +488,20 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   const auto& adapter = device->adapter();
   fmt::print("device: {} ({}) via {}; commit {}\n", adapter.name, adapter.apiVersion,
              device->backendName(), PENUMBRA_COMMIT);
-  fmt::print("scene: {}, {}x{}; {} points ({} techniques x {} spp values x {} seeds)\n", scene.name,
-             width, height, points.size(), points.size() / spec.spp.size() / spec.seeds,
-             spec.spp.size(), spec.seeds);
+  fmt::print("scene: {}, {}x{}; {} points ({} techniques x {} spp values x {} seeds){}\n",
+             scene.name, width, height, points.size(), points.size() / spec.spp.size() / spec.seeds,
+             spec.spp.size(), spec.seeds,
+             o.points.empty() ? "" : fmt::format("; this part: points {}", o.points));
   std::fflush(stdout);
 
   study::StudyRunner runner(*device, scene, width, height);
   runner.setTimingRepeats(o.repeats);
   uint64_t total = 0;
-  for (const auto& p : points) total += p.spp;
+  for (size_t i = first; i < end && !o.referenceOnly; ++i) total += points[i].spp;
   study::Technique referenceTechnique;
   referenceTechnique.maxDepth = o.referenceMaxDepth;
   const bool renderReference = o.reference.empty();
-  const uint32_t referenceSpp = (o.referenceSpp + 1) / 2 * 2;
+  const uint32_t referenceSpp = referenceSppOf(o);
   if (renderReference) total += referenceSpp;
   // The progress bar counts samples of every render, in millions if need be.
   Progress progress(uint32_t(std::min<uint64_t>(total, 0xffffffffu)));
@@ -311,39 +513,38 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   if (renderReference) {
     // Cached beside the results: the same scene, size, samples and seed
     // render the same reference.
-    const std::string key = fmt::format("{} {}x{} {} spp seed {} depth {}", o.scene, width, height,
-                                        referenceSpp, o.referenceSeed, o.referenceMaxDepth);
-    const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
-    std::string cached;
-    if (std::filesystem::exists(cachedImage) && std::filesystem::exists(cachedKey))
-      cached = readFile(cachedKey.string());
-    // A cache whose noise line is damaged is stale, not an error: render again.
-    std::optional<double> cachedNoise;
-    if (cached.rfind(key + "\n", 0) == 0) {
-      std::string noise = cached.substr(key.size() + 1);
-      if (!noise.empty() && noise.back() == '\n') noise.pop_back();
-      cachedNoise = parseNumber(noise);
-    }
-    if (cachedNoise) {
-      reference.image = image::loadExr(cachedImage.string());
-      reference.source = cachedImage.string() + " (cached)";
-      reference.spp = referenceSpp;
-      reference.seed = o.referenceSeed;
-      reference.noiseRelMse = *cachedNoise;
+    if (std::optional<study::Reference> cached = cachedReference(o, dir)) {
+      reference = std::move(*cached);
     } else {
+      // The parts of a split study share one reference, rendered once
+      // before them (--reference-only): they never race to write it.
+      if (!o.points.empty())
+        throw Error(
+            fmt::format("study --points: '{}' holds no reference for this study yet; run "
+                        "the same study with --reference-only first",
+                        o.out));
       reference =
           runner.renderReference(referenceTechnique, referenceSpp, o.referenceSeed, report(0));
+      const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
       image::saveExr(cachedImage.string(), reference.image);
-      std::ofstream(cachedKey) << key << "\n"
-                               << fmt::format("{:.17g}", reference.noiseRelMse) << "\n";
+      writeAtomically(cachedKey,
+                      fmt::format("{}\n{:.17g}\n", referenceKey(o), reference.noiseRelMse));
     }
     done += referenceSpp;
   }
+  if (o.referenceOnly) {
+    progress.finish();
+    fmt::print("reference: {}, {} spp, in {}\n", reference.source, reference.spp, o.out);
+    return 0;
+  }
   const auto referencePreview = dir / "reference.png";
-  image::savePng(referencePreview.string(), image::encodeSrgb8(reference.image));
-  written.add(referencePreview);
+  if (o.points.empty()) {
+    image::savePng(referencePreview.string(), image::encodeSrgb8(reference.image));
+    written.add(referencePreview);
+  }
   std::vector<study::StudyRow> rows;
-  for (const auto& point : points) {
+  for (size_t i = first; i < end; ++i) {
+    const study::StudyPoint& point = points[i];
     rows.push_back(runner.run(point, reference, report(done)));
     done += point.spp;
     if (point.seed == spec.firstSeed) {
@@ -357,45 +558,32 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
     }
   }
   progress.finish();
-
-  study::StudyContext context;
-  context.scene = o.scene;
-  context.width = width;
-  context.height = height;
-  context.device = adapter.name;
-  context.api = adapter.apiVersion;
-  context.backend = device->backendName();
-  context.commit = PENUMBRA_COMMIT;
-  context.referenceSource = reference.source;
-  context.referenceSpp = reference.spp;
-  context.referenceSeed = reference.seed;
-  context.referenceNoiseRelMse = reference.noiseRelMse;
-  context.budgetMs = o.budgetMs;
-  std::vector<study::Measurement> measurements;
-  for (const auto& r : rows) measurements.push_back(study::measurement(r));
-  const auto summaries = study::summarize(measurements);
-  const auto csvPath = dir / "results.csv", jsonPath = dir / "results.json";
-  std::ofstream(csvPath) << study::resultsCsv(rows);
-  written.add(csvPath);
-  std::ofstream(jsonPath) << study::resultsJson(context, rows, summaries);
-  written.add(jsonPath);
-
-  if (reference.noiseRelMse >= 0)
-    fmt::print(
-        "reference: {}, {} spp (seeds {} and {}), its own relMSE about {:.3e}: errors "
-        "below twice that are not claimed (below_reference_noise)\n",
-        reference.source, reference.spp, reference.seed, reference.seed + 1, reference.noiseRelMse);
-  else
-    fmt::print("reference: {} (its own noise unknown)\n", reference.source);
-  printAnswers(summaries, o.budgetMs, o.targetRelMse);
   if (o.validation && device->validationMessageCount() > 0) {
     fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
     return 1;
   }
-  written.keep();
-  fmt::print("wrote {} and {} ({} rows), images in {}\n", csvPath.string(), jsonPath.string(),
-             rows.size(), (dir / "images").string());
-  makeReport(o.out);
+
+  study::StudyContext context = studyContext(o, width, height, reference);
+  context.device = adapter.name;
+  context.api = adapter.apiVersion;
+  context.backend = device->backendName();
+  if (!o.points.empty()) {
+    // A part: its rows and where they were measured, for --gather.
+    const auto part = dir / "points" / fmt::format("points-{}-{}", first, end);
+    std::filesystem::create_directories(part.parent_path());
+    nlohmann::json where;
+    where["device"] = context.device;
+    where["api"] = context.api;
+    where["backend"] = context.backend;
+    where["commit"] = context.commit;
+    writeAtomically(part.string() + ".json", where.dump(2) + "\n");
+    writeAtomically(part.string() + ".csv", study::resultsCsv(rows));
+    written.keep();
+    fmt::print("wrote {}.csv ({} rows; `penumbra study ... --gather` makes the results)\n",
+               part.string(), rows.size());
+    return 0;
+  }
+  writeResults(o, dir, context, rows, written);
   return 0;
 }
 
@@ -465,6 +653,13 @@ Command addStudyCommand(CLI::App& app) {
   cmd->add_option("--device", o->device, "Device index from 'penumbra devices'");
   cmd->add_flag("--validation", o->validation,
                 "Enable the API validation layer; fail on any message");
+  cmd->add_flag("--reference-only", o->referenceOnly,
+                "Split study, step 1: render and cache the reference in --out, nothing else");
+  cmd->add_option("--points", o->points,
+                  "Split study, step 2: measure points A to B-1 only (rows in OUT/points/)");
+  cmd->add_flag("--gather", o->gather,
+                "Split study, step 3: gather the parts' rows into results.csv/json and answers");
+  cmd->add_flag("--count-points", o->countPoints, "Print how many points the study has")->group("");
   return [o, cmd] { return runStudy(*o, *cmd); };
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -82,58 +83,122 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 
 }  // namespace
 
-std::vector<Measurement> parseResultsCsv(const std::string& text, const std::string& source) {
+namespace {
+
+// A results.csv as named columns; throws naming `source` and the line.
+struct CsvTable {
+  std::string source;
+  std::map<std::string, size_t> column;
+  struct Row {
+    size_t line;
+    std::vector<std::string> fields;
+  };
+  std::vector<Row> rows;
+
+  const std::string& text(const Row& row, const char* name) const {
+    return row.fields[column.at(name)];
+  }
+  double number(const Row& row, const char* name) const {
+    const std::string& field = text(row, name);
+    size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(field, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != field.size() || field.empty() || !std::isfinite(v))
+      throw Error(fmt::format("{}: line {}: {} '{}' is not a finite number", source, row.line, name,
+                              field));
+    return v;
+  }
+  uint32_t whole(const Row& row, const char* name, double lo) const {
+    const double v = number(row, name);
+    if (v < lo || v > 4294967295.0 || v != std::floor(v))
+      throw Error(fmt::format("{}: line {}: {} '{}' is not a whole number >= {}", source, row.line,
+                              name, text(row, name), lo));
+    return uint32_t(v);
+  }
+};
+
+CsvTable readCsv(const std::string& text, const std::string& source,
+                 std::initializer_list<const char*> needed) {
+  CsvTable table;
+  table.source = source;
   std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line)) throw Error(fmt::format("{}: empty results file", source));
   if (!line.empty() && line.back() == '\r') line.pop_back();
   const std::vector<std::string> header = splitCsvLine(line);
-  std::map<std::string, size_t> column;
-  for (size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
-  for (const char* needed :
-       {"technique", "spp", "seed", "gpu_ms", "relmse", "mape", "ssim", "bias"})
-    if (!column.count(needed))
-      throw Error(fmt::format("{}: line 1: the header has no '{}' column", source, needed));
-  std::vector<Measurement> rows;
+  for (size_t i = 0; i < header.size(); ++i) table.column[header[i]] = i;
+  for (const char* name : needed)
+    if (!table.column.count(name))
+      throw Error(fmt::format("{}: line 1: the header has no '{}' column", source, name));
   for (size_t lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    const std::vector<std::string> f = splitCsvLine(line);
+    std::vector<std::string> f = splitCsvLine(line);
     if (f.size() != header.size())
       throw Error(fmt::format("{}: line {}: {} fields, the header has {}", source, lineNumber,
                               f.size(), header.size()));
-    auto value = [&](const char* name) {
-      const std::string& field = f[column.at(name)];
-      size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(field, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != field.size() || field.empty() || !std::isfinite(v))
-        throw Error(fmt::format("{}: line {}: {} '{}' is not a finite number", source, lineNumber,
-                                name, field));
-      return v;
-    };
-    Measurement m;
-    m.technique = f[column.at("technique")];
-    if (m.technique.empty())
+    if (f[table.column.at("technique")].empty())
       throw Error(fmt::format("{}: line {}: empty technique", source, lineNumber));
-    const double spp = value("spp"), seed = value("seed");
-    if (spp < 1 || spp != std::floor(spp) || seed < 0 || seed != std::floor(seed))
-      throw Error(fmt::format("{}: line {}: spp and seed must be whole numbers (spp >= 1)", source,
-                              lineNumber));
-    m.spp = uint32_t(spp);
-    m.seed = uint32_t(seed);
-    m.gpuMs = value("gpu_ms");
-    m.relMse = value("relmse");
-    m.mape = value("mape");
-    m.ssim = value("ssim");
-    m.bias = value("bias");
+    table.rows.push_back({lineNumber, std::move(f)});
+  }
+  if (table.rows.empty()) throw Error(fmt::format("{}: no rows after the header", source));
+  return table;
+}
+
+}  // namespace
+
+std::vector<Measurement> parseResultsCsv(const std::string& text, const std::string& source) {
+  const CsvTable table = readCsv(
+      text, source, {"technique", "spp", "seed", "gpu_ms", "relmse", "mape", "ssim", "bias"});
+  std::vector<Measurement> rows;
+  for (const auto& row : table.rows) {
+    Measurement m;
+    m.technique = table.text(row, "technique");
+    m.spp = table.whole(row, "spp", 1);
+    m.seed = table.whole(row, "seed", 0);
+    m.gpuMs = table.number(row, "gpu_ms");
+    m.relMse = table.number(row, "relmse");
+    m.mape = table.number(row, "mape");
+    m.ssim = table.number(row, "ssim");
+    m.bias = table.number(row, "bias");
     rows.push_back(m);
   }
-  if (rows.empty()) throw Error(fmt::format("{}: no rows after the header", source));
+  return rows;
+}
+
+std::vector<StudyRow> parseStudyRows(const std::string& text, const std::string& source,
+                                     const std::vector<StudyPoint>& points) {
+  const CsvTable table = readCsv(text, source,
+                                 {"technique", "spp", "seed", "gpu_ms", "denoise_ms", "rays",
+                                  "relmse", "mape", "ssim", "bias", "below_reference_noise"});
+  std::vector<StudyRow> rows;
+  for (const auto& row : table.rows) {
+    const std::string& technique = table.text(row, "technique");
+    const uint32_t spp = table.whole(row, "spp", 1), seed = table.whole(row, "seed", 0);
+    const auto point = std::find_if(points.begin(), points.end(), [&](const StudyPoint& p) {
+      return p.spp == spp && p.seed == seed && p.technique.label() == technique;
+    });
+    if (point == points.end())
+      throw Error(fmt::format("{}: line {}: '{}' at {} spp, seed {} is not a point of this study",
+                              source, row.line, technique, spp, seed));
+    StudyRow r;
+    r.point = *point;
+    r.gpuMs = table.number(row, "gpu_ms");
+    r.denoiseMs = table.number(row, "denoise_ms");
+    const double rays = table.number(row, "rays");
+    if (rays < 0 || rays != std::floor(rays) || rays > 1.8e19)
+      throw Error(fmt::format("{}: line {}: rays '{}' is not a count", source, row.line,
+                              table.text(row, "rays")));
+    r.rays = uint64_t(rays);
+    r.error = {table.number(row, "relmse"), table.number(row, "mape"), table.number(row, "ssim"),
+               table.number(row, "bias")};
+    r.belowReferenceNoise = table.whole(row, "below_reference_noise", 0) != 0;
+    rows.push_back(r);
+  }
   return rows;
 }
 

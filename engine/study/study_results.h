@@ -35,6 +35,13 @@ std::string resultsCsv(const std::vector<StudyRow>& rows);
 // technique, spp, seed, gpu_ms, relmse, mape, ssim, bias, in any order).
 // Throws penumbra::Error naming `source` and the line on anything malformed.
 std::vector<Measurement> parseResultsCsv(const std::string& text, const std::string& source);
+// The rows of a results.csv written for some of `points` (a part of a split
+// study, `penumbra study --points`), each matched to its point by technique
+// label, spp and seed; every column resultsCsv writes is read back exactly.
+// Throws penumbra::Error naming `source` and the line on anything malformed
+// or a row that is no point of the study.
+std::vector<StudyRow> parseStudyRows(const std::string& text, const std::string& source,
+                                     const std::vector<StudyPoint>& points);
 // Each summary names its preview, images/<imageName>.png.
 std::string resultsJson(const StudyContext& context, const std::vector<StudyRow>& rows,
                         const std::vector<PointSummary>& summaries);

@@ -8,7 +8,10 @@
 #   damaged on disk is refused; `farm submit` run again resubmits exactly
 #   those two shards and the final image is again bit-identical;
 # - `farm status` reports shards done and missing; a rerun with other
-#   options in the same work directory is refused.
+#   options in the same work directory is refused;
+# - `farm study` (a reference job, a 3-task array over the points, a gather
+#   job) gives the rows of the same study run in one process: every column
+#   but the measured times identical.
 set -Eeuo pipefail
 penumbra=$(realpath "$1")
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -66,16 +69,15 @@ cmp -s "$work/final.exr" "$work/single.exr" || fail "farm render differs from th
 "$penumbra" farm status --out "$work/final.exr" >"$work/status.log"
 grep -q "4 of 4 shards done; output .* written" "$work/status.log" || fail "status after success"
 
-# The pid of the render writing FILE (from /proc: procps is not installed
-# everywhere).
+# The pid of the render writing FILE: one grep over every process's command
+# line (procps is not installed everywhere). The pattern ends in "[r]" so
+# that grep's own command line, which holds the pattern, does not match it.
 render_pid() {
-  local p
-  for p in /proc/[0-9]*; do
-    if tr '\0' ' ' <"$p/cmdline" 2>/dev/null | grep -qF -- "--out $1"; then
-      echo "${p#/proc/}"
-      return
-    fi
-  done
+  local pattern hit
+  pattern=$(printf '%s' "$1" | sed 's/[].[\\*^$]/\\&/g; s/r$/[r]/')
+  hit=$(grep -l -- "$pattern" /proc/[0-9]*/cmdline 2>/dev/null | head -1 || true)
+  [[ -n $hit ]] && basename "$(dirname "$hit")"
+  return 0
 }
 
 # 2. A shard killed mid-render, another damaged on disk, then resumed.
@@ -84,10 +86,10 @@ submit "$out"
 mapfile -t ids < <(job_ids)
 shard2="$out.farm/shards/shard-002.exr"
 pid=""
-for _ in $(seq 1 1200); do  # up to 60 s for shard 2's render to start
+deadline=$((SECONDS + 240))
+while [[ -z $pid ]] && ((SECONDS < deadline)); do  # shard 2's render to start
   pid=$(render_pid "$shard2")
-  [[ -n $pid ]] && break
-  sleep 0.05
+  [[ -n $pid ]] || sleep 0.02
 done
 [[ -n $pid ]] || fail "shard 2's render never started"
 kill -STOP "$pid"  # frozen mid-render: its file must not exist yet
@@ -113,4 +115,21 @@ grep -q "array 1-2, 2 task(s)" "$work/submit.log" || fail "resume submitted othe
 mapfile -t ids < <(job_ids)
 slurm_wait_jobs -t 300 "${ids[@]}"
 cmp -s "$out" "$work/single.exr" || fail "resumed farm render differs from the single render"
+
+# 3. A study split over three tasks and gathered.
+study=(--scene cornell-box --size 16x16 --spp 1,4 --seeds 2 --strategy mis,bsdf
+  --reference-spp 32 --repeats 1)
+"$penumbra" study "${study[@]}" --out "$work/study-one" >"$work/study.log" 2>&1 ||
+  { cat "$work/study.log"; fail "study in one process"; }
+"$penumbra" farm study --tasks 3 --out "$work/study-farm" -- "${study[@]}" >"$work/submit.log" 2>&1 ||
+  { cat "$work/submit.log"; fail "farm study"; }
+grep -q "points: job .* (array 0-2: 8 points in 3 parts)" "$work/submit.log" || fail "study parts"
+mapfile -t ids < <(sed -n 's/^\(reference\|points\|gather\): job \([0-9]*\).*/\2/p' "$work/submit.log")
+((${#ids[@]} == 3)) || fail "expected reference, points and gather jobs"
+slurm_wait_jobs -t 300 "${ids[@]}"
+[[ -f $work/study-farm/results.csv ]] || fail "the gather job wrote no results"
+# Columns 13, 14 and 20 are measured times (gpu_ms, denoise_ms, efficiency).
+untimed() { cut -d, -f1-12,15-19,21 "$1"; }
+[[ $(untimed "$work/study-farm/results.csv") == "$(untimed "$work/study-one/results.csv")" ]] ||
+  fail "the gathered study's rows differ from the one-process study's"
 echo "farm on Slurm ok"

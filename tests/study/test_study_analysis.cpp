@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "study/study_analysis.h"
+#include "study/study_plan.h"
 #include "study/study_results.h"
 #include "util/error.h"
 
@@ -117,5 +118,56 @@ TEST_CASE("study results: results.csv reads back, any column order, and bad file
   CHECK(message("technique,spp,seed,gpu_ms,relmse,mape,ssim,bias\nmis,4,1,2.5\n") ==
         "r.csv: line 2: 4 fields, the header has 8");
   CHECK(message("technique,spp,seed,gpu_ms,relmse,mape,ssim,bias\nmis,0,1,2,1,0,0,0\n") ==
-        "r.csv: line 2: spp and seed must be whole numbers (spp >= 1)");
+        "r.csv: line 2: spp '0' is not a whole number >= 1");
+  CHECK(message("technique,spp,seed,gpu_ms,relmse,mape,ssim,bias\nmis,1e300,1,2,1,0,0,0\n") ==
+        "r.csv: line 2: spp '1e300' is not a whole number >= 1");
+}
+
+// A split study's parts (`penumbra study --points`) are gathered from their
+// results.csv rows: every column written is read back bit for bit and
+// matched to its point; a row of no point of the study is refused.
+TEST_CASE("study results: a part's rows read back exactly and match their points", "[study]") {
+  study::StudySpec spec;
+  spec.strategies = {render::SamplingStrategy::Mis, render::SamplingStrategy::Bsdf};
+  spec.spp = {1, 4};
+  spec.seeds = 2;
+  const std::vector<study::StudyPoint> points = study::expandStudy(spec);
+  REQUIRE(points.size() == 8u);
+  std::vector<study::StudyRow> rows;
+  for (size_t i = 3; i < 6; ++i) {
+    study::StudyRow r;
+    r.point = points[i];
+    r.gpuMs = 1.0 / 3.0 + double(i);
+    r.denoiseMs = 0.1 * double(i);
+    r.rays = (uint64_t(1) << 40) + i;
+    r.error = {0.1 / double(i), 1e-17 * double(i), 0.9, -0.01 * double(i)};
+    r.belowReferenceNoise = i == 4;
+    rows.push_back(r);
+  }
+  const auto back = study::parseStudyRows(study::resultsCsv(rows), "part.csv", points);
+  REQUIRE(back.size() == rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    CHECK(back[k].point.technique == rows[k].point.technique);
+    CHECK(back[k].point.spp == rows[k].point.spp);
+    CHECK(back[k].point.seed == rows[k].point.seed);
+    CHECK(back[k].gpuMs == rows[k].gpuMs);
+    CHECK(back[k].denoiseMs == rows[k].denoiseMs);
+    CHECK(back[k].rays == rows[k].rays);
+    CHECK(back[k].error.relMse == rows[k].error.relMse);
+    CHECK(back[k].error.mape == rows[k].error.mape);
+    CHECK(back[k].error.ssim == rows[k].error.ssim);
+    CHECK(back[k].error.bias == rows[k].error.bias);
+    CHECK(back[k].belowReferenceNoise == rows[k].belowReferenceNoise);
+  }
+  // Another study's point (16 spp is not swept here).
+  std::vector<study::StudyRow> foreign{rows[0]};
+  foreign[0].point.spp = 16;
+  try {
+    study::parseStudyRows(study::resultsCsv(foreign), "part.csv", points);
+    FAIL("a row of no point was taken");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()) ==
+          "part.csv: line 2: '" + foreign[0].point.technique.label() + "' at 16 spp, seed " +
+              std::to_string(foreign[0].point.seed) + " is not a point of this study");
+  }
 }
