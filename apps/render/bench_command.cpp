@@ -294,7 +294,7 @@ Command addBenchCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each frame")
-      ->check(CLI::Range(1u, 16u))
+      ->check(CLI::Range(1u, render::PathTracer::kMaxSamplesPerFrame))
       ->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per pipeline")
       ->check(CLI::Range(1u, 100000u))
@@ -317,7 +317,7 @@ Command addBenchCommand(CLI::App& app) {
   cmd->add_option("--reference-spp", o->referenceSpp,
                   "Samples per pixel of the converged render the panned camera's last frame is "
                   "compared with")
-      ->check(CLI::Range(1u, 1u << 20))
+      ->check(CLI::Range(1u, render::kMaxSamplesPerPixel))
       ->capture_default_str();
   return [o] {
     if (o->cameraPan != 0 && o->denoise == render::DenoiseMode::Off)

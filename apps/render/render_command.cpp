@@ -400,10 +400,10 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(1e-6f, 1e9f));
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--spp", o->spp, "Samples per pixel")
-      ->check(CLI::Range(1u, 1u << 20))
+      ->check(CLI::Range(1u, render::kMaxSamplesPerPixel))
       ->capture_default_str();
   cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")
-      ->check(CLI::Range(1u, 16u))
+      ->check(CLI::Range(1u, render::PathTracer::kMaxSamplesPerFrame))
       ->capture_default_str();
   cmd->add_option("--samples", o->samples,
                   "Render samples A to B-1 of a --total-spp render into an .exr piece for "
@@ -417,7 +417,7 @@ Command addRenderCommand(CLI::App& app) {
                   "Device index from 'penumbra devices' (default: best with ray tracing)");
   cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
   cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")
-      ->check(CLI::Range(0u, 1024u))
+      ->check(CLI::Range(0u, render::kMaxPathDepth))
       ->capture_default_str();
   cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
       ->transform(CLI::CheckedTransformer(render::integratorsByName()))
