@@ -4,7 +4,9 @@
 // same options they resume, submitting only the parts that are missing.
 // `status` shows a render's shards: done, queued and missing.
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,7 @@
 
 #include "commands.h"
 #include "farm_plan.h"
+#include "image/image_io.h"
 #include "render/render_job.h"
 #include "util/error.h"
 
@@ -34,12 +37,15 @@ struct FarmOptions {
   std::vector<std::string> studyOptions;   // after `--`
 };
 
-// Runs a command line (argv quoted for the shell), returning its exit status
-// and its output, stderr included.
-int runCommand(const std::vector<std::string>& argv, std::string& output) {
+// Runs a command line (argv quoted for the shell): its exit status, its
+// standard output and, apart, its standard error (a warning on stderr must
+// not be read as a job id or a queue entry).
+int runCommand(const std::vector<std::string>& argv, std::string& output,
+               std::string* errors = nullptr) {
 #ifdef _WIN32
   (void)argv;
   (void)output;
+  (void)errors;
   throw Error("farm: Slurm clusters run Linux; `penumbra farm` is not available on Windows");
 #else
   std::string line;
@@ -47,14 +53,28 @@ int runCommand(const std::vector<std::string>& argv, std::string& output) {
     if (!line.empty()) line += ' ';
     line += shellQuote(a);
   }
-  line += " 2>&1";
+  char errorFile[] = "/tmp/penumbra-farm-stderr-XXXXXX";
+  const int fd = ::mkstemp(errorFile);
+  if (fd < 0) throw Error("farm: cannot create a temporary file for a command's errors");
+  ::close(fd);
+  line += " 2>" + shellQuote(errorFile);
   FILE* pipe = ::popen(line.c_str(), "r");
-  if (!pipe) throw Error(fmt::format("farm: cannot run '{}'", argv[0]));
+  if (!pipe) {
+    std::remove(errorFile);
+    throw Error(fmt::format("farm: cannot run '{}'", argv[0]));
+  }
   output.clear();
   char buffer[4096];
   size_t n;
   while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
   const int status = ::pclose(pipe);
+  {
+    std::ifstream in(errorFile, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (errors) *errors = text.str();
+  }
+  std::remove(errorFile);
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 #endif
 }
@@ -95,9 +115,9 @@ std::string sbatch(const std::vector<std::string>& options, const std::string& s
   std::vector<std::string> argv{"sbatch", "--parsable"};
   argv.insert(argv.end(), options.begin(), options.end());
   argv.push_back(script);
-  std::string output;
-  if (runCommand(argv, output) != 0)
-    throw Error(fmt::format("farm: sbatch {} failed: {}", script, lastLine(output)));
+  std::string output, errors;
+  if (runCommand(argv, output, &errors) != 0)
+    throw Error(fmt::format("farm: sbatch {} failed: {}", script, lastLine(errors)));
   const std::string id = lastLine(output).substr(0, lastLine(output).find(';'));
   if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
     throw Error(fmt::format("farm: sbatch printed no job id ({})", lastLine(output)));
@@ -113,10 +133,14 @@ std::map<std::string, std::string> queued(const std::vector<std::string>& jobs) 
     if (!list.empty()) list += ',';
     list += j;
   }
-  std::string output;
+  std::string output, errors;
   // A job that left the queue long ago makes squeue fail ("Invalid job id"):
-  // then there is nothing queued of it.
-  if (runCommand({"squeue", "-h", "-r", "-j", list, "-o", "%i %T"}, output) != 0) return states;
+  // then there is nothing queued of it. Any other failure (no controller)
+  // must not pass for an empty queue: a rerun would submit running shards again.
+  if (runCommand({"squeue", "-h", "-r", "-j", list, "-o", "%i %T"}, output, &errors) != 0) {
+    if (errors.find("Invalid job id") != std::string::npos) return states;
+    throw Error(fmt::format("farm: squeue failed: {}", lastLine(errors)));
+  }
   std::istringstream lines(output);
   std::string id, state;
   while (lines >> id >> state) states[id] = state;
@@ -133,6 +157,18 @@ std::vector<std::string> recordedJobs(const std::string& work) {
 
 void requireNothingQueued(const std::string& work);
 
+// What goes into #SBATCH lines and Slurm's --output patterns unquoted:
+// whitespace, '%' (a Slurm filename pattern) and control characters are
+// refused rather than half-escaped.
+void requirePlainText(const std::string& text, const char* what) {
+  for (unsigned char c : text)
+    if (c <= ' ' || c == '%' || c == 127)
+      throw Error(
+          fmt::format("farm: {} '{}' holds a space, '%' or a control character; use a "
+                      "plain path or name",
+                      what, text));
+}
+
 FarmPlan planFor(const FarmOptions& o) {
   if (o.shards < 1) throw Error("farm: --shards must be at least 1");
   FarmPlan plan;
@@ -144,7 +180,19 @@ FarmPlan planFor(const FarmOptions& o) {
   plan.out = fs::absolute(o.out).lexically_normal().string();
   plan.work = fs::absolute(o.work.empty() ? o.out + ".farm" : o.work).lexically_normal().string();
   plan.slurm = o.slurm;
-  if (!o.scene.empty()) plan.renderArgs.insert(plan.renderArgs.end(), {"--scene", o.scene});
+  plan.backend = o.backend;
+  requirePlainText(plan.work, "--work");
+  requirePlainText(plan.out, "--out");
+  requirePlainText(plan.slurm.partition, "--partition");
+  requirePlainText(plan.slurm.time, "--time");
+  // The final image: a known type, in a folder that exists and takes files.
+  image::checkWritable(plan.out);
+  // A scene file is named by its absolute path: tasks start elsewhere.
+  std::error_code ec;
+  const std::string scene = !o.scene.empty() && fs::is_regular_file(o.scene, ec)
+                                ? fs::absolute(o.scene).string()
+                                : o.scene;
+  if (!scene.empty()) plan.renderArgs.insert(plan.renderArgs.end(), {"--scene", scene});
   if (!o.settings.empty())
     plan.renderArgs.insert(plan.renderArgs.end(),
                            {"--settings", fs::absolute(o.settings).string()});
@@ -152,7 +200,8 @@ FarmPlan planFor(const FarmOptions& o) {
   if (o.seed) plan.renderArgs.insert(plan.renderArgs.end(), {"--seed", std::to_string(*o.seed)});
   if (!o.backend.empty()) plan.renderArgs.insert(plan.renderArgs.end(), {"--backend", o.backend});
   for (const auto& option : o.renderOptions)
-    for (const char* owned : {"--samples", "--total-spp", "--out", "--spp", "--spp-per-frame"})
+    for (const char* owned : {"--samples", "--total-spp", "--out", "--spp", "--spp-per-frame",
+                              "--print-effects", "--check-only"})
       if (option == owned || option.rfind(std::string(owned) + "=", 0) == 0)
         throw Error(
             fmt::format("farm: {} is the farm's to set (give --spp, --spp-per-frame and "
@@ -163,16 +212,27 @@ FarmPlan planFor(const FarmOptions& o) {
 }
 
 int runSubmit(const FarmOptions& o) {
-  const FarmPlan plan = planFor(o);
+  FarmPlan plan = planFor(o);
   // Everything a shard would refuse is refused here, before anything is
-  // queued: the options and the scene (loaded, then nothing rendered).
+  // queued: the first shard's whole command is checked (options, scene,
+  // split, output type), stopping short of the device; it also says what
+  // the shards will render (their identity).
   std::vector<std::string> check{plan.penumbra, "render"};
   check.insert(check.end(), plan.renderArgs.begin(), plan.renderArgs.end());
-  check.insert(check.end(), {"--spp", std::to_string(plan.totalSpp), "--spp-per-frame",
-                             std::to_string(plan.blockSpp), "--print-effects"});
-  std::string output;
-  if (runCommand(check, output) != 0)
-    throw Error(fmt::format("farm: the shards' render would fail: {}", lastLine(output)));
+  check.insert(
+      check.end(),
+      {"--spp-per-frame", std::to_string(plan.blockSpp), "--total-spp",
+       std::to_string(plan.totalSpp), "--samples", render::formatSampleRange(plan.shards[0]),
+       "--out", (fs::path(plan.out).parent_path() / "farm-check.exr").string(), "--check-only"});
+  std::string output, errors;
+  if (runCommand(check, output, &errors) != 0)
+    throw Error(fmt::format("farm: the shards' render would fail: {}", lastLine(errors)));
+  std::istringstream identity(output.substr(std::min(output.find("identity: "), output.size())));
+  std::string word;
+  identity >> word >> plan.sceneHash >> plan.settingsHash >> plan.build;
+  if (word != "identity:" || plan.build.empty())
+    throw Error(
+        fmt::format("farm: the shards' render did not say what it renders ({})", lastLine(output)));
   if (o.shards > plan.shards.size())
     fmt::print("note: {} samples in frames of {} split into {} shards, not {}\n", plan.totalSpp,
                plan.blockSpp, plan.shards.size(), o.shards);
@@ -250,9 +310,11 @@ int runStatus(const FarmOptions& o) {
     std::string state = "done";
     if (std::find(missing.begin(), missing.end(), k) != missing.end()) {
       state = "missing";
-      for (const auto& [id, s] : states)
-        if (id.size() > 2 && id.substr(id.find('_') + 1) == std::to_string(k))
+      for (const auto& [id, s] : states) {
+        const size_t underscore = id.find('_');  // array tasks only: "JOB_INDEX"
+        if (underscore != std::string::npos && id.substr(underscore + 1) == std::to_string(k))
           state = fmt::format("{} (job {})", s, id);
+      }
     } else {
       ++done;
     }
@@ -290,21 +352,25 @@ int runStudySubmit(const FarmOptions& o) {
   plan.out = fs::absolute(o.out).lexically_normal().string();
   plan.work = plan.out + "/farm";
   plan.slurm = o.slurm;
+  requirePlainText(plan.out, "--out");
+  requirePlainText(plan.slurm.partition, "--partition");
+  requirePlainText(plan.slurm.time, "--time");
   // The study's options and scene are checked here, and its points counted.
   std::vector<std::string> count{plan.penumbra, "study"};
   count.insert(count.end(), plan.studyArgs.begin(), plan.studyArgs.end());
   count.insert(count.end(), {"--out", plan.out, "--count-points"});
-  std::string output;
-  if (runCommand(count, output) != 0)
-    throw Error(fmt::format("farm study: the study would fail: {}", lastLine(output)));
+  std::string output, errors;
+  if (runCommand(count, output, &errors) != 0)
+    throw Error(fmt::format("farm study: the study would fail: {}", lastLine(errors)));
   const std::string countText = lastLine(output);
   if (countText.empty() || countText.size() > 9 ||
       countText.find_first_not_of("0123456789") != std::string::npos)
     throw Error(fmt::format("farm study: could not count the study's points ({})", countText));
   const uint32_t points = uint32_t(std::stoul(countText));
   plan.parts = splitPoints(points, o.tasks);
-  const bool ownReference = std::find(plan.studyArgs.begin(), plan.studyArgs.end(),
-                                      "--reference") == plan.studyArgs.end();
+  const bool ownReference = std::none_of(
+      plan.studyArgs.begin(), plan.studyArgs.end(),
+      [](const std::string& a) { return a == "--reference" || a.rfind("--reference=", 0) == 0; });
 
   const std::string planPath = plan.work + "/plan.json";
   std::vector<size_t> missing;

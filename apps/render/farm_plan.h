@@ -28,13 +28,19 @@ struct SlurmOptions {
 };
 
 struct FarmPlan {
-  std::string penumbra;                 // absolute path of the binary the tasks run
+  std::string penumbra;  // absolute path of the binary the tasks run
+  // What the shards will render, as the binary computed it before submitting
+  // (`render --check-only`): scene content hash, settings hash, build. A
+  // shard of another identity (a rebuilt binary, an edited scene) is refused
+  // and rendered again.
+  std::string sceneHash, settingsHash, build;
   std::vector<std::string> renderArgs;  // `penumbra render` options of every shard
   uint32_t totalSpp = 0, blockSpp = 16;
   std::vector<render::SampleRange> shards;
   std::string out;   // the final image, absolute
   std::string work;  // the work directory, absolute
   SlurmOptions slurm;
+  std::string backend;  // the merge's, for tone-mapping a PNG ("" the default)
   bool sameRender(const FarmPlan& other) const;
 };
 

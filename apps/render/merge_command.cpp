@@ -47,7 +47,7 @@ int runMerge(const MergeOptions& o) {
     info.adapterIndex = o.device;
     device = backends::createDevice(o.backend, info);
   }
-  render::saveRender(device.get(), merged.image, o.out, pieces[0].toneMapping);
+  render::saveRender(device.get(), merged.image, o.out, merged.toneMapping);
   fmt::print("wrote {}\n", o.out);
   return 0;
 }

@@ -69,6 +69,7 @@ struct RenderOptions {
   std::string aov;
   std::string samples;  // "A:B": a piece of a split render
   uint32_t totalSpp = 0;
+  bool checkOnly = false;  // everything but rendering (`penumbra farm` before it submits)
 };
 
 // The auxiliary outputs --aov can write as EXR layers.
@@ -252,6 +253,28 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   if (o.denoise != render::DenoiseMode::Off && job.settings.integrator != render::Integrator::Path)
     throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
   image::checkWritable(o.out);
+  // A piece's identity is the device-independent part of what it renders.
+  std::optional<render::SplitRenderIdentity> splitIdentity;
+  if (splitTree) {
+    const scene::Camera rendered = job.camera ? *job.camera : scene.camera;
+    splitIdentity =
+        render::SplitRenderIdentity{scene::contentHash(scene),
+                                    render::splitSettingsHash(job.settings, rendered, width, height,
+                                                              job.sppPerFrame, job.allEffects),
+                                    width,
+                                    height,
+                                    job.settings.seed,
+                                    job.spp,
+                                    job.sppPerFrame,
+                                    PENUMBRA_COMMIT};
+  }
+  if (o.checkOnly) {
+    if (splitIdentity)
+      fmt::print("identity: {} {} {}\n", splitIdentity->sceneHash, splitIdentity->settingsHash,
+                 splitIdentity->build);
+    fmt::print("checked: nothing refused\n");
+    return 0;
+  }
 
   rhi::DeviceCreateInfo info;
   info.adapterIndex = o.device;
@@ -299,27 +322,24 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
         tracer, settings, *splitTree, *splitRange, [&](uint32_t done) { progress.update(done); },
         &stats);
     progress.finish();
-    piece.identity = {scene::contentHash(scene),
-                      render::splitSettingsHash(settings, tracer.camera(), width, height,
-                                                job.sppPerFrame, job.allEffects),
-                      width,
-                      height,
-                      settings.seed,
-                      job.spp,
-                      job.sppPerFrame,
-                      PENUMBRA_COMMIT};
+    // A piece rendered with validation messages is not written: a rerun of
+    // the farm would take it as done.
+    if (o.validation && device->validationMessageCount() > 0) {
+      fmt::print(stderr, "error: {} validation message(s); the piece is not written\n",
+                 device->validationMessageCount());
+      return 1;
+    }
+    piece.identity = *splitIdentity;
     piece.sceneName = scene.name;
     piece.toneMapping = job.toneMapping;
     piece.range = *splitRange;
-    piece.device = fmt::format("{} ({})", adapter.name, device->backendName());
+    // The driver too: two drivers of one GPU may round differently.
+    piece.device =
+        fmt::format("{} ({}, driver {})", adapter.name, device->backendName(), adapter.driver);
     render::savePartialRender(o.out, piece);
     fmt::print("GPU time: {:.3f} ms for samples {} of {}\n", stats.gpuSeconds * 1e3,
                render::formatSampleRange(*splitRange), job.spp);
     fmt::print("wrote {} (a piece: `penumbra merge` combines the pieces)\n", o.out);
-    if (o.validation && device->validationMessageCount() > 0) {
-      fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
-      return 1;
-    }
     return 0;
   }
 
@@ -457,6 +477,9 @@ Command addRenderCommand(CLI::App& app) {
                 "Build the full pipeline instead of only the effects the scene calls for");
   cmd->add_flag("--allow-external-files", o->allowExternalFiles,
                 "Let glTF files read buffers and images outside their own folder");
+  cmd->add_flag("--check-only", o->checkOnly,
+                "Check the options and the scene (and print a piece's identity), render nothing")
+      ->group("");
   cmd->add_flag("--print-effects", o->printEffects,
                 "List the effects the scene calls for, one per line, and exit");
   cmd->add_flag("--validation", o->validation,

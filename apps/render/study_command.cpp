@@ -1,6 +1,11 @@
 // `penumbra study`: what accuracy costs in time, for one scene on one
 // device (engine/study, docs/ARCHITECTURE.md "Studies").
 #include <fmt/format.h>
+#ifdef _WIN32
+#include <process.h>
+#else
+#include <unistd.h>
+#endif
 
 #include <cctype>
 #include <cmath>
@@ -287,7 +292,15 @@ std::optional<study::Reference> cachedReference(const StudyOptions& o,
 
 // Written whole or not at all (a killed job leaves no half file).
 void writeAtomically(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path tmp = path.string() + ".tmp";
+  // Unique per host and process: a requeued task may still run elsewhere.
+  char host[256] = "host";
+#ifdef _WIN32
+  const long pid = _getpid();
+#else
+  gethostname(host, sizeof host - 1);
+  const long pid = getpid();
+#endif
+  const std::filesystem::path tmp = fmt::format("{}.tmp-{}-{}", path.string(), host, pid);
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
@@ -342,11 +355,10 @@ void writeResults(const StudyOptions& o, const std::filesystem::path& dir,
 // study exactly once and all measured on one device with one build, into
 // the results a single run writes.
 int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& points,
-                const std::filesystem::path& dir) {
+                const std::filesystem::path& dir, study::Reference reference) {
   const auto [width, height] = parseImageSize(o.size);
-  study::Reference reference;
   if (!o.reference.empty()) {
-    reference.source = o.reference;
+    // Given by the user: already loaded and checked by runStudy.
   } else if (std::optional<study::Reference> cached = cachedReference(o, dir)) {
     reference = std::move(*cached);
   } else {
@@ -393,9 +405,10 @@ int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& poi
                points[i].technique == row.point.technique))
         ++i;
       if (rows[i])
-        throw Error(fmt::format("study --gather: '{}' and '{}' both hold '{}' at {} spp, seed {}",
-                                from[i], source, row.point.technique.label(), row.point.spp,
-                                row.point.seed));
+        throw Error(fmt::format(
+            "study --gather: '{}' and '{}' both hold '{}' at {} spp, seed {} "
+            "(a part of an earlier split? remove the stale one)",
+            from[i], source, row.point.technique.label(), row.point.spp, row.point.seed));
       rows[i] = std::move(row);
       from[i] = source;
     }
@@ -469,7 +482,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   std::error_code ec;
   std::filesystem::create_directories(dir / "images", ec);
   if (ec) throw Error(fmt::format("--out '{}': cannot create it ({})", o.out, ec.message()));
-  if (o.gather) return gatherStudy(o, points, dir);
+  if (o.gather) return gatherStudy(o, points, dir, reference);
   // The points this run renders: all, or a part of a split study.
   size_t first = 0, end = points.size();
   if (!o.points.empty()) {

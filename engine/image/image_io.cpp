@@ -221,13 +221,16 @@ ExrChannels loadExrChannels(const std::string& path) {
   const EXRBox2i window = header.data_window;
   const uint64_t declaredWidth = exrExtent(window.min_x, window.max_x),
                  declaredHeight = exrExtent(window.min_y, window.max_y);
-  if (declaredWidth * declaredHeight > kMaxExrPixels || header.num_channels > kMaxExrChannels) {
+  const uint64_t declaredPixels = declaredWidth * declaredHeight;
+  if (declaredPixels > kMaxExrPixels || header.num_channels > kMaxExrChannels ||
+      declaredPixels * uint64_t(std::max(header.num_channels, 0)) > kMaxExrValues) {
     const int channels = header.num_channels;
     FreeEXRHeader(&header);
     throw Error(fmt::format(
         "image '{}': its header declares {} x {} pixels of {} channels, more than the limit of "
-        "{} pixels and {} channels",
-        path, declaredWidth, declaredHeight, channels, kMaxExrPixels, kMaxExrChannels));
+        "{} pixels, {} channels and {} values",
+        path, declaredWidth, declaredHeight, channels, kMaxExrPixels, kMaxExrChannels,
+        kMaxExrValues));
   }
   for (int c = 0; c < header.num_channels; ++c)
     header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;

@@ -29,10 +29,13 @@ Image loadExr(const std::string& path);
 // What loadExr and loadExrChannels decode at most, checked on the header
 // before anything is allocated: tinyexr allocates what the data window
 // declares whatever the file holds, so a 300-byte file could ask for
-// gigabytes. 16384 x 16384 pixels (the largest render); 128 channels (a
-// partial render's tree sums, render/partial_render.h, need up to 100).
+// gigabytes. At most 16384 x 16384 pixels (the largest render), 128
+// channels (a piece of a split render, render/partial_render.h, has up to
+// 100), and 2^30 values in all (4 GiB as float: the largest render's RGBA,
+// or a 1080p piece's 100 channels).
 inline constexpr uint64_t kMaxExrPixels = uint64_t(16384) * 16384;
 inline constexpr int kMaxExrChannels = 128;
+inline constexpr uint64_t kMaxExrValues = uint64_t(1) << 30;
 // The width and height an EXR file's header declares (its data window),
 // read without decoding, for callers with a tighter bound (environment
 // maps). penumbra::Error if unreadable.

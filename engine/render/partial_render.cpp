@@ -220,6 +220,7 @@ MergedRender mergePartialRenders(const std::vector<PartialRender>& pieces,
   std::sort(order.begin(), order.end(),
             [&](size_t a, size_t b) { return pieces[a].range.begin < pieces[b].range.begin; });
   MergedRender merged;
+  merged.toneMapping = pieces[order[0]].toneMapping;
   uint32_t next = 0;
   for (size_t k = 0; k < order.size(); ++k) {
     const SampleRange& r = pieces[order[k]].range;

@@ -57,7 +57,8 @@ void savePartialRender(const std::string& path, const PartialRender& piece);
 PartialRender loadPartialRender(const std::string& path);
 
 struct MergedRender {
-  image::Image image;  // linear RGB mean, alpha 1
+  image::Image image;       // linear RGB mean, alpha 1
+  ToneMapping toneMapping;  // the piece with the first samples' (the order given does not matter)
   uint64_t samples = 0;
   std::vector<SampleRange> missing;  // empty unless merged with allowPartial
   std::vector<std::string> devices;  // the distinct devices that rendered the pieces

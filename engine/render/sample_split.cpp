@@ -57,6 +57,9 @@ SampleRange SampleTree::blockSamples(uint32_t block) const {
 }
 
 SampleRange SampleTree::samples(Node node) const {
+  if (!exists(node))
+    throw Error(fmt::format("sample tree: node {}.{} holds no block of {}", node.level, node.index,
+                            blockCount_));
   const auto [first, last] = blocks(node);
   return {blockSamples(first).begin, blockSamples(last - 1).end};
 }

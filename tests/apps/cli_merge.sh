@@ -46,6 +46,30 @@ for k in 2 3 7; do
   done
 done
 
+# A ragged last frame and frames of 5: 23 samples are frames of 5, 5, 5, 5
+# and 3; pieces 0:10 + 10:23 and 0:5 + 5:15 + 15:20 + 20:23 equal 0:23.
+ragged=(--scene cornell-box --size 24x24 --seed 9 --spp-per-frame 5 --total-spp 23)
+split_piece() {  # split_piece RANGE FILE
+  "$penumbra" render "${ragged[@]}" --samples "$1" --out "$2" >"$work/log" 2>&1 ||
+    { cat "$work/log"; fail "ragged piece $1"; }
+}
+split_piece 0:23 "$work/r-whole.exr"
+"$penumbra" merge "$work/r-whole.exr" --out "$work/r-single.exr" >/dev/null 2>&1 || fail "ragged merge"
+for cut in "0:10 10:23" "0:5 5:15 15:20 20:23"; do
+  files=()
+  for range in $cut; do
+    split_piece "$range" "$work/r-${range/:/-}.exr"
+    files=("$work/r-${range/:/-}.exr" "${files[@]}")  # reversed
+  done
+  "$penumbra" merge "${files[@]}" --out "$work/r-merged.exr" >/dev/null 2>&1 || fail "ragged merge ($cut)"
+  cmp -s "$work/r-merged.exr" "$work/r-single.exr" || fail "ragged pieces ($cut) differ"
+done
+# Fewer samples than a frame: one block, one piece.
+"$penumbra" render --scene cornell-box --size 24x24 --total-spp 3 --samples 0:3 \
+  --out "$work/tiny.exr" >/dev/null 2>&1 || fail "3 of 3 samples"
+"$penumbra" merge "$work/tiny.exr" --out "$work/tiny-merged.exr" | grep -q "samples merged: 3 of 3" ||
+  fail "3-sample merge"
+
 # A plain render sums in another order (a running mean over frames): equal
 # within float rounding, 1e-5 relative per channel (a lost or doubled frame
 # would be 1/7 = 0.14).

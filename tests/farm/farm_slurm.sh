@@ -8,7 +8,8 @@
 #   damaged on disk is refused; `farm submit` run again resubmits exactly
 #   those two shards and the final image is again bit-identical;
 # - `farm status` reports shards done and missing; a rerun with other
-#   options in the same work directory is refused;
+#   options in the same work directory is refused; a rerun after the scene
+#   file changed refuses the old shards;
 # - `farm study` (a reference job, a 3-task array over the points, a gather
 #   job) gives the rows of the same study run in one process: every column
 #   but the measured times identical.
@@ -116,7 +117,26 @@ mapfile -t ids < <(job_ids)
 slurm_wait_jobs -t 300 "${ids[@]}"
 cmp -s "$out" "$work/single.exr" || fail "resumed farm render differs from the single render"
 
-# 3. A study split over three tasks and gathered.
+# 3. The scene file edited after its shards were rendered: a rerun refuses
+# every shard of the old content (it would otherwise merge two scenes) and
+# renders them all again.
+scene_copy="$work/scene.json"
+cp "$here/../../scenes/cornell-box.json" "$scene_copy"
+edited=(--scene "$scene_copy" --size 48x48 --seed 5 --spp 32 --shards 2 --out "$work/edited.exr")
+"$penumbra" farm submit "${edited[@]}" >"$work/submit.log" 2>&1 || { cat "$work/submit.log"; fail "submit"; }
+mapfile -t ids < <(job_ids)
+slurm_wait_jobs -t 300 "${ids[@]}"
+[[ -f $work/edited.exr ]] || fail "no image of the scene file"
+sed -i 's/"red": { "model": "lambert", "albedo": \[0.63, 0.065, 0.05\] }/"red": { "model": "lambert", "albedo": [0.05, 0.065, 0.63] }/' "$scene_copy"
+grep -q '0.05, 0.065, 0.63' "$scene_copy" || fail "the scene edit did not apply"
+"$penumbra" farm submit "${edited[@]}" >"$work/submit.log" 2>&1 || { cat "$work/submit.log"; fail "resubmit"; }
+grep -q "resuming: 0 of 2 shards present" "$work/submit.log" || { cat "$work/submit.log"; fail "old shards kept"; }
+grep -q "rendered from other scene content" "$work/submit.log" || fail "no reason for the refusal"
+mapfile -t ids < <(job_ids)
+slurm_wait_jobs -t 300 "${ids[@]}"
+"$penumbra" farm status --out "$work/edited.exr" | grep -q "2 of 2 shards done" || fail "re-rendered"
+
+# 4. A study split over three tasks and gathered.
 study=(--scene cornell-box --size 16x16 --spp 1,4 --seeds 2 --strategy mis,bsdf
   --reference-spp 32 --repeats 1)
 "$penumbra" study "${study[@]}" --out "$work/study-one" >"$work/study.log" 2>&1 ||

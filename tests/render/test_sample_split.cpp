@@ -230,6 +230,7 @@ TEST_CASE("sample split: merge refuses other renders, overlaps, gaps and damaged
   // Files: not a piece, truncated, changed after writing.
   const std::string path = scratch("damaged.exr");
   render::savePartialRender(path, a);
+  const std::string description = *image::loadExrChannels(path).attribute("penumbra.partial");
   std::string bytes;
   {
     std::ifstream in(path, std::ios::binary);
@@ -239,15 +240,40 @@ TEST_CASE("sample split: merge refuses other renders, overlaps, gaps and damaged
   }
   std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
   CHECK_THROWS_WITH(render::loadPartialRender(path), ContainsSubstring(path));
-  // A changed sum that still decodes: found by the sums' hash. (The
-  // description is edited to say other sums were written.)
-  std::string edited = bytes;
-  const size_t at = edited.find("\"sumsHash\":\"");
-  REQUIRE(at != std::string::npos);
-  edited[at + 12] = edited[at + 12] == '0' ? '1' : '0';
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << edited;
+  // A file rewritten with other sums under the original description: the
+  // sums' hash finds it. A description that disagrees with the image: named.
+  auto rewrite = [&](const render::NodeSums& sums, const std::string& text) {
+    // The piece file's layout (render/partial_render.h): one layer per node.
+    std::vector<image::ExrLayer> layers;
+    for (size_t k = 0; k < sums.nodes.size(); ++k)
+      layers.push_back({"sum.L" + std::to_string(sums.nodes[k].level) + ".I" +
+                            std::to_string(sums.nodes[k].index),
+                        {"R", "G", "B"},
+                        sums.sums[k]});
+    image::saveExrLayers(path, image::Image(5, 3), layers, {{"penumbra.partial", text}});
+  };
+  render::NodeSums changed = a.sums;
+  changed.sums[0].rgba[4] += 1.0f;
+  rewrite(changed, description);
   CHECK_THROWS_WITH(render::loadPartialRender(path),
                     ContainsSubstring("do not match the hash written with them"));
+  rewrite(a.sums, description);
+  CHECK_NOTHROW(render::loadPartialRender(path));  // the rewrite itself is faithful
+  std::string wider = description;
+  wider.replace(wider.find("\"width\":5"), 9, "\"width\":6");
+  rewrite(a.sums, wider);
+  CHECK_THROWS_WITH(render::loadPartialRender(path),
+                    ContainsSubstring("the image is 5x3, its description says 6x3"));
+  std::string otherNodes = description;
+  otherNodes.replace(otherNodes.find("\"samples\":[0,32]"), 16, "\"samples\":[0,48]");
+  rewrite(a.sums, otherNodes);
+  CHECK_THROWS_WITH(render::loadPartialRender(path),
+                    ContainsSubstring("\"nodes\" do not cover samples 0:48"));
+  render::NodeSums missingLayer = a.sums;
+  missingLayer.nodes[0].index += 1;  // written under another node's name
+  rewrite(missingLayer, description);
+  CHECK_THROWS_WITH(render::loadPartialRender(path),
+                    ContainsSubstring("channel 'sum.L1.I0.R' is missing"));
   image::Image plain(5, 3);
   image::saveExr(path, plain);
   CHECK_THROWS_WITH(render::loadPartialRender(path),
