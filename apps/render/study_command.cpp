@@ -380,8 +380,8 @@ int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& poi
     const std::string source = part.string();
     nlohmann::json where;
     try {
-      where =
-          nlohmann::json::parse(readFile(part.parent_path() / (part.stem().string() + ".json")));
+      where = nlohmann::json::parse(
+          readFile((part.parent_path() / (part.stem().string() + ".json")).string()));
     } catch (const nlohmann::json::exception& e) {
       throw Error(fmt::format("{}: its .json beside it is unreadable ({})", source, e.what()));
     }
