@@ -36,6 +36,48 @@ std::string shardPath(const FarmPlan& plan, size_t index) {
 
 namespace {
 
+// A plan file: JSON of the given "format", else one line naming the file.
+nlohmann::json planDocument(const std::string& text, const std::string& source,
+                            const char* format) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(fmt::format("{}: not JSON ({})", source, e.what()));
+  }
+  if (scene::readString(doc, "format", "", source) != format)
+    throw Error(fmt::format("{}: not a {} plan", source, format));
+  return doc;
+}
+
+std::vector<std::string> readStrings(const nlohmann::json& doc, const char* key,
+                                     const std::string& source) {
+  const nlohmann::json& list = scene::require(doc, key, source);
+  if (!list.is_array()) scene::throwWrongType(source, key, "an array", list);
+  std::vector<std::string> strings;
+  for (const auto& item : list) {
+    if (!item.is_string()) scene::throwWrongType(source, key, "an array of strings", item);
+    strings.push_back(item.get<std::string>());
+  }
+  return strings;
+}
+
+// [[first, end], ...], each number at most `max`.
+std::vector<render::SampleRange> readRanges(const nlohmann::json& doc, const char* key,
+                                            uint32_t max, const std::string& source) {
+  const nlohmann::json& list = scene::require(doc, key, source);
+  if (!list.is_array() || list.empty() || list.size() > 100000)
+    throw Error(fmt::format("{}: \"{}\" is not a list of [first, end] ranges", source, key));
+  std::vector<render::SampleRange> ranges;
+  for (const auto& r : list) {
+    if (!r.is_array() || r.size() != 2)
+      throw Error(fmt::format("{}: \"{}\" is not a list of [first, end] ranges", source, key));
+    ranges.push_back({uint32_t(scene::toInteger(r[0], source, key, 0, max)),
+                      uint32_t(scene::toInteger(r[1], source, key, 0, max))});
+  }
+  return ranges;
+}
+
 std::string directives(const FarmPlan& plan, const char* name, const std::string& log) {
   std::string text = fmt::format("#SBATCH --job-name={}\n#SBATCH --output={}\n", name, log);
   text += "#SBATCH --ntasks=1\n";
@@ -112,22 +154,10 @@ std::string planToJson(const FarmPlan& plan) {
 }
 
 FarmPlan planFromJson(const std::string& text, const std::string& source) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(fmt::format("{}: not JSON ({})", source, e.what()));
-  }
-  if (scene::readString(doc, "format", "", source) != "penumbra-farm")
-    throw Error(fmt::format("{}: not a penumbra farm plan", source));
+  const nlohmann::json doc = planDocument(text, source, "penumbra-farm");
   FarmPlan plan;
   plan.penumbra = scene::requireString(doc, "penumbra", source);
-  const nlohmann::json& args = scene::require(doc, "renderArgs", source);
-  if (!args.is_array()) scene::throwWrongType(source, "renderArgs", "an array", args);
-  for (const auto& a : args) {
-    if (!a.is_string()) scene::throwWrongType(source, "renderArgs", "an array of strings", a);
-    plan.renderArgs.push_back(a.get<std::string>());
-  }
+  plan.renderArgs = readStrings(doc, "renderArgs", source);
   plan.sceneHash = scene::requireString(doc, "sceneHash", source);
   plan.settingsHash = scene::requireString(doc, "settingsHash", source);
   plan.build = scene::requireString(doc, "build", source);
@@ -137,15 +167,7 @@ FarmPlan planFromJson(const std::string& text, const std::string& source) {
   plan.blockSpp =
       uint32_t(scene::toInteger(scene::require(doc, "blockSpp", source), source, "blockSpp", 1,
                                 render::PathTracer::kMaxSamplesPerFrame));
-  const nlohmann::json& shards = scene::require(doc, "shards", source);
-  if (!shards.is_array() || shards.empty() || shards.size() > 100000)
-    throw Error(fmt::format("{}: \"shards\" is not a list of [first, end] ranges", source));
-  for (const auto& s : shards) {
-    if (!s.is_array() || s.size() != 2)
-      throw Error(fmt::format("{}: \"shards\" is not a list of [first, end] ranges", source));
-    plan.shards.push_back({uint32_t(scene::toInteger(s[0], source, "shards", 0, plan.totalSpp)),
-                           uint32_t(scene::toInteger(s[1], source, "shards", 0, plan.totalSpp))});
-  }
+  plan.shards = readRanges(doc, "shards", plan.totalSpp, source);
   plan.out = scene::requireString(doc, "out", source);
   plan.work = scene::requireString(doc, "work", source);
   plan.slurm.partition = scene::readString(doc, "partition", "", source);
@@ -279,31 +301,11 @@ std::string studyPlanToJson(const StudyFarmPlan& plan) {
 }
 
 StudyFarmPlan studyPlanFromJson(const std::string& text, const std::string& source) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(fmt::format("{}: not JSON ({})", source, e.what()));
-  }
-  if (scene::readString(doc, "format", "", source) != "penumbra-farm-study")
-    throw Error(fmt::format("{}: not a penumbra farm study plan", source));
+  const nlohmann::json doc = planDocument(text, source, "penumbra-farm-study");
   StudyFarmPlan plan;
   plan.penumbra = scene::requireString(doc, "penumbra", source);
-  const nlohmann::json& args = scene::require(doc, "studyArgs", source);
-  if (!args.is_array()) scene::throwWrongType(source, "studyArgs", "an array", args);
-  for (const auto& a : args) {
-    if (!a.is_string()) scene::throwWrongType(source, "studyArgs", "an array of strings", a);
-    plan.studyArgs.push_back(a.get<std::string>());
-  }
-  const nlohmann::json& parts = scene::require(doc, "parts", source);
-  if (!parts.is_array() || parts.empty() || parts.size() > 100000)
-    throw Error(fmt::format("{}: \"parts\" is not a list of [first, end] ranges", source));
-  for (const auto& r : parts) {
-    if (!r.is_array() || r.size() != 2)
-      throw Error(fmt::format("{}: \"parts\" is not a list of [first, end] ranges", source));
-    plan.parts.push_back({uint32_t(scene::toInteger(r[0], source, "parts", 0, UINT32_MAX)),
-                          uint32_t(scene::toInteger(r[1], source, "parts", 0, UINT32_MAX))});
-  }
+  plan.studyArgs = readStrings(doc, "studyArgs", source);
+  plan.parts = readRanges(doc, "parts", UINT32_MAX, source);
   plan.out = scene::requireString(doc, "out", source);
   plan.work = scene::requireString(doc, "work", source);
   return plan;
