@@ -91,19 +91,24 @@ std::optional<std::string> refusedSize(uint64_t width, uint64_t height, ImageDec
 // that comes before any image data from a null buffer (memcpy(NULL, p, 0),
 // undefined behaviour; found by fuzzing, tests/fuzz/corpus/image/
 // finding-png-empty-idat). Such a PNG is legal but pointless; it is refused
-// before stb sees it. The walk also stops at the first chunk that overruns
-// the file, which stb reports itself.
+// before stb sees it. stb acts on a chunk once its 8-byte header (length,
+// type) is read, before its CRC, so the walk looks at every header that fits
+// in the file, even one whose CRC is cut off (second finding,
+// finding-png-empty-idat-truncated). It stops at the first chunk that
+// overruns the file, which stb reports itself.
 std::optional<std::string> pngProblem(const unsigned char* bytes, size_t size) {
   static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (size < 8 || std::memcmp(bytes, kSignature, 8) != 0) return std::nullopt;
+  constexpr size_t kChunkHeader = 8, kChunkCrc = 4;
   size_t at = 8;
-  while (size - at >= 12) {
+  while (size - at >= kChunkHeader) {
     const uint32_t length = uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 |
                             uint32_t(bytes[at + 2]) << 8 | uint32_t(bytes[at + 3]);
     if (std::memcmp(bytes + at + 4, "IDAT", 4) == 0 && length == 0)
       return std::string("a PNG with an empty IDAT chunk (not supported)");
-    if (length > size - at - 12) break;
-    at += 12 + size_t(length);
+    const uint64_t chunk = uint64_t(kChunkHeader) + length + kChunkCrc;
+    if (chunk > size - at) break;
+    at += size_t(chunk);
   }
   return std::nullopt;
 }

@@ -594,3 +594,21 @@ TEST_CASE("a PNG with an empty IDAT chunk is refused before decoding", "[gltf]")
   REQUIRE(decoding.failures.count(3) == 1);
   CHECK_THAT(decoding.failures[3], ContainsSubstring("empty IDAT chunk"));
 }
+
+// The second finding (finding-png-empty-idat-truncated): the same empty IDAT
+// chunk as the file's last bytes, its CRC cut off. stb acts on the chunk's
+// header alone, so the check must look at a header whose chunk does not fit.
+TEST_CASE("a PNG ending in an empty IDAT header without its CRC is refused before decoding",
+          "[gltf]") {
+  const unsigned char png[] = {0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00,
+                               0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x01, 0x04, 0x00, 0x00,
+                               0x00, 0x04, 0x08, 0x06, 0x00, 0x00, 0x00, 0x68, 0x00, 0x00, 0x00,
+                               0x00, 0x00, 0x00, 0x00, 0x49, 0x44, 0x41, 0x54, 0x78, 0x60, 0x82};
+  tinygltf::Image image;
+  scene::gltf::ImageDecoding decoding;
+  std::string error, warning;
+  scene::gltf::decodeImage(&image, 2, &error, &warning, 0, 0, png, int(sizeof(png)), &decoding);
+  CHECK(image.image.empty());
+  REQUIRE(decoding.failures.count(2) == 1);
+  CHECK_THAT(decoding.failures[2], ContainsSubstring("empty IDAT chunk"));
+}
