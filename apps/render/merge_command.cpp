@@ -25,9 +25,19 @@ struct MergeOptions {
 int runMerge(const MergeOptions& o) {
   if (o.pieces.empty()) throw Error("merge: no pieces given");
   image::checkWritable(o.out);
+  // Every piece's description first (a refusal costs no pixel reads), then
+  // each piece's sums when the merge reaches it: one piece in memory at a time.
   std::vector<render::PartialRender> pieces;
-  for (const auto& path : o.pieces) pieces.push_back(render::loadPartialRender(path));
-  const render::MergedRender merged = render::mergePartialRenders(pieces, o.pieces, o.allowPartial);
+  for (const auto& path : o.pieces) pieces.push_back(render::loadPartialRenderDescription(path));
+  auto loadSums = [&](size_t k) {
+    render::PartialRender piece = render::loadPartialRender(o.pieces[k]);
+    if (!(piece.identity == pieces[k].identity && piece.range == pieces[k].range &&
+          piece.sumsHash == pieces[k].sumsHash))
+      throw Error(fmt::format("piece '{}': changed while it was being merged", o.pieces[k]));
+    return std::move(piece.sums);
+  };
+  const render::MergedRender merged =
+      render::mergePartialRenders(pieces, o.pieces, o.allowPartial, loadSums);
   const auto& id = pieces[0].identity;
   fmt::print("render: {} {}x{}, seed {}, {} samples in frames of {}, build {}\n",
              pieces[0].sceneName, id.width, id.height, id.seed, id.totalSpp, id.blockSpp, id.build);

@@ -199,25 +199,44 @@ uint64_t exrExtent(int lo, int hi) {
 }
 }  // namespace
 
-ExrChannels loadExrChannels(const std::string& path) {
+namespace {
+
+// Parses the header of a single-part scanline EXR file into `header`, which
+// the caller frees; throws naming the file (having freed it) otherwise.
+void parseScanlineHeader(const std::string& path, EXRHeader& header) {
   EXRVersion version;
+  InitEXRHeader(&header);
   if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS || version.multipart ||
       version.tiled)
     throw Error(fmt::format("image '{}': not a single-part scanline OpenEXR file", path));
-  EXRHeader header;
-  InitEXRHeader(&header);
   const char* err = nullptr;
-  auto fail = [&](const char* what) {
-    std::string reason = err ? err : what;
-    if (err) FreeEXRErrorMessage(err);
-    throw Error(fmt::format("image '{}': {}", path, reason));
-  };
   // A header that fails part-way has some attributes allocated already
   // (found by fuzzing: tests/fuzz/corpus/image/finding-exr-header-leak).
   if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
-    fail("unreadable header");
+    std::string reason = err ? err : "unreadable header";
+    if (err) FreeEXRErrorMessage(err);
+    throw Error(fmt::format("image '{}': {}", path, reason));
   }
+}
+
+ExrAttributes stringAttributes(const EXRHeader& header) {
+  ExrAttributes attributes;
+  for (int a = 0; a < header.num_custom_attributes; ++a) {
+    const EXRAttribute& attribute = header.custom_attributes[a];
+    if (std::string_view(attribute.type) == "string" && attribute.size >= 0)
+      attributes.emplace_back(
+          attribute.name,
+          std::string(reinterpret_cast<const char*>(attribute.value), size_t(attribute.size)));
+  }
+  return attributes;
+}
+
+}  // namespace
+
+ExrChannels loadExrChannels(const std::string& path) {
+  EXRHeader header;
+  parseScanlineHeader(path, header);
   const EXRBox2i window = header.data_window;
   const uint64_t declaredWidth = exrExtent(window.min_x, window.max_x),
                  declaredHeight = exrExtent(window.min_y, window.max_y);
@@ -238,18 +257,15 @@ ExrChannels loadExrChannels(const std::string& path) {
   InitEXRImage(&exr);
   // (A failed load frees the image's planes itself: FreeEXRImage here would
   // free them twice.)
+  const char* err = nullptr;
   if (LoadEXRImageFromFile(&exr, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
-    fail("unreadable pixels");
+    std::string reason = err ? err : "unreadable pixels";
+    if (err) FreeEXRErrorMessage(err);
+    throw Error(fmt::format("image '{}': {}", path, reason));
   }
   ExrChannels result;
-  for (int a = 0; a < header.num_custom_attributes; ++a) {
-    const EXRAttribute& attribute = header.custom_attributes[a];
-    if (std::string_view(attribute.type) == "string" && attribute.size >= 0)
-      result.attributes.emplace_back(
-          attribute.name,
-          std::string(reinterpret_cast<const char*>(attribute.value), size_t(attribute.size)));
-  }
+  result.attributes = stringAttributes(header);
   result.width = uint32_t(exr.width);
   result.height = uint32_t(exr.height);
   const size_t pixels = size_t(exr.width) * exr.height;
@@ -263,20 +279,27 @@ ExrChannels loadExrChannels(const std::string& path) {
   return result;
 }
 
-std::pair<uint64_t, uint64_t> exrSize(const std::string& path) {
-  EXRVersion version;
+ExrChannels loadExrHeader(const std::string& path) {
   EXRHeader header;
-  InitEXRHeader(&header);
-  const char* err = nullptr;
-  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS ||
-      ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
-    // Freed on failure too: a header that fails part-way has some attributes
-    // allocated already (found by fuzzing: tests/fuzz/corpus/image/finding-exr-header-leak).
-    FreeEXRHeader(&header);
-    std::string reason = err ? err : "not an OpenEXR file";
-    if (err) FreeEXRErrorMessage(err);
-    throw Error(fmt::format("image '{}': {}", path, reason));
-  }
+  parseScanlineHeader(path, header);
+  const EXRBox2i w = header.data_window;
+  ExrChannels result;
+  result.attributes = stringAttributes(header);
+  const uint64_t width = exrExtent(w.min_x, w.max_x), height = exrExtent(w.min_y, w.max_y);
+  FreeEXRHeader(&header);
+  if (width > kMaxExrPixels || height > kMaxExrPixels || width * height > kMaxExrPixels)
+    throw Error(
+        fmt::format("image '{}': its header declares {} x {} pixels, more than the "
+                    "limit of {} pixels",
+                    path, width, height, kMaxExrPixels));
+  result.width = uint32_t(width);
+  result.height = uint32_t(height);
+  return result;
+}
+
+std::pair<uint64_t, uint64_t> exrSize(const std::string& path) {
+  EXRHeader header;
+  parseScanlineHeader(path, header);
   const EXRBox2i w = header.data_window;
   FreeEXRHeader(&header);
   return {exrExtent(w.min_x, w.max_x), exrExtent(w.min_y, w.max_y)};

@@ -66,6 +66,9 @@ struct ExrChannels {
   const std::string* attribute(const std::string& name) const;
 };
 ExrChannels loadExrChannels(const std::string& path);
+// The size and string attributes of an EXR file from its header alone (no
+// channels), for readers that look before they load.
+ExrChannels loadExrHeader(const std::string& path);
 // 8-bit sRGB-encoded RGBA as PNG.
 void savePng(const std::string& path, const Image8& image);
 

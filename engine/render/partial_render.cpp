@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
@@ -74,7 +75,6 @@ std::string splitSettingsHash(const PathTracerSettings& s, const scene::Camera& 
 void savePartialRender(const std::string& path, const PartialRender& piece) {
   if (image::formatFromPath(path) != image::FileFormat::Exr)
     throw Error(fmt::format("output '{}': a piece of a split render is an .exr file", path));
-  const SampleTree tree(piece.identity.totalSpp, piece.identity.blockSpp);
   const auto& id = piece.identity;
   nlohmann::json doc;
   doc["format"] = kFormat;
@@ -99,15 +99,18 @@ void savePartialRender(const std::string& path, const PartialRender& piece) {
   std::vector<image::ExrLayer> layers;
   for (size_t k = 0; k < piece.sums.nodes.size(); ++k)
     layers.push_back({layerName(piece.sums.nodes[k]), {"R", "G", "B"}, piece.sums.sums[k]});
-  std::vector<const NodeSums*> self{&piece.sums};
-  uint64_t samples = 0;
-  const image::Image sum = combineNodes(tree, self, tree.root(), samples);
-  saveExrLayers(path, meanOf(sum, samples), layers, {{kAttribute, doc.dump()}});
+  // The piece's own mean, for EXR viewers: any summation order serves.
+  image::Image sum(id.width, id.height);
+  for (const auto& nodeSum : piece.sums.sums)
+    for (size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += nodeSum.rgba[i];
+  saveExrLayers(path, meanOf(sum, piece.range.count()), layers, {{kAttribute, doc.dump()}});
 }
 
-PartialRender loadPartialRender(const std::string& path) {
-  const image::ExrChannels exr = image::loadExrChannels(path);
-  const std::string where = fmt::format("piece '{}'", path);
+namespace {
+
+// The piece a file's header describes (no sums), and the tree nodes its
+// description lists, checked against its range; throws naming the file.
+PartialRender describedPiece(const image::ExrChannels& exr, const std::string& where) {
   const std::string* text = exr.attribute(kAttribute);
   if (!text)
     throw Error(
@@ -158,7 +161,6 @@ PartialRender loadPartialRender(const std::string& path) {
   if (!nodes.is_array() || nodes.size() != expected.size())
     throw Error(fmt::format("{}: \"nodes\" do not cover samples {}", where,
                             formatSampleRange(piece.range)));
-  const size_t pixels = size_t(id.width) * id.height;
   for (size_t k = 0; k < expected.size(); ++k) {
     const nlohmann::json& n = nodes[k];
     if (!n.is_array() || n.size() != 2 ||
@@ -167,18 +169,36 @@ PartialRender loadPartialRender(const std::string& path) {
             expected[k])
       throw Error(fmt::format("{}: \"nodes\" do not cover samples {}", where,
                               formatSampleRange(piece.range)));
+  }
+  piece.sumsHash = scene::requireString(doc, "sumsHash", where);
+  return piece;
+}
+
+}  // namespace
+
+PartialRender loadPartialRenderDescription(const std::string& path) {
+  return describedPiece(image::loadExrHeader(path), fmt::format("piece '{}'", path));
+}
+
+PartialRender loadPartialRender(const std::string& path) {
+  const image::ExrChannels exr = image::loadExrChannels(path);
+  const std::string where = fmt::format("piece '{}'", path);
+  PartialRender piece = describedPiece(exr, where);
+  const auto& id = piece.identity;
+  const size_t pixels = size_t(id.width) * id.height;
+  for (const SampleTree::Node& node : SampleTree(id.totalSpp, id.blockSpp).cover(piece.range)) {
     image::Image sum(id.width, id.height);
     for (size_t c = 0; c < 3; ++c) {
-      const std::string channel = layerName(expected[k]) + "." + "RGB"[c];
+      const std::string channel = layerName(node) + "." + "RGB"[c];
       const std::vector<float>* values = exr.find(channel);
       if (!values || values->size() != pixels)
         throw Error(fmt::format("{}: channel '{}' is missing", where, channel));
       for (size_t i = 0; i < pixels; ++i) sum.rgba[i * 4 + c] = (*values)[i];
     }
-    piece.sums.nodes.push_back(expected[k]);
+    piece.sums.nodes.push_back(node);
     piece.sums.sums.push_back(std::move(sum));
   }
-  if (sumsHash(piece.sums) != scene::requireString(doc, "sumsHash", where))
+  if (sumsHash(piece.sums) != piece.sumsHash)
     throw Error(
         fmt::format("{}: its sums do not match the hash written with them (the file "
                     "was changed or damaged after it was rendered)",
@@ -208,7 +228,8 @@ std::string difference(const SplitRenderIdentity& a, const SplitRenderIdentity& 
 }  // namespace
 
 MergedRender mergePartialRenders(const std::vector<PartialRender>& pieces,
-                                 const std::vector<std::string>& names, bool allowPartial) {
+                                 const std::vector<std::string>& names, bool allowPartial,
+                                 const std::function<NodeSums(size_t)>& loadSums) {
   if (pieces.empty()) throw Error("merge: no pieces given");
   const SplitRenderIdentity& id = pieces[0].identity;
   for (size_t k = 1; k < pieces.size(); ++k)
@@ -240,16 +261,35 @@ MergedRender mergePartialRenders(const std::vector<PartialRender>& pieces,
                     "--allow-partial merges what is there)",
                     list, id.totalSpp));
   }
-  const SampleTree tree(id.totalSpp, id.blockSpp);
-  std::vector<const NodeSums*> sums;
-  for (const auto& piece : pieces) {
-    sums.push_back(&piece.sums);
+  for (const auto& piece : pieces)
     if (std::find(merged.devices.begin(), merged.devices.end(), piece.device) ==
         merged.devices.end())
       merged.devices.push_back(piece.device);
+
+  // Pieces and gaps in sample order through the fold: one piece's sums in
+  // memory at a time, plus at most one waiting node per tree level.
+  const SampleTree tree(id.totalSpp, id.blockSpp);
+  SampleTreeFold fold(tree);
+  auto addGap = [&](SampleRange gap) {
+    for (const auto& node : tree.cover(gap)) fold.add(node, {});
+  };
+  uint32_t at = 0;
+  for (size_t k : order) {
+    const SampleRange& r = pieces[k].range;
+    if (r.begin > at) addGap({at, r.begin});
+    NodeSums sums = loadSums ? loadSums(k) : pieces[k].sums;
+    const size_t values = size_t(id.width) * id.height * 4;
+    if (sums.nodes != tree.cover(r) || sums.sums.size() != sums.nodes.size() ||
+        std::any_of(sums.sums.begin(), sums.sums.end(),
+                    [&](const image::Image& sum) { return sum.rgba.size() != values; }))
+      throw Error(fmt::format("merge: '{}' does not hold the tree nodes of samples {}", names[k],
+                              formatSampleRange(r)));
+    for (size_t n = 0; n < sums.nodes.size(); ++n) fold.add(sums.nodes[n], std::move(sums.sums[n]));
+    merged.samples += r.count();
+    at = r.end;
   }
-  const image::Image sum = combineNodes(tree, sums, tree.root(), merged.samples);
-  merged.image = meanOf(sum, merged.samples);
+  if (at < id.totalSpp) addGap({at, id.totalSpp});
+  merged.image = meanOf(fold.result(), merged.samples);
   return merged;
 }
 

@@ -10,6 +10,7 @@
 // the build), the piece (its sample range, device, nodes) and a hash of the
 // sums, so a file that was changed after it was written is refused.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,9 @@ struct PartialRender {
   std::string sceneName;    // for messages
   ToneMapping toneMapping;  // how a merged PNG is tone-mapped
   SampleRange range;
-  std::string device;  // the adapter that rendered it
-  NodeSums sums;
+  std::string device;    // the adapter that rendered it
+  std::string sumsHash;  // of the sums as written (content_hash.h)
+  NodeSums sums;         // empty when only the description was read
 };
 
 // Atomic (a temporary file renamed into place): an interrupted write leaves
@@ -55,6 +57,10 @@ void savePartialRender(const std::string& path, const PartialRender& piece);
 // do not match their hash (a changed or damaged file), nodes that do not
 // cover the range stated.
 PartialRender loadPartialRender(const std::string& path);
+// The piece a file describes, from its header alone (sums empty; the same
+// checks on the description, none on the sums): merge looks at every piece
+// before it loads any.
+PartialRender loadPartialRenderDescription(const std::string& path);
 
 struct MergedRender {
   image::Image image;       // linear RGB mean, alpha 1
@@ -66,8 +72,13 @@ struct MergedRender {
 // Merges pieces (names: their files, for messages). Throws penumbra::Error
 // in one line: pieces of different renders (naming the field that differs
 // and both files), overlapping pieces (naming both), or, unless
-// `allowPartial`, missing samples (naming the ranges).
+// `allowPartial`, missing samples (naming the ranges). All of that is checked
+// on the pieces' descriptions before any sums are read. `loadSums`, if
+// given, returns piece k's sums when the merge reaches it (in sample order,
+// once each, so a merge of files holds one piece at a time); otherwise the
+// pieces' own sums are used.
 MergedRender mergePartialRenders(const std::vector<PartialRender>& pieces,
-                                 const std::vector<std::string>& names, bool allowPartial);
+                                 const std::vector<std::string>& names, bool allowPartial,
+                                 const std::function<NodeSums(size_t)>& loadSums = {});
 
 }  // namespace penumbra::render

@@ -155,22 +155,43 @@ NodeSums renderSampleRange(PathTracer& tracer, const PathTracerSettings& setting
   return result;
 }
 
-image::Image combineNodes(const SampleTree& tree, const std::vector<const NodeSums*>& pieces,
-                          SampleTree::Node node, uint64_t& samples) {
-  for (const NodeSums* piece : pieces)
-    for (size_t k = 0; k < piece->nodes.size(); ++k)
-      if (piece->nodes[k] == node) {
-        samples += tree.samples(node).count();
-        return piece->sums[k];
+void SampleTreeFold::add(SampleTree::Node node, image::Image sum) {
+  if (!tree_.exists(node) || tree_.blocks(node).first != nextBlock_)
+    throw Error(fmt::format("sample tree: node {}.{} does not follow block {}", node.level,
+                            node.index, nextBlock_));
+  nextBlock_ = tree_.blocks(node).second;
+  const SampleTree::Node root = tree_.root();
+  while (node != root) {
+    const SampleTree::Node parent{node.level + 1, node.index / 2};
+    if (node.index % 2 == 1) {
+      // A right child: nodes arrive in block order and fold as soon as they
+      // can, so the newest waiting entry is its left sibling.
+      if (waiting_.empty() || waiting_.back().node != SampleTree::Node{node.level, node.index - 1})
+        throw Error(fmt::format("sample tree: node {}.{} came without its left sibling", node.level,
+                                node.index));
+      Entry left = std::move(waiting_.back());
+      waiting_.pop_back();
+      if (left.sum.rgba.empty()) {
+        // the right child's value stands
+      } else if (sum.rgba.empty()) {
+        sum = std::move(left.sum);
+      } else {
+        addInto(left.sum, sum);
+        sum = std::move(left.sum);
       }
-  if (node.level == 0) return {};
-  image::Image left = combineNodes(tree, pieces, {node.level - 1, node.index * 2}, samples);
-  const SampleTree::Node rightNode{node.level - 1, node.index * 2 + 1};
-  if (!tree.exists(rightNode)) return left;
-  image::Image right = combineNodes(tree, pieces, rightNode, samples);
-  if (left.rgba.empty()) return right;
-  if (!right.rgba.empty()) addInto(left, right);
-  return left;
+    } else if (tree_.exists({node.level, node.index + 1})) {
+      break;  // wait for the right sibling
+    }
+    node = parent;
+  }
+  waiting_.push_back({node, std::move(sum)});
+}
+
+image::Image SampleTreeFold::result() {
+  if (nextBlock_ != tree_.blockCount() || waiting_.size() != 1)
+    throw Error(
+        fmt::format("sample tree: blocks {} to {} were not added", nextBlock_, tree_.blockCount()));
+  return std::move(waiting_.back().sum);
 }
 
 image::Image meanOf(const image::Image& sum, uint64_t samples) {

@@ -93,13 +93,32 @@ NodeSums renderSampleRange(PathTracer& tracer, const PathTracerSettings& setting
                            const std::function<void(uint32_t)>& progress = {},
                            FrameStats* stats = nullptr);
 
-// The value of `node` from the stored nodes of any number of pieces (which
-// must not overlap): a stored node as it is, else its children combined by
-// the tree's rule. `samples` receives how many samples the value holds
-// (less than the node's when nodes are missing; 0 and an empty image when
-// none is present under it).
-image::Image combineNodes(const SampleTree& tree, const std::vector<const NodeSums*>& pieces,
-                          SampleTree::Node node, uint64_t& samples);
+// Adds up a render's tree from its nodes given in sample order, holding at
+// most one image per tree level: the merge streams pieces through it one at
+// a time. Each node is folded into its parent by the tree's rule as soon as
+// its sibling arrives (or at once when it has none), so the root's value is
+// the same floats added in the same order however the nodes were grouped
+// into pieces. An empty image stands for samples that are missing: a parent
+// of an empty child takes the other child's value.
+class SampleTreeFold {
+ public:
+  explicit SampleTreeFold(const SampleTree& tree) : tree_(tree) {}
+  // The next node: its first block must follow the last block added (throws
+  // penumbra::Error otherwise).
+  void add(SampleTree::Node node, image::Image sum);
+  // The root's value once every block has been added (throws otherwise);
+  // empty when every node was.
+  image::Image result();
+
+ private:
+  struct Entry {
+    SampleTree::Node node;
+    image::Image sum;
+  };
+  const SampleTree& tree_;
+  std::vector<Entry> waiting_;  // left children whose right sibling has not come yet
+  uint32_t nextBlock_ = 0;
+};
 
 // sum / samples per pixel, alpha 1: the image of a merged render.
 image::Image meanOf(const image::Image& sum, uint64_t samples);
