@@ -3,12 +3,13 @@
 # UndefinedBehaviorSanitizer (clang, any report fatal, leaks included) into
 # ./build-sanitize (CMakePresets.json "sanitize"), then its ctest: the
 # host-side test cases, the GPU cases on lavapipe in one process, and each
-# libFuzzer target for PENUMBRA_FUZZ_SECONDS (60) from its committed corpus
-# (tests/fuzz). README's test command runs it
-# after the main suite; docs/security.md says what it covers and costs.
+# libFuzzer target for a fixed number of executions (at most
+# PENUMBRA_FUZZ_SECONDS, 300) from its committed corpus (tests/fuzz).
+# README's test command runs it after the main suite; docs/security.md says
+# what it covers and costs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake --preset sanitize -DPENUMBRA_FUZZ_SECONDS="${PENUMBRA_FUZZ_SECONDS:-60}"
+cmake --preset sanitize -DPENUMBRA_FUZZ_SECONDS="${PENUMBRA_FUZZ_SECONDS:-300}"
 cmake --build --preset sanitize --parallel "$(nproc)" --target penumbra_tests fuzz_gltf fuzz_scene \
   fuzz_settings fuzz_image
 # Third-party libraries loaded at run time keep allocations LeakSanitizer

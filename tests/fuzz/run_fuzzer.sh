@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
-# Runs one libFuzzer target for a bounded time from a committed corpus:
-#   run_fuzzer.sh FUZZER CORPUS_DIR DICTIONARY SECONDS
+# Runs one libFuzzer target from a committed corpus, for at most SECONDS and,
+# if RUNS is given, at most RUNS executions:
+#   run_fuzzer.sh FUZZER CORPUS_DIR DICTIONARY SECONDS [RUNS]
 # New inputs go to a scratch folder (the committed corpus is only read). Fails
 # on any crash, sanitizer report, leak, timeout (10 s per input), or input
 # over 4 GB of memory; the reproducer is left in the scratch folder and
 # named in the output. Prints the executions reached.
 set -u
-fuzzer="$1" corpus="$2" dict="$3" seconds="$4"
+fuzzer="$1" corpus="$2" dict="$3" seconds="$4" runs="${5:-}"
 scratch=$(mktemp -d)
 export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan.supp"
 mkdir -p "$scratch/new" "$scratch/artifacts"
-# The same seed every run: the same binary and corpus explore the same
-# inputs (how far they get still depends on the machine's speed).
-"$fuzzer" -seed=1 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
+# The same seed every run, and with RUNS the same number of executions on
+# every machine that is not cut short by SECONDS, so CI fuzzes as deep as a
+# local run (the inputs can still drift apart: docs/security.md).
+limits=(-max_total_time="$seconds")
+[ -z "$runs" ] || limits+=(-runs="$runs")
+"$fuzzer" -seed=1 "${limits[@]}" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
   -dict="$dict" -artifact_prefix="$scratch/artifacts/" -print_final_stats=1 \
   "$scratch/new" "$corpus" >"$scratch/log" 2>&1
 status=$?
