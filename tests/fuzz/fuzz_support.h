@@ -31,11 +31,15 @@ void expectCleanRejection(Load&& load) {
   }
 }
 
-// A folder of this process's own under the system temp directory.
+// A folder of this process's own under the system temp directory. Its name
+// has the same length whatever the process id, so the paths in the loaders'
+// messages, and the code that handles them, do not vary from run to run
+// (run_fuzzer.sh's runs are reproducible).
 inline const std::filesystem::path& workFolder() {
   static const std::filesystem::path folder = [] {
-    auto path =
-        std::filesystem::temp_directory_path() / ("penumbra-fuzz-" + std::to_string(getpid()));
+    char name[32];
+    std::snprintf(name, sizeof(name), "penumbra-fuzz-%010ld", long(getpid()));
+    auto path = std::filesystem::temp_directory_path() / name;
     std::filesystem::create_directories(path);
     return path;
   }();

@@ -12,15 +12,25 @@ scratch=$(mktemp -d)
 export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan.supp"
 mkdir -p "$scratch/new" "$scratch/artifacts"
 # The same seed every run, and with RUNS the same number of executions on
-# every machine that is not cut short by SECONDS, so CI fuzzes as deep as a
-# local run (the inputs can still drift apart: docs/security.md).
+# every machine that is not cut short by SECONDS. Such a run tries exactly
+# the same inputs every time, so CI finds what a local run finds, given two
+# more things: address-space randomisation off (libFuzzer's comparison
+# tracing feeds operand values, pointers included, into its mutations) and
+# no timed re-reading of the output folder (-reload=0). Where the
+# personality call is not permitted, the run is randomised and says so.
 limits=(-max_total_time="$seconds")
 [ -z "$runs" ] || limits+=(-runs="$runs")
-"$fuzzer" -seed=1 "${limits[@]}" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
+fixed_layout=()
+if setarch "$(uname -m)" -R true 2>/dev/null; then
+  fixed_layout=(setarch "$(uname -m)" -R)
+else
+  echo "run_fuzzer.sh: cannot turn off address-space randomisation; this run is not reproducible"
+fi
+"${fixed_layout[@]}" "$fuzzer" -seed=1 "${limits[@]}" -reload=0 -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
   -dict="$dict" -artifact_prefix="$scratch/artifacts/" -print_final_stats=1 \
   "$scratch/new" "$corpus" >"$scratch/log" 2>&1
 status=$?
-grep -E "^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)" "$scratch/log"
+grep -E "^(#[0-9]+[[:space:]]+DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)" "$scratch/log"
 if [ $status -ne 0 ]; then
   tail -60 "$scratch/log"
   echo "run_fuzzer.sh: $(basename "$fuzzer") failed (status $status); reproducer(s): $(ls "$scratch/artifacts")" >&2
