@@ -12,12 +12,13 @@ scratch=$(mktemp -d)
 export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan.supp"
 mkdir -p "$scratch/new" "$scratch/artifacts"
 # The same seed every run, and with RUNS the same number of executions on
-# every machine that is not cut short by SECONDS. Such a run tries exactly
-# the same inputs every time, so CI finds what a local run finds, given two
-# more things: address-space randomisation off (libFuzzer's comparison
-# tracing feeds operand values, pointers included, into its mutations) and
-# no timed re-reading of the output folder (-reload=0). Where the
-# personality call is not permitted, the run is randomised and says so.
+# every machine that is not cut short by SECONDS. The same binary then
+# tries exactly the same inputs every time, given two more things:
+# address-space randomisation off (libFuzzer's comparison tracing feeds
+# operand values, pointers included, into its mutations) and no timed
+# re-reading of the output folder (-reload=0). (A build in another folder is
+# another binary and tries other inputs.) Where the personality call is not
+# permitted, the run is randomised and says so.
 limits=(-max_total_time="$seconds")
 [ -z "$runs" ] || limits+=(-runs="$runs")
 fixed_layout=()

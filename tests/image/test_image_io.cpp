@@ -125,6 +125,8 @@ TEST_CASE("PNG output is written whole", "[image]") {
 // file is refused with a reason.
 TEST_CASE("an EXR header that fails part-way is refused and freed", "[image]") {
   const std::string path = test::dataPath("images/exr_header_fails_late.exr");
+  // A missing file would be refused with its path too: make sure it is there.
+  REQUIRE(fs::file_size(path) == 651);
   REQUIRE_THROWS_WITH(image::exrSize(path), Catch::Matchers::ContainsSubstring(path));
   REQUIRE_THROWS_WITH(image::loadExrChannels(path), Catch::Matchers::ContainsSubstring(path));
   REQUIRE_THROWS_WITH(image::loadExr(path), Catch::Matchers::ContainsSubstring(path));
