@@ -53,6 +53,13 @@ void writeAtomically(const std::string& path, Write write) {
   }
 }
 
+// tinyexr's error message, which is freed here, or `fallback` when it gave none.
+std::string takeExrError(const char* err, const char* fallback) {
+  std::string reason = err ? err : fallback;
+  if (err) FreeEXRErrorMessage(err);
+  return reason;
+}
+
 }  // namespace
 
 FileFormat formatFromPath(const std::string& path) {
@@ -98,8 +105,7 @@ void saveExr(const std::string& path, const Image& image) {
     int r =
         SaveEXR(image.rgba.data(), int(image.width), int(image.height), 4, 0, tmp.c_str(), &err);
     if (r != TINYEXR_SUCCESS) {
-      reason = err ? err : "tinyexr could not write the file";
-      if (err) FreeEXRErrorMessage(err);
+      reason = takeExrError(err, "tinyexr could not write the file");
       return false;
     }
     return true;
@@ -172,8 +178,7 @@ void saveExrLayers(const std::string& path, const Image& beauty,
     if (!canCreate(tmp, reason)) return false;
     const char* err = nullptr;
     if (SaveEXRImageToFile(&exr, &header, tmp.c_str(), &err) != TINYEXR_SUCCESS) {
-      reason = err ? err : "tinyexr could not write the file";
-      if (err) FreeEXRErrorMessage(err);
+      reason = takeExrError(err, "tinyexr could not write the file");
       return false;
     }
     return true;
@@ -214,9 +219,7 @@ void parseScanlineHeader(const std::string& path, EXRHeader& header) {
   // (found by fuzzing: tests/fuzz/corpus/image/finding-exr-header-leak).
   if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
-    std::string reason = err ? err : "unreadable header";
-    if (err) FreeEXRErrorMessage(err);
-    throw Error(fmt::format("image '{}': {}", path, reason));
+    throw Error(fmt::format("image '{}': {}", path, takeExrError(err, "unreadable header")));
   }
 }
 
@@ -260,9 +263,7 @@ ExrChannels loadExrChannels(const std::string& path) {
   const char* err = nullptr;
   if (LoadEXRImageFromFile(&exr, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
-    std::string reason = err ? err : "unreadable pixels";
-    if (err) FreeEXRErrorMessage(err);
-    throw Error(fmt::format("image '{}': {}", path, reason));
+    throw Error(fmt::format("image '{}': {}", path, takeExrError(err, "unreadable pixels")));
   }
   ExrChannels result;
   result.attributes = stringAttributes(header);

@@ -573,6 +573,23 @@ TEST_CASE("KHR_texture_transform numbers out of range are refused naming the tex
   CHECK(hasWarning(seven, "texCoord 7 is not supported"));
 }
 
+namespace {
+
+// Decodes `bytes` as glTF image `index`: no pixels, and one failure that
+// says `reason`.
+void checkRefusedBeforeDecoding(const unsigned char* bytes, size_t size, int index,
+                                const char* reason) {
+  tinygltf::Image image;
+  scene::gltf::ImageDecoding decoding;
+  std::string error, warning;
+  scene::gltf::decodeImage(&image, index, &error, &warning, 0, 0, bytes, int(size), &decoding);
+  CHECK(image.image.empty());
+  REQUIRE(decoding.failures.count(index) == 1);
+  CHECK_THAT(decoding.failures[index], ContainsSubstring(reason));
+}
+
+}  // namespace
+
 // A fuzz finding (tests/fuzz/corpus/image/finding-png-empty-idat): a PNG
 // whose first IDAT chunk is empty made stb_image memcpy from a null pointer
 // (undefined behaviour; the sanitizer build aborts on it). Penumbra refuses
@@ -586,13 +603,7 @@ TEST_CASE("a PNG with an empty IDAT chunk is refused before decoding", "[gltf]")
       0xbc, 0x00, 0x3c, 0x34, 0x4d, 0x37, 0x9c, 0x5e, 0x2f, 0x69, 0xae, 0x81, 0x54, 0xa4, 0x22,
       0x63, 0x13, 0x2b, 0x6a, 0xbb, 0xbb, 0x9f, 0x07, 0xb3, 0xc8, 0x27, 0xd9, 0x90, 0xe6, 0x4a,
       0xa1, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
-  tinygltf::Image image;
-  scene::gltf::ImageDecoding decoding;
-  std::string error, warning;
-  scene::gltf::decodeImage(&image, 3, &error, &warning, 0, 0, png, int(sizeof(png)), &decoding);
-  CHECK(image.image.empty());
-  REQUIRE(decoding.failures.count(3) == 1);
-  CHECK_THAT(decoding.failures[3], ContainsSubstring("empty IDAT chunk"));
+  checkRefusedBeforeDecoding(png, sizeof(png), 3, "empty IDAT chunk");
 }
 
 // The second finding (finding-png-empty-idat-truncated): the same empty IDAT
@@ -604,11 +615,5 @@ TEST_CASE("a PNG ending in an empty IDAT header without its CRC is refused befor
                                0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x01, 0x04, 0x00, 0x00,
                                0x00, 0x04, 0x08, 0x06, 0x00, 0x00, 0x00, 0x68, 0x00, 0x00, 0x00,
                                0x00, 0x00, 0x00, 0x00, 0x49, 0x44, 0x41, 0x54, 0x78, 0x60, 0x82};
-  tinygltf::Image image;
-  scene::gltf::ImageDecoding decoding;
-  std::string error, warning;
-  scene::gltf::decodeImage(&image, 2, &error, &warning, 0, 0, png, int(sizeof(png)), &decoding);
-  CHECK(image.image.empty());
-  REQUIRE(decoding.failures.count(2) == 1);
-  CHECK_THAT(decoding.failures[2], ContainsSubstring("empty IDAT chunk"));
+  checkRefusedBeforeDecoding(png, sizeof(png), 2, "empty IDAT chunk");
 }
