@@ -13,9 +13,11 @@
 #   SPIR-V for Vulkan. glslang writes a depfile, so editing an included
 #   .hlsli recompiles exactly the shaders that include it.
 # - HLSL (prelude.hlsli, through HLSL_INCLUDE_DIRS): where DXC was found (see
-#   below) it compiles it to DXIL for D3D12, -T lib_6_3 (ray-tracing stages),
-#   -T cs_6_3 (compute) or vs_6_0 / ps_6_0 (raster); without DXC the DXIL is empty and the D3D12 backend
-#   says so at pipeline creation. Whether DXC is here or not, glslang's HLSL
+#   below) it compiles it to validated DXIL for D3D12, -T lib_6_5 (ray-tracing
+#   stages), -T cs_6_3 (compute) or vs_6_0 / ps_6_0 (raster); without DXC the
+#   DXIL is empty and the D3D12 backend says so at pipeline creation. The
+#   Vulkan attributes the prelude spells ([[vk::binding]]) are for DXC's
+#   SPIR-V mode, so -Wno-ignored-attributes. Whether DXC is here or not, glslang's HLSL
 #   front-end compiles the same wrapper with PENUMBRA_HLSL_CHECK (the DXR
 #   intrinsics stubbed, hlsl/prelude.hlsli), for every effect variant's
 #   extremes, so an HLSL-only error in a stage or in the core fails the build.
@@ -38,8 +40,11 @@
 # the plain name holds every effect.
 
 # --- DXC: Windows SDK, Vulkan SDK, PATH, or -DDXC_EXECUTABLE=... -------------
+# Only a build with the D3D12 backend (WIN32: MSVC or the mingw-w64 cross
+# build) embeds DXIL; scripts/setup.sh installs DXC on Debian when
+# ../shared/tools/d3d12-on-linux is there.
 set(DXC_EXECUTABLE "" CACHE FILEPATH "DirectX Shader Compiler used to build the D3D12 backend's DXIL")
-if(NOT DXC_EXECUTABLE)
+if(WIN32 AND NOT DXC_EXECUTABLE)
   set(_dxc_hints)
   if(VCPKG_INSTALLED_DIR AND VCPKG_TARGET_TRIPLET)  # vcpkg's directx-dxc port
     list(APPEND _dxc_hints "${VCPKG_INSTALLED_DIR}/${VCPKG_TARGET_TRIPLET}/tools/directx-dxc")
@@ -53,17 +58,20 @@ if(NOT DXC_EXECUTABLE)
   foreach(dir ${_sdk_bins})
     list(APPEND _dxc_hints "${dir}/x64")
   endforeach()
-  find_program(_dxc_found NAMES dxc HINTS ${_dxc_hints} NO_CACHE)
+  # A cross build runs the build machine's DXC: look on its PATH too.
+  find_program(_dxc_found NAMES dxc HINTS ${_dxc_hints} NO_CACHE NO_CMAKE_FIND_ROOT_PATH)
   if(_dxc_found)
     set(DXC_EXECUTABLE "${_dxc_found}" CACHE FILEPATH "" FORCE)
   endif()
 endif()
-if(DXC_EXECUTABLE)
+set(PENUMBRA_HAVE_DXIL OFF)
+if(WIN32 AND DXC_EXECUTABLE)
+  set(PENUMBRA_HAVE_DXIL ON)
   message(STATUS "Penumbra: DXIL for the D3D12 backend is compiled with ${DXC_EXECUTABLE}")
-else()
-  message(STATUS "Penumbra: DXC NOT FOUND - this build embeds no DXIL, so the D3D12 backend "
-                 "cannot create pipelines. Install the Windows SDK or the Vulkan SDK, or pass "
-                 "-DDXC_EXECUTABLE=/path/to/dxc.")
+elseif(WIN32)
+  message(WARNING "Penumbra: DXC not found: this build embeds no DXIL and its D3D12 backend cannot create "
+                  "pipelines (install the Windows SDK or the Vulkan SDK, run scripts/setup.sh on Debian, "
+                  "or pass -DDXC_EXECUTABLE=/path/to/dxc)")
 endif()
 
 # --- The reflection tool: built here, or taken from a native build ---------
@@ -237,7 +245,7 @@ function(penumbra_add_shaders)
           VERBATIM)
         list(APPEND checks ${check})
       endif()
-      if(DXC_EXECUTABLE)
+      if(PENUMBRA_HAVE_DXIL)
         set(dxil ${out_dir}/${name}.dxil)
         if(stage STREQUAL "Compute")
           set(profile -T cs_6_3 -E main)
@@ -246,11 +254,12 @@ function(penumbra_add_shaders)
         elseif(stage STREQUAL "Pixel")
           set(profile -T ps_6_0 -E main)
         else()
-          set(profile -T lib_6_3)
+          # 6.5 for GeometryIndex() (DXR 1.1, D3D12_RAYTRACING_TIER_1_1).
+          set(profile -T lib_6_5)
         endif()
         add_custom_command(
           OUTPUT ${dxil}
-          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 ${effect_defines} -I${stage_dir} ${hlsl_include_flags} -Fo ${dxil}
+          COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 -Wno-ignored-attributes ${effect_defines} -I${stage_dir} ${hlsl_include_flags} -Fo ${dxil}
                   ${hlsl_input}
           DEPENDS ${abs} ${hlsl_depends}
           COMMENT "dxc ${name}"

@@ -55,6 +55,20 @@ BASE_PACKAGES=(
   python3-matplotlib chromium
 )
 BACKPORT_PACKAGES=(mesa-vulkan-drivers catch2 directx-headers-dev)
+# Wine runs the cross-built penumbra.exe on D3D12 (vkd3d-proton on lavapipe)
+# in the tests; installed with its recommended packages (winevulkan's Vulkan
+# loader, the X libraries its display driver opens), as that is what was
+# verified.
+WINE_PACKAGES=(wine wine64)
+# DXC and vkd3d-proton, which Debian does not package: prebuilt from their
+# release tags in ../shared/tools/d3d12-on-linux (its README says how), unpacked
+# into $PENUMBRA_D3D12_TOOLS; dxc is linked into /usr/local/bin, where the
+# Windows build finds it (cmake/Shaders.cmake), and scripts/wine-d3d12.sh takes
+# vkd3d-proton's DLLs from there.
+D3D12_KIT=${PENUMBRA_D3D12_KIT:-$(cd "$(dirname "$0")/../.." && pwd)/shared/tools/d3d12-on-linux}
+D3D12_TOOLS=${PENUMBRA_D3D12_TOOLS:-/usr/local/lib/penumbra}
+DXC_ARCHIVE=dxc-1.9.2607-linux-x64.tar.xz
+VKD3D_ARCHIVE=vkd3d-proton-3.0.1-win64-dlls.tar.xz
 # Source packages for the cross build's viewer: the versions of bookworm's
 # libimgui-dev and libglfw3-dev (source=version, pinned).
 WINDOWS_SOURCES=(imgui=1.86+ds-1 glfw3=3.3.8-1)
@@ -132,8 +146,29 @@ fetch_windows_sources() {
   done
 }
 
+# install_d3d12_tools: unpacks DXC and vkd3d-proton's DLLs from D3D12_KIT
+# into D3D12_TOOLS/<archive name> (skipped when there).
+install_d3d12_tools() {
+  if [ ! -f "$D3D12_KIT/$DXC_ARCHIVE" ] || [ ! -f "$D3D12_KIT/$VKD3D_ARCHIVE" ]; then
+    echo "setup.sh: no DXC/vkd3d-proton kit at $D3D12_KIT: the Windows build will embed no DXIL and the D3D12 tests will report themselves as not run"
+    return
+  fi
+  local archive dir
+  for archive in "$DXC_ARCHIVE" "$VKD3D_ARCHIVE"; do
+    dir="$D3D12_TOOLS/${archive%.tar.xz}"
+    if [ ! -f "$dir/.unpacked" ]; then
+      $SUDO rm -rf "$dir"
+      $SUDO mkdir -p "$dir"
+      $SUDO tar xJf "$D3D12_KIT/$archive" -C "$dir"
+      $SUDO touch "$dir/.unpacked"
+    fi
+  done
+  $SUDO ln -sfn "$D3D12_TOOLS/${DXC_ARCHIVE%.tar.xz}/bin/dxc" /usr/local/bin/dxc
+  echo "setup.sh: DXC and vkd3d-proton in $D3D12_TOOLS ($(/usr/local/bin/dxc --version 2>/dev/null | head -1))"
+}
+
 missing=()
-for p in "${BASE_PACKAGES[@]}" "${BACKPORT_PACKAGES[@]}"; do
+for p in "${BASE_PACKAGES[@]}" "${BACKPORT_PACKAGES[@]}" "${WINE_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 # Mesa must be the backports version (25.x); bookworm's 22.3 lacks ray tracing.
@@ -158,6 +193,7 @@ install_packages() {
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends "${BASE_PACKAGES[@]}"
   $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports "${BACKPORT_PACKAGES[@]}"
+  $SUDO apt-get install -y -q "${WINE_PACKAGES[@]}"
 }
 
 if [ ${#missing[@]} -eq 0 ]; then
@@ -166,4 +202,5 @@ else
   install_packages
 fi
 fetch_windows_sources
+install_d3d12_tools
 echo "setup.sh: done"

@@ -121,6 +121,13 @@ Ggx thinGlassGgx(DisneyMaterial m) {
   return disneyGgx(s);
 }
 
+// The glass lobe's distribution: the thin-glass one or the surface's own `g`.
+// (HLSL has no conditional operator on structs, so this is a function.)
+Ggx glassGgx(DisneyMaterial m, Ggx g) {
+  if (m.thin) return thinGlassGgx(m);
+  return g;
+}
+
 float3 dielectricSpecularF0(DisneyMaterial m) {
   return 0.08 * m.specular * lerp(splat3(1.0), tintColor(m.baseColor), m.specularTint);
 }
@@ -270,7 +277,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
     if (w.glass > 0.0) {
-      Ggx gg = m.thin ? thinGlassGgx(m) : g;
+      Ggx gg = glassGgx(m, g);
       if (!isSpecularGgx(gg) && eta != 1.0) {
         float fr = fresnelDielectric(dot(wo, wh), eta);
         float dg = ggxD(gg, wh) * ggxG2(gg, wo, wi) / (4.0 * wo.z * wi.z);
@@ -373,7 +380,7 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
     s.lobe = BSDF_LOBE_GLASS;
     // Reuse u0 to choose reflection or transmission.
     float uChoice = (u0 - w.pDiffuse - w.pSpecular) / w.pGlass;
-    Ggx gg = m.thin ? thinGlassGgx(m) : g;
+    Ggx gg = glassGgx(m, g);
     if (eta == 1.0) {
       // An index-matched boundary neither reflects nor bends light.
       s.wi = -woIn;
@@ -448,7 +455,7 @@ BsdfSample disneySample(DisneyMaterial m, float3 woIn, float u0, float u1, float
 bool disneyHasDeltaLobe(DisneyMaterial m) {
   LobeWeights w = disneyLobeWeights(m, 1.0);
   Ggx g = disneyGgx(m);
-  Ggx gg = m.thin ? thinGlassGgx(m) : g;
+  Ggx gg = glassGgx(m, g);
   return (w.pSpecular > 0.0 && isSpecularGgx(g)) || (w.pGlass > 0.0 && (isSpecularGgx(gg) || m.ior == 1.0));
 }
 
