@@ -36,6 +36,8 @@ export WINEPREFIX=${WINEPREFIX:-$root/build-mingw/wineprefix}
 export WINEDEBUG=${WINEDEBUG:--all}
 export WINEDLLOVERRIDES="d3d12,d3d12core=n;${WINEDLLOVERRIDES:-}"
 export WINE_D3D_CONFIG=renderer=vulkan
+# vkd3d-proton's pipeline cache goes into the prefix, not the current folder.
+export VKD3D_SHADER_CACHE_PATH=${VKD3D_SHADER_CACHE_PATH:-$WINEPREFIX/vkd3d-proton-cache}
 # No Wine dialogs or Mono/Gecko installers in a headless run.
 export WINEDLLOVERRIDES="$WINEDLLOVERRIDES;mscoree,mshtml="
 
@@ -48,6 +50,7 @@ mkdir -p "$(dirname "$WINEPREFIX")"
     wineboot -u >/dev/null 2>&1 || { echo "wine-d3d12.sh: wineboot could not make the prefix $WINEPREFIX" >&2; exit 2; }
     wineserver -w
     cp "$vkd3d/d3d12.dll" "$vkd3d/d3d12core.dll" "$system32/"
+    mkdir -p "$VKD3D_SHADER_CACHE_PATH"
     touch "$WINEPREFIX/.penumbra-vkd3d"
   fi
 ) 9>"$WINEPREFIX.lock"

@@ -329,6 +329,13 @@ void D3D12CommandList::buildBottomLevelAccelStruct(rhi::rt::IAccelStruct* as) {
   build.Inputs = inputs.inputs;
   build.ScratchAccelerationStructureData = scratch->deviceAddress();
   list_->BuildRaytracingAccelerationStructure(&build, 0, nullptr);
+  // The structure is complete before anything recorded after it. Without
+  // this barrier vkd3d-proton (3.0.1) on lavapipe (Mesa 25.0) leaves an AABB
+  // structure built after a copy that followed a triangle build without its
+  // boxes, and the implicit surfaces vanish (docs/windows.md, "Known
+  // problems", tools/d3d12_repro). Builds no longer overlap; Penumbra builds
+  // its structures once per scene.
+  uavBarrier(das->resource());
 }
 
 void D3D12CommandList::buildTopLevelAccelStruct(rhi::rt::IAccelStruct* as,
