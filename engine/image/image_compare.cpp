@@ -19,11 +19,15 @@ ComparisonStats compareImages(const Image& a, const Image& b, double relativeTol
   s.nonFiniteA = countNonFinite(a);
   s.nonFiniteB = countNonFinite(b);
   double sumAbs = 0, sumSq = 0, peak = 0, sumRel = 0;
+  double sumDiff[3] = {0, 0, 0}, sumDiffSq[3] = {0, 0, 0}, sumA[3] = {0, 0, 0};
   const size_t pixels = size_t(a.width) * a.height;
   for (size_t i = 0; i < pixels; ++i) {
     bool beyond = false;
     for (int c = 0; c < 3; ++c) {
       const double va = a.rgba[i * 4 + c], vb = b.rgba[i * 4 + c];
+      sumDiff[c] += vb - va;
+      sumDiffSq[c] += (vb - va) * (vb - va);
+      sumA[c] += va;
       const double d = std::abs(va - vb);
       sumAbs += d;
       sumSq += d * d;
@@ -40,7 +44,23 @@ ComparisonStats compareImages(const Image& a, const Image& b, double relativeTol
   const double mse = pixels ? sumSq / n : 0;
   s.relativeMse = pixels ? sumRel / n : 0;
   s.psnr = mse > 0 ? 10.0 * std::log10(peak * peak / mse) : std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 3 && pixels > 1; ++c) {
+    const double count = double(pixels);
+    const double mean = sumDiff[c] / count;
+    const double variance = std::max(0.0, (sumDiffSq[c] - count * mean * mean) / (count - 1.0));
+    s.meanDifference[c] = mean;
+    s.meanDifferenceStandardError[c] = std::sqrt(variance / count);
+    s.meanA[c] = sumA[c] / count;
+  }
   return s;
+}
+
+bool meanDifferenceIsSystematic(const ComparisonStats& s, double sigmas, double relativeFloor) {
+  for (int c = 0; c < 3; ++c)
+    if (std::abs(s.meanDifference[c]) >
+        sigmas * s.meanDifferenceStandardError[c] + relativeFloor * std::abs(s.meanA[c]))
+      return true;
+  return false;
 }
 
 double maskedRelativeMse(const Image& a, const Image& b, const std::vector<bool>& mask) {

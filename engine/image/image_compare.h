@@ -20,7 +20,20 @@ struct ComparisonStats {
   // over RGB channels (the 1e-2 keeps dark pixels from dominating).
   double relativeMse = 0;
   uint64_t nonFiniteA = 0, nonFiniteB = 0;
+  // Per RGB channel: the mean of the per-pixel differences b - a, and its
+  // standard error (their standard deviation / sqrt(pixels)). Two renders
+  // whose paths part by float rounding differ like independent noise, with
+  // a mean difference of a few standard errors at most; a systematic
+  // difference (light lost, a surface missing) shows as many more.
+  double meanDifference[3] = {0, 0, 0};
+  double meanDifferenceStandardError[3] = {0, 0, 0};
+  double meanA[3] = {0, 0, 0};
 };
+
+// Whether some channel's mean difference exceeds `sigmas` standard errors
+// plus `relativeFloor` of that channel's mean in a (the floor keeps rounding
+// offsets of images that agree to the last bits from counting).
+bool meanDifferenceIsSystematic(const ComparisonStats& s, double sigmas, double relativeFloor);
 
 // Throws penumbra::Error if the sizes differ.
 ComparisonStats compareImages(const Image& a, const Image& b, double relativeTolerance);

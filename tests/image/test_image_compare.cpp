@@ -38,6 +38,53 @@ TEST_CASE("an injected difference is measured exactly", "[image][compare]") {
   REQUIRE(image::compareImages(a, b, 0.4).pixelsBeyondTolerance == 0u);
 }
 
+TEST_CASE("the mean difference and its standard error, computed by hand", "[image][compare]") {
+  // Four pixels; red differs by +0.1, +0.3, -0.1, +0.1 (b - a): mean 0.1,
+  // sample standard deviation sqrt((0 + 0.04 + 0.04 + 0) / 3), standard
+  // error that / sqrt(4). Green and blue are equal.
+  image::Image a{2, 2}, b{2, 2};
+  const float redA[4] = {1.0f, 2.0f, 3.0f, 4.0f}, redB[4] = {1.1f, 2.3f, 2.9f, 4.1f};
+  for (uint32_t i = 0; i < 4; ++i) {
+    a.pixel(i % 2, i / 2)[0] = redA[i];
+    b.pixel(i % 2, i / 2)[0] = redB[i];
+  }
+  const auto s = image::compareImages(a, b, 1e-3);
+  CHECK(s.meanDifference[0] == Approx(0.1).epsilon(1e-6));
+  CHECK(s.meanDifferenceStandardError[0] == Approx(std::sqrt(0.08 / 3.0) / 2.0).epsilon(1e-5));
+  CHECK(s.meanA[0] == Approx(2.5));
+  CHECK(s.meanDifference[1] == 0.0);
+  CHECK(s.meanDifferenceStandardError[2] == 0.0);
+  // 0.1 is 1.22 standard errors: systematic at 1 sigma, not at 2.
+  CHECK(image::meanDifferenceIsSystematic(s, 1.0, 0.0));
+  CHECK_FALSE(image::meanDifferenceIsSystematic(s, 2.0, 0.0));
+  // The floor: 0.1 is 4 % of red's mean 2.5.
+  CHECK_FALSE(image::meanDifferenceIsSystematic(s, 0.0, 0.05));
+  CHECK(image::meanDifferenceIsSystematic(s, 0.0, 0.03));
+}
+
+TEST_CASE("parted paths pass the bias test, a 2 % loss of light does not", "[image][compare]") {
+  // 64x64 pixels of "renders": b equals a except in 10 % of the pixels,
+  // where it is an independent draw of the same distribution (a path that
+  // parted by rounding). Then b scaled by 0.98 everywhere.
+  image::Image a{64, 64}, b{64, 64};
+  uint32_t state = 12345u;
+  auto uniform = [&] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  };
+  for (size_t i = 0; i < size_t(64) * 64; ++i)
+    for (int c = 0; c < 3; ++c) {
+      a.rgba[i * 4 + c] = uniform();
+      b.rgba[i * 4 + c] = a.rgba[i * 4 + c];
+    }
+  for (size_t i = 0; i < size_t(64) * 64; ++i)
+    if (uniform() < 0.1f)
+      for (int c = 0; c < 3; ++c) b.rgba[i * 4 + c] = uniform();
+  CHECK_FALSE(image::meanDifferenceIsSystematic(image::compareImages(a, b, 1e-3), 4.0, 1e-5));
+  for (size_t i = 0; i < b.rgba.size(); ++i) b.rgba[i] *= 0.98f;
+  CHECK(image::meanDifferenceIsSystematic(image::compareImages(a, b, 1e-3), 4.0, 1e-5));
+}
+
 TEST_CASE("non-finite pixels and size mismatches are reported", "[image][compare]") {
   image::Image a{2, 2}, b{2, 2};
   b.pixel(1, 1)[2] = std::numeric_limits<float>::quiet_NaN();
