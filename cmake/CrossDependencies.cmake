@@ -120,3 +120,25 @@ add_library(imgui::imgui ALIAS penumbra_imgui)
 set(IMGUI_INCLUDE_DIRS ${_imgui_source})
 set(IMGUI_BACKEND_SOURCES ${_imgui_source}/backends)
 set(IMGUI_BACKEND_HEADERS ${_imgui_source}/backends)
+
+# Catch2 for the Windows test executable (tests/CMakeLists.txt): Debian's
+# catch2 is a Linux static library, so its source package of the same
+# version (scripts/setup.sh) is built here through its own CMake, which
+# gives Catch2::Catch2WithMain as find_package(Catch2) does natively.
+# Boost.Math's distributions for the tests' chi-square checks, header-only.
+if(PENUMBRA_BUILD_TESTS)
+  penumbra_cross_headers(${_farm}/boost boost)
+  set(PENUMBRA_TEST_INCLUDE_DIRS ${_farm}/boost)
+  set(_catch2_source ${PENUMBRA_WINDOWS_SOURCES}/catch2)
+  if(NOT EXISTS ${_catch2_source}/CMakeLists.txt)
+    message(FATAL_ERROR "Cross build: ${_catch2_source} is missing. scripts/setup.sh unpacks Debian's catch2 "
+                        "source there (or configure with -DPENUMBRA_BUILD_TESTS=OFF)")
+  endif()
+  function(penumbra_add_catch2 source)
+    set(BUILD_SHARED_LIBS OFF)
+    set(CATCH_INSTALL_DOCS OFF)
+    set(CATCH_INSTALL_EXTRAS OFF)
+    add_subdirectory(${source} ${CMAKE_BINARY_DIR}/third_party/catch2 EXCLUDE_FROM_ALL SYSTEM)
+  endfunction()
+  penumbra_add_catch2(${_catch2_source})
+endif()

@@ -14,7 +14,7 @@
 # from the same archive (a deb-src entry in a temporary apt configuration; the
 # system's is left alone; apt checks the files against the signed index) and
 # unpacked into $PENUMBRA_WINDOWS_SOURCES (default /usr/local/src/penumbra-deps:
-# imgui/ and glfw3/), where cmake/CrossDependencies.cmake looks for them
+# imgui/, glfw3/ and catch2/, the last for the Windows test executable), where cmake/CrossDependencies.cmake looks for them
 # (its PENUMBRA_WINDOWS_SOURCES cache variable). Skipped when already there.
 set -euo pipefail
 
@@ -69,9 +69,10 @@ D3D12_KIT=${PENUMBRA_D3D12_KIT:-$(cd "$(dirname "$0")/../.." && pwd)/shared/tool
 D3D12_TOOLS=${PENUMBRA_D3D12_TOOLS:-/usr/local/lib/penumbra}
 DXC_ARCHIVE=dxc-1.9.2607-linux-x64.tar.xz
 VKD3D_ARCHIVE=vkd3d-proton-3.0.1-win64-dlls.tar.xz
-# Source packages for the cross build's viewer: the versions of bookworm's
-# libimgui-dev and libglfw3-dev (source=version, pinned).
-WINDOWS_SOURCES=(imgui=1.86+ds-1 glfw3=3.3.8-1)
+# Source packages for the cross build's viewer and its test executable: the
+# versions of bookworm's libimgui-dev and libglfw3-dev and of backports'
+# catch2 (source=version, pinned).
+WINDOWS_SOURCES=(imgui=1.86+ds-1 glfw3=3.3.8-1 catch2=3.7.1-0.4~bpo12+1)
 WINDOWS_SOURCES_DIR=${PENUMBRA_WINDOWS_SOURCES:-/usr/local/src/penumbra-deps}
 
 # debian_archive: sets uri and keyring from the machine's bookworm entry
@@ -122,12 +123,13 @@ fetch_windows_sources() {
   mkdir -p "$tmp/lists/partial" "$tmp/cache" "$tmp/download" "$tmp/unpacked"
   # apt downloads as _apt where it can write.
   if id _apt >/dev/null 2>&1 && [ "$(id -u)" -eq 0 ]; then chown _apt "$tmp/download"; fi
-  printf 'deb-src [signed-by=%s] %s bookworm main\n' "$keyring" "$uri" > "$tmp/sources.list"
+  printf 'deb-src [signed-by=%s] %s %s main\n' "$keyring" "$uri" bookworm "$keyring" "$uri" bookworm-backports \
+    > "$tmp/sources.list"
   local apt_options=(-o "Dir::Etc::SourceList=$tmp/sources.list" -o Dir::Etc::SourceParts=/dev/null
                      -o "Dir::State::Lists=$tmp/lists" -o "Dir::Cache=$tmp/cache")
   if ! $SUDO apt-get "${apt_options[@]}" update -q ||
      ! (cd "$tmp/download" && $SUDO apt-get "${apt_options[@]}" source --download-only -q "${wanted[@]}"); then
-    echo "setup.sh: could not download the Debian source packages ${wanted[*]} from $uri (bookworm, deb-src);" \
+    echo "setup.sh: could not download the Debian source packages ${wanted[*]} from $uri (bookworm and bookworm-backports, deb-src);" \
          "the Windows cross build's viewer is compiled from them" >&2
     exit 1
   fi

@@ -310,6 +310,7 @@ class D3D12CommandList final : public rhi::ICommandList {
   void endTimerQuery(rhi::ITimerQuery* query) override;
 
   ID3D12GraphicsCommandList4* handle() const { return list_.Get(); }
+  const std::string& debugName() const { return debugName_; }
   // Called by the device once the GPU finished this list's work.
   void releaseTransientResources();
   // The queue fence value that marks this list's last submission as done.
@@ -324,6 +325,7 @@ class D3D12CommandList final : public rhi::ICommandList {
                             bool graphics = false);
   void uavBarrier(ID3D12Resource* resource);
   D3D12Device& device_;
+  std::string debugName_;
   ComPtr<ID3D12CommandAllocator> allocator_;
   ComPtr<ID3D12GraphicsCommandList4> list_;
   // beginRendering's RTVs: a small non-shader-visible heap of the list's own,

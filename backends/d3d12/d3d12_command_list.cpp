@@ -32,7 +32,7 @@ D3D12_RESOURCE_BARRIER transition(ID3D12Resource* resource, D3D12_RESOURCE_STATE
 }  // namespace
 
 D3D12CommandList::D3D12CommandList(D3D12Device& device, const std::string& debugName)
-    : device_(device) {
+    : device_(device), debugName_(debugName) {
   check(device_.handle()->CreateCommandAllocator(D3D12_COMMAND_LIST_TYPE_DIRECT,
                                                  IID_PPV_ARGS(&allocator_)),
         "CreateCommandAllocator");

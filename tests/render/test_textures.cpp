@@ -6,6 +6,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <optional>
 
 #include "effects.h"
@@ -453,7 +454,7 @@ TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels",
           value =
               *shadowOpaque
                   ? 0.0f
-                  : float(albedo / M_PI * light.intensity.y * (toLight.z / dist) / (dist * dist));
+                  : float(albedo / std::numbers::pi * light.intensity.y * (toLight.z / dist) / (dist * dist));
         }
         lo = std::min(lo, value);
         hi = std::max(hi, value);

@@ -142,7 +142,7 @@ const float kBlue[4] = {0, 0, 1, 1};
 // the fill rule and are not judged. A flipped y covers the lower-left half
 // instead: half the pixels wrong.
 TEST_CASE("raster: a triangle covers exactly the pixels whose centres it contains, +y up",
-          "[rhi][raster]") {
+          "[rhi][raster][spirv-only]") {
   RasterRig rig;
   auto pipeline = rig.pipeline(BlendMode::Opaque);
   const std::vector<Vertex> triangle = {
@@ -167,7 +167,7 @@ TEST_CASE("raster: a triangle covers exactly the pixels whose centres it contain
 // for the blend unit's rounding; a wrong factor (dst alpha, premultiplied,
 // no blending) moves a channel by 127 or more.
 TEST_CASE("raster: alpha blending and opaque writes give the hand-worked 8-bit values",
-          "[rhi][raster]") {
+          "[rhi][raster][spirv-only]") {
   RasterRig rig;
   auto blended = rig.pipeline(BlendMode::AlphaBlend);
   auto image = rig.render(*blended, kFullQuad(255, 0, 0, 128), kQuadIndices, kBlue, {6});
@@ -190,7 +190,7 @@ TEST_CASE("raster: alpha blending and opaque writes give the hand-worked 8-bit v
 // exactly inside the scissor: ignoring firstIndex leaves half of it black,
 // ignoring vertexOffset paints it green, ignoring the scissor paints it all.
 TEST_CASE("raster: scissor, first index and vertex offset select what is drawn where",
-          "[rhi][raster]") {
+          "[rhi][raster][spirv-only]") {
   RasterRig rig;
   auto pipeline = rig.pipeline(BlendMode::Opaque);
   std::vector<Vertex> vertices = kFullQuad(0, 255, 0, 255);
@@ -207,7 +207,7 @@ TEST_CASE("raster: scissor, first index and vertex offset select what is drawn w
 }
 
 TEST_CASE("raster: the validation layer's rules for pipelines and rendering passes",
-          "[rhi][raster][validation]") {
+          "[rhi][raster][validation][spirv-only]") {
   RasterRig rig;
   auto& device = rig.device;
   auto pipeline = rig.pipeline(BlendMode::Opaque);

@@ -53,7 +53,7 @@ enum Tags : uint32_t { kMissTag = 1, kMissAltTag = 2, kQuadATag = 100, kQuadBTag
 
 }  // namespace
 
-TEST_CASE("ray tracing: BLAS/TLAS, instances, shader table selection, readback", "[rhi][gpu]") {
+TEST_CASE("ray tracing: BLAS/TLAS, instances, shader table selection, readback", "[rhi][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   auto cmd = device->createCommandList();
   cmd->open();
@@ -225,7 +225,7 @@ TEST_CASE("ray tracing: BLAS/TLAS, instances, shader table selection, readback",
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("ray tracing: unknown shader names are clear errors", "[rhi][gpu]") {
+TEST_CASE("ray tracing: unknown shader names are clear errors", "[rhi][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   RayTracingPipelineDesc desc;
   desc.debugName = "broken";

@@ -160,7 +160,7 @@ BufferHandle createStorageBuffer(IDevice& device, uint64_t bytes, const char* na
 }  // namespace
 
 TEST_CASE("textures: bindless sampling matches the host model of filters, address modes and sRGB",
-          "[rhi][gpu][textures]") {
+          "[rhi][gpu][textures][spirv-only]") {
   auto device = test::makeTestDevice();
   const auto hostTextures = makeHostTextures();
   const auto samplerDescs = makeSamplerDescs();
@@ -288,7 +288,7 @@ TEST_CASE("textures: bindless sampling matches the host model of filters, addres
 }
 
 TEST_CASE("textures: binding sets with bad texture or sampler arrays are clear errors",
-          "[rhi][gpu][textures]") {
+          "[rhi][gpu][textures][spirv-only]") {
   auto device = test::makeTestDevice();
   auto pipeline = createSamplePipeline(*device);
   auto texture = createSampledTexture(*device, makeHostTextures()[0], "unorm 4x4");

@@ -507,7 +507,7 @@ TEST_CASE_METHOD(Fixture, "validation: a compute pipeline takes a compute shader
 // ---- Shader tables --------------------------------------------------------------------
 
 TEST_CASE_METHOD(Fixture, "validation: shader-table records name exports of their kind",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto table = pipeline->createShaderTable("probe table");
   REQUIRE_REJECTED(
@@ -523,7 +523,7 @@ TEST_CASE_METHOD(Fixture, "validation: shader-table records name exports of thei
 }
 
 TEST_CASE_METHOD(Fixture, "validation: local data no larger than the shaders read",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto table = pipeline->createShaderTable("probe table");
   const uint32_t tags[2] = {1, 2};
@@ -540,7 +540,7 @@ TEST_CASE_METHOD(Fixture, "validation: local data no larger than the shaders rea
 TEST_CASE_METHOD(Fixture,
                  "validation: tracing needs a shader table of the pipeline with a ray "
                  "generation record",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto other = device->createRayTracingPipeline(probeDesc());
   auto bindings = probeBindings(*pipeline);
@@ -561,7 +561,7 @@ TEST_CASE_METHOD(Fixture,
 // ---- Binding sets ---------------------------------------------------------------------
 
 TEST_CASE_METHOD(Fixture, "validation: a binding set fills every slot its space declares",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto rays = buffer(64, BufferUsage::StorageBuffer, "rays");
   BindingSetDesc set;
@@ -573,7 +573,7 @@ TEST_CASE_METHOD(Fixture, "validation: a binding set fills every slot its space 
 }
 
 TEST_CASE_METHOD(Fixture, "validation: bound buffers carry the usage their slot needs",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto tlas = topLevel();
   auto plain = buffer(64, BufferUsage::CopyDest, "plain");
@@ -588,7 +588,7 @@ TEST_CASE_METHOD(Fixture, "validation: bound buffers carry the usage their slot 
 }
 
 TEST_CASE_METHOD(Fixture, "validation: buffers the shaders write are device-local",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto tlas = topLevel();
   auto rays = buffer(64, BufferUsage::StorageBuffer, "rays");
@@ -603,7 +603,7 @@ TEST_CASE_METHOD(Fixture, "validation: buffers the shaders write are device-loca
 }
 
 TEST_CASE_METHOD(Fixture, "validation: a bound storage buffer holds a whole element",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto tlas = topLevel();
   auto rays = buffer(16, BufferUsage::StorageBuffer, "short rays");  // a ProbeRay is 32 bytes
@@ -632,7 +632,7 @@ TEST_CASE_METHOD(Fixture, "validation: a bound storage texture has TextureUsage:
 }
 
 TEST_CASE_METHOD(Fixture, "validation: an acceleration-structure slot takes a top level",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto pipeline = device->createRayTracingPipeline(probeDesc());
   auto blas = bottomLevel();
   auto rays = buffer(64, BufferUsage::StorageBuffer, "rays");
@@ -679,7 +679,7 @@ TEST_CASE_METHOD(Fixture, "validation: a binding set is bound to a pipeline of i
 // ---- Push constants and dispatches -------------------------------------------------------
 
 TEST_CASE_METHOD(Fixture, "validation: push constants need a bound pipeline that declares them",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   const uint32_t value[4] = {};
   cmd->open();
   REQUIRE_REJECTED(cmd->setPushConstants(value, 16),
@@ -721,7 +721,7 @@ TEST_CASE_METHOD(Fixture, "validation: a dispatch needs the matching bound state
 }
 
 TEST_CASE_METHOD(Fixture, "validation: dispatch sizes within both APIs' limits",
-                 "[rhi][validation]") {
+                 "[rhi][validation][spirv-only]") {
   auto compute = computePipeline("tonemap.comp", "tonemap");
   auto computeSet = tonemapBindings(*compute);
   cmd->open();

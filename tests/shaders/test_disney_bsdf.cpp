@@ -275,7 +275,7 @@ ChiSquare chiSquareTest(BsdfHarness& h, const Case& c, uint32_t seed) {
 
 }  // namespace
 
-TEST_CASE("Disney BSDF: sample() matches pdf() (chi-square)", "[shaders][bsdf][gpu]") {
+TEST_CASE("Disney BSDF: sample() matches pdf() (chi-square)", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   const auto cases = chiSquareCases();
@@ -295,7 +295,7 @@ TEST_CASE("Disney BSDF: sample() matches pdf() (chi-square)", "[shaders][bsdf][g
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gpu]") {
+TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   uint32_t seed = 100;
@@ -321,7 +321,7 @@ TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gp
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all light", "[shaders][bsdf][gpu]") {
+TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all light", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   auto m = base();
@@ -365,7 +365,7 @@ TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all l
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: near-zero roughness is a perfect mirror below the stated threshold", "[shaders][bsdf][gpu]") {
+TEST_CASE("Disney BSDF: near-zero roughness is a perfect mirror below the stated threshold", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   // alpha = roughness^2 = 1e-3 (the threshold), 1e-4 (the floor) and 0.
@@ -404,7 +404,7 @@ TEST_CASE("Disney BSDF: near-zero roughness is a perfect mirror below the stated
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: reflection lobes are reciprocal", "[shaders][bsdf][gpu]") {
+TEST_CASE("Disney BSDF: reflection lobes are reciprocal", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   std::vector<scene::Material> materials;
@@ -456,7 +456,7 @@ TEST_CASE("Disney BSDF: reflection lobes are reciprocal", "[shaders][bsdf][gpu]"
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: no NaN, Inf or negative values over extreme inputs", "[shaders][bsdf][gpu]") {
+TEST_CASE("Disney BSDF: no NaN, Inf or negative values over extreme inputs", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   // 2^20 random combinations: parameters at 0, 1, 1e-4, 1 - 1e-4 or random;

@@ -116,7 +116,7 @@ std::vector<gpu::float4> uniformPairs(size_t count, uint32_t seed) {
 }  // namespace
 
 TEST_CASE("environment sampling: directions follow luminance x sin(theta) (chi-square)",
-          "[shaders][gpu][environment]") {
+          "[shaders][gpu][environment][spirv-only]") {
   auto device = test::makeTestDevice();
   const scene::Environment env = testMap();
   const std::vector<double> p = expectedTexelProbabilities(env);
@@ -189,7 +189,7 @@ TEST_CASE("environment sampling: directions follow luminance x sin(theta) (chi-s
 }
 
 TEST_CASE("environment sampling: the density integrates to 1 over the sphere",
-          "[shaders][gpu][environment]") {
+          "[shaders][gpu][environment][spirv-only]") {
   auto device = test::makeTestDevice();
   scene::Environment env = testMap();
   env.rotationDegrees = 33.0f;
@@ -216,7 +216,7 @@ TEST_CASE("environment sampling: the density integrates to 1 over the sphere",
 }
 
 TEST_CASE("environment: directions read the documented texels, rotated",
-          "[shaders][gpu][environment]") {
+          "[shaders][gpu][environment][spirv-only]") {
   auto device = test::makeTestDevice();
   // One bright texel per axis direction, so each lookup says where it read.
   scene::Environment env;
@@ -260,7 +260,7 @@ TEST_CASE("environment: directions read the documented texels, rotated",
 }
 
 TEST_CASE("environment: the density a sample reports is the one MIS evaluates",
-          "[shaders][gpu][environment]") {
+          "[shaders][gpu][environment][spirv-only]") {
   auto device = test::makeTestDevice();
   scene::Environment env = testMap();
   env.rotationDegrees = -71.0f;

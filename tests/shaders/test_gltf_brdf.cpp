@@ -67,7 +67,7 @@ const Pair kPairs[] = {
 }  // namespace
 
 TEST_CASE("glTF BRDF: the specular layer is Appendix B's with height-correlated masking",
-          "[shaders][bsdf][gpu][gltf]") {
+          "[shaders][bsdf][gpu][gltf][spirv-only]") {
   auto device = test::makeTestDevice();
   test::BsdfHarness harness(*device);
   // Metals, and dielectrics with a black base (no diffuse): specular only.
@@ -89,7 +89,7 @@ TEST_CASE("glTF BRDF: the specular layer is Appendix B's with height-correlated 
 }
 
 TEST_CASE("glTF BRDF: the specification's separable masking differs only off normal incidence",
-          "[shaders][bsdf][gpu][gltf]") {
+          "[shaders][bsdf][gpu][gltf][spirv-only]") {
   auto device = test::makeTestDevice();
   test::BsdfHarness harness(*device);
   const auto metal = gltfMaterial({0.9f, 0.9f, 0.9f}, 1.0f, 1.0f);
@@ -110,7 +110,7 @@ TEST_CASE("glTF BRDF: the specification's separable masking differs only off nor
 }
 
 TEST_CASE("glTF BRDF: the diffuse carries two Fresnel factors where Appendix B has one",
-          "[shaders][bsdf][gpu][gltf]") {
+          "[shaders][bsdf][gpu][gltf][spirv-only]") {
   auto device = test::makeTestDevice();
   test::BsdfHarness harness(*device);
   const glm::vec3 white(1.0f);

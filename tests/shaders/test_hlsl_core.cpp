@@ -67,7 +67,7 @@ std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t max
 }
 }  // namespace
 
-TEST_CASE("HLSL-compiled core: furnace without roulette is exact", "[shaders][gpu]") {
+TEST_CASE("HLSL-compiled core: furnace without roulette is exact", "[shaders][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   // BSDF sampling only: every bounce adds rho^k * Le exactly, so each pixel is
   // the truncated series Le * (1 - rho^(D+1)) / (1 - rho).
@@ -82,7 +82,7 @@ TEST_CASE("HLSL-compiled core: furnace without roulette is exact", "[shaders][gp
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("HLSL-compiled core: furnace with Russian roulette is unbiased", "[shaders][gpu]") {
+TEST_CASE("HLSL-compiled core: furnace with Russian roulette is unbiased", "[shaders][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   auto v = runFurnace(*device, PT_FLAG_RUSSIAN_ROULETTE, 200, 256);
   double sum = 0;

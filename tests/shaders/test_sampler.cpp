@@ -83,7 +83,7 @@ double chiSquarePValue(const std::vector<double>& observed, double expectedPerCe
 }  // namespace
 
 TEST_CASE("Sobol sampler: every aligned run of 2^m samples is a (0,m,2)-net in each dimension pair",
-          "[shaders][sampler][gpu]") {
+          "[shaders][sampler][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   test::ComputeHarness harness(*device, "sampler_harness.comp");
   Draw d;
@@ -112,7 +112,7 @@ TEST_CASE("Sobol sampler: every aligned run of 2^m samples is a (0,m,2)-net in e
 // p > 1e-3 (chi-square 61 on 31 degrees of freedom) lets through about a
 // 25 % excess or shortfall in four of the 32 cells (128 expected in each).
 TEST_CASE("Sobol sampler: pixels are uniform and independent of their neighbours (chi-square)",
-          "[shaders][sampler][gpu]") {
+          "[shaders][sampler][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   test::ComputeHarness harness(*device, "sampler_harness.comp");
   Draw d;
@@ -139,7 +139,7 @@ TEST_CASE("Sobol sampler: pixels are uniform and independent of their neighbours
 // and dimension 2 are functions of each other and the 16x16 histogram of
 // 4096 samples has empty and doubled cells.
 TEST_CASE("Sobol sampler: dimension pairs are independent of each other (chi-square)",
-          "[shaders][sampler][gpu]") {
+          "[shaders][sampler][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   test::ComputeHarness harness(*device, "sampler_harness.comp");
   Draw d;
@@ -169,7 +169,7 @@ TEST_CASE("Sobol sampler: dimension pairs are independent of each other (chi-squ
 // sampler that lost its stratification. Both are unbiased: the mean over
 // pixels is within 4 standard errors of pi / 4.
 TEST_CASE("Sobol sampler: an unbiased estimate with a third of random's error on a disc",
-          "[shaders][sampler][gpu]") {
+          "[shaders][sampler][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   test::ComputeHarness harness(*device, "sampler_harness.comp");
   const double exact = std::acos(-1.0) / 4.0;

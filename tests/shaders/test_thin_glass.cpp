@@ -46,7 +46,7 @@ scene::Material thinGlass(float roughness) {
 }  // namespace
 
 TEST_CASE("thin smooth glass reflects with the air-to-glass Fresnel from either face",
-          "[shaders][bsdf][gpu]") {
+          "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   const auto m = thinGlass(0.0f);
@@ -80,7 +80,7 @@ TEST_CASE("thin smooth glass reflects with the air-to-glass Fresnel from either 
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("thin rough glass evaluates the same from either face", "[shaders][bsdf][gpu]") {
+TEST_CASE("thin rough glass evaluates the same from either face", "[shaders][bsdf][gpu][spirv-only]") {
   // Mirroring both directions through the sheet must not change f or pdf.
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);

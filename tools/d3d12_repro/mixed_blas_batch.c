@@ -1,10 +1,14 @@
-/* mixed_blas_batch.c: minimal D3D12 + DXR reproduction of the one difference
- * between Penumbra's D3D12 and Vulkan images on lavapipe (docs/windows.md,
- * "Known problems"): a triangle BLAS and an AABB BLAS built back to back,
- * with no barrier between them, then traced through one TLAS. D3D12 allows
- * this (each build has its own result and scratch). Under vkd3d-proton 3.0.1
- * on lavapipe (Mesa 25.0.7) the box is never hit; with `--barrier` (a global
- * UAV barrier between the two builds) it is.
+/* mixed_blas_batch.c: minimal D3D12 + DXR reproduction of the one systematic
+ * difference found between Penumbra's D3D12 and Vulkan images on lavapipe
+ * (docs/windows.md, "Known problems"). Recorded in one command list: a
+ * triangle BLAS build; a copy of one AABB into a default-heap buffer and its
+ * transition to NON_PIXEL_SHADER_RESOURCE; an AABB BLAS build from it; a
+ * TLAS over both; DispatchRays. That is valid D3D12 (each build has its own
+ * result and scratch, the AABB buffer is in the state a build input needs),
+ * yet under vkd3d-proton 3.0.1 on lavapipe (Mesa 25.0.7) no ray hits the
+ * box. With `--barrier` (a UAV barrier on the triangle BLAS right after its
+ * build) every ray through the box hits it. A UAV barrier after the copy or
+ * after the transition does not help.
  *   bash tools/d3d12_repro/run.sh
  * Exit status 0 when the box is hit. Built from the toolchain check in
  * ../shared/tools/d3d12-on-linux/dxr_smoke (dxr_smoke.c). */
@@ -87,7 +91,7 @@ static ID3D12Resource *build_as(ID3D12GraphicsCommandList4 *cl, const D3D12_BUIL
     bd.Inputs = *in;
     bd.ScratchAccelerationStructureData = ID3D12Resource_GetGPUVirtualAddress(*scratch);
     ID3D12GraphicsCommandList4_BuildRaytracingAccelerationStructure(cl, &bd, 0, NULL);
-    if (barrier) uav_barrier(cl, getenv("ON_RESULT") ? as : NULL);
+    if (barrier) uav_barrier(cl, as);
     return as;
 }
 
@@ -141,10 +145,7 @@ int main(int argc, char **argv)
     CHECK(ID3D12Device5_CreateCommandList(dev, 0, D3D12_COMMAND_LIST_TYPE_DIRECT, alloc, NULL, &IID_ID3D12GraphicsCommandList4, (void **)&cl));
     CHECK(ID3D12Device5_CreateFence(dev, 0, D3D12_FENCE_FLAG_NONE, &IID_ID3D12Fence, (void **)&fence));
 
-    /* Two bottom levels, one triangle BLAS and one AABB BLAS, built back to
-     * back: legal in D3D12 (separate results and scratch), and batched into
-     * one vkCmdBuildAccelerationStructuresKHR by vkd3d-proton unless a
-     * barrier separates them. */
+    /* Two bottom levels: a triangle BLAS, then an AABB BLAS. */
     vb = upload(verts, sizeof(verts));
     ab = upload(box, sizeof(box));
     memset(&in, 0, sizeof(in));
@@ -162,12 +163,12 @@ int main(int argc, char **argv)
     geom.Triangles.VertexCount = 3;
     geom.Triangles.IndexFormat = DXGI_FORMAT_UNKNOWN;
     blas_tri = build_as(cl, &in, &s0, barrier);
-    if (getenv("REPRO_COPY"))
+    /* The box's AABB reaches a default-heap buffer by a copy recorded after
+     * the triangle build, and is made a build input by a transition. */
     {
-        ID3D12Resource *src = ab;
+        ID3D12Resource *staging = ab;
         ab = buffer(D3D12_HEAP_TYPE_DEFAULT, sizeof(box), D3D12_RESOURCE_FLAG_NONE, D3D12_RESOURCE_STATE_COPY_DEST);
-        ID3D12GraphicsCommandList4_CopyBufferRegion(cl, ab, 0, src, 0, sizeof(box));
-        if (getenv("AT_COPY")) uav_barrier(cl, NULL);
+        ID3D12GraphicsCommandList4_CopyBufferRegion(cl, ab, 0, staging, 0, sizeof(box));
         memset(&b, 0, sizeof(b));
         b.Type = D3D12_RESOURCE_BARRIER_TYPE_TRANSITION;
         b.Transition.pResource = ab;
@@ -175,7 +176,6 @@ int main(int argc, char **argv)
         b.Transition.StateBefore = D3D12_RESOURCE_STATE_COPY_DEST;
         b.Transition.StateAfter = D3D12_RESOURCE_STATE_NON_PIXEL_SHADER_RESOURCE;
         ID3D12GraphicsCommandList4_ResourceBarrier(cl, 1, &b);
-        if (getenv("AT_TRANSITION")) uav_barrier(cl, NULL);
     }
     memset(&geom, 0, sizeof(geom));
     geom.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_PROCEDURAL_PRIMITIVE_AABBS;
@@ -291,7 +291,7 @@ int main(int argc, char **argv)
     }
     ID3D12Resource_Unmap(rb, 0, NULL);
     printf("t = triangle (instance 0), B = box (instance 1, procedural), . = miss\n");
-    printf("%s: %d rays hit the box: %s\n", barrier ? "barrier between the BLAS builds" : "BLAS builds back to back",
+    printf("%s: %d rays hit the box: %s\n", barrier ? "barrier after the triangle build" : "no barrier",
            box_hits, box_hits > 0 ? "PASS" : "FAIL");
     (void)s0; (void)s1; (void)s2;
     return box_hits > 0 ? 0 : 1;

@@ -2,8 +2,11 @@
 # Builds tools/d3d12_repro/mixed_blas_batch.c for Windows (mingw-w64 against
 # Debian's DirectX-Headers, as Penumbra's cross build) and its shaders with DXC,
 # then runs it under Wine with vkd3d-proton (scripts/wine-d3d12.sh), without and
-# with a barrier between the two bottom-level builds. Exit status 0 when both
-# runs hit the box.   bash tools/d3d12_repro/run.sh [WORKDIR]
+# with a barrier after the triangle build. Exit status 0 when both runs hit
+# the box, 1 while the run without the barrier misses it (vkd3d-proton 3.0.1
+# on lavapipe, Mesa 25.0.7).   bash tools/d3d12_repro/run.sh [WORKDIR]
+# The same source builds natively against vkd3d-proton's Linux library, as
+# ../shared/tools/d3d12-on-linux/README.md shows for dxr_smoke.c.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd); root=$(cd "$here/../.." && pwd)
 w=${1:-$(mktemp -d)}; mkdir -p "$w/inc"

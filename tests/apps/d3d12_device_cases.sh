@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The device test cases (tests/CMakeLists.txt, PENUMBRA_DEVICE_TEST_SOURCES)
+# on D3D12: the Windows build's penumbra_tests.exe under Wine with
+# vkd3d-proton on lavapipe (scripts/wine-d3d12.sh), its test device made on
+# D3D12 (PENUMBRA_TEST_BACKEND=d3d12) with the RHI validation layer and
+# without the D3D12 debug layer, which vkd3d-proton does not have
+# (PENUMBRA_TEST_API_VALIDATION=0). Each case is reported by name with its
+# backend. Cases tagged [spirv-only] run shaders the tests build to SPIR-V
+# alone (GLSL test shaders and compute harnesses): they are listed as not
+# run on D3D12, by name.
+#   d3d12_device_cases.sh PENUMBRA_TESTS_EXE SOURCE_DIR
+# Without wine, vkd3d-proton or the executable: says why, exits 77 (Not Run).
+set -u
+exe="$1" source="$2"
+work=$(mktemp -d)
+xvfb_pid=""
+cleanup() {
+  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+not_run() { echo "NOT RUN (D3D12 device cases): $*"; exit 77; }
+command -v wine >/dev/null 2>&1 || not_run "wine is not installed (scripts/setup.sh installs it)"
+[ -f "$exe" ] || not_run "no Windows test executable at $exe (scripts/build.sh builds it)"
+
+exec 5>"$work/display"
+Xvfb -displayfd 5 -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb_pid=$!
+for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
+[ -s "$work/display" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
+export DISPLAY=":$(head -1 "$work/display")"
+export PENUMBRA_TEST_BACKEND=d3d12 PENUMBRA_TEST_API_VALIDATION=0
+export PENUMBRA_TEST_DATA="$source/tests/data"
+
+bash "$source/scripts/wine-d3d12.sh" "$exe" "~[spirv-only]" --reporter "JUnit::out=$work/cases.xml" \
+  --reporter "compact::out=$work/compact.log" >"$work/run.log" 2>&1
+status=$?
+grep -q "no vkd3d-proton" "$work/run.log" && not_run "$(grep -m1 'no vkd3d-proton' "$work/run.log")"
+# The engine's own shaders lack DXIL only in a build without DXC.
+grep -q "has no DXIL for shader 'path_trace" "$work/compact.log" 2>/dev/null &&
+  not_run "$exe was built without DXC (no DXIL)"
+bash "$source/scripts/wine-d3d12.sh" "$exe" "[spirv-only]" --list-tests --verbosity quiet >"$work/spirv.txt" 2>/dev/null
+
+python3 - "$work/cases.xml" "$work/spirv.txt" <<'PY'
+import sys, xml.etree.ElementTree as ET
+cases = ET.parse(sys.argv[1]).getroot().iter("testcase")
+passed = failed = 0
+for case in cases:
+    name = case.get("name")
+    bad = case.find("failure") if case.find("failure") is not None else case.find("error")
+    print(f"d3d12: {name}: {'FAILED' if bad is not None else 'passed'}")
+    if bad is not None:
+        failed += 1
+        print("   " + (bad.text or bad.get("message") or "").strip().replace("\n", "\n   "))
+    else:
+        passed += 1
+skipped = [line.strip() for line in open(sys.argv[2]) if line.strip()]
+for name in skipped:
+    print(f"d3d12: {name}: NOT RUN (its shaders are SPIR-V only: GLSL test shaders or compute harness)")
+print(f"D3D12 device cases: {passed} passed, {failed} failed, {len(skipped)} not run on D3D12 ([spirv-only])")
+PY
+if [ $status -ne 0 ]; then
+  tail -40 "$work/compact.log"
+  echo "FAIL: penumbra_tests.exe on D3D12 exited $status"
+  exit 1
+fi
