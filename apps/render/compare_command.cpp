@@ -73,10 +73,12 @@ image::Image loadLayer(const std::string& path, const std::string& layer) {
     if (name.size() > layer.size() + 1 && name.compare(0, layer.size() + 1, layer + ".") == 0)
       channels.push_back(&values);
   if (channels.empty() || channels.size() > 4)
-    throw Error(fmt::format("compare: {} has no layer '{}' (render --aov writes them)", path, layer));
+    throw Error(
+        fmt::format("compare: {} has no layer '{}' (render --aov writes them)", path, layer));
   image::Image out{exr.width, exr.height};
   for (size_t i = 0; i < size_t(exr.width) * exr.height; ++i)
-    for (int c = 0; c < 3; ++c) out.rgba[i * 4 + c] = (*channels[std::min<size_t>(c, channels.size() - 1)])[i];
+    for (int c = 0; c < 3; ++c)
+      out.rgba[i * 4 + c] = (*channels[std::min<size_t>(c, channels.size() - 1)])[i];
   return out;
 }
 
@@ -100,7 +102,8 @@ int runCompare(const CompareOptions& o) {
     throw Error("compare: give two image files, or --a and --b (BACKEND:INDEX) to render both");
   if (!renderMode && (o.a.empty() || o.b.empty()))
     throw Error("compare: give two image files, or --a and --b (BACKEND:INDEX) to render both");
-  if (renderMode && !o.layer.empty()) throw Error("compare: --layer compares image files, not --a/--b renders");
+  if (renderMode && !o.layer.empty())
+    throw Error("compare: --layer compares image files, not --a/--b renders");
   image::Image a, b;
   std::string nameA = o.a, nameB = o.b;
   if (renderMode) {
@@ -131,11 +134,14 @@ int runCompare(const CompareOptions& o) {
   fmt::print("PSNR: {:.2f} dB\n", s.psnr);
   fmt::print("relative MSE (b as reference): {:.6g}\n", s.relativeMse);
   fmt::print("SSIM: {:.6f}\n", image::ssim(a, b));
-  fmt::print("mean difference b - a: ({:.3g}, {:.3g}, {:.3g}), standard error ({:.3g}, {:.3g}, {:.3g})\n",
-             s.meanDifference[0], s.meanDifference[1], s.meanDifference[2], s.meanDifferenceStandardError[0],
-             s.meanDifferenceStandardError[1], s.meanDifferenceStandardError[2]);
+  fmt::print(
+      "mean difference b - a: ({:.3g}, {:.3g}, {:.3g}), standard error ({:.3g}, {:.3g}, {:.3g})\n",
+      s.meanDifference[0], s.meanDifference[1], s.meanDifference[2],
+      s.meanDifferenceStandardError[0], s.meanDifferenceStandardError[1],
+      s.meanDifferenceStandardError[2]);
   // Below 1e-5 of the mean, a difference is float rounding, whatever its sign.
-  const bool biased = o.maxBiasSigmas > 0 && image::meanDifferenceIsSystematic(s, o.maxBiasSigmas, 1e-5);
+  const bool biased =
+      o.maxBiasSigmas > 0 && image::meanDifferenceIsSystematic(s, o.maxBiasSigmas, 1e-5);
   if (biased)
     fmt::print("the mean difference is systematic: beyond {:g} standard errors\n", o.maxBiasSigmas);
   if (s.nonFiniteA || s.nonFiniteB)
@@ -146,8 +152,8 @@ int runCompare(const CompareOptions& o) {
     fmt::print("wrote {} (false colour, red = max difference {:.6g})\n", o.diffOut,
                s.maxAbsoluteDifference);
   }
-  const bool within =
-      s.fractionBeyondTolerance <= o.allowedFraction && s.nonFiniteA == 0 && s.nonFiniteB == 0 && !biased;
+  const bool within = s.fractionBeyondTolerance <= o.allowedFraction && s.nonFiniteA == 0 &&
+                      s.nonFiniteB == 0 && !biased;
   fmt::print("{}\n", within ? "within tolerance" : "NOT within tolerance");
   return within ? 0 : 1;
 }
@@ -180,13 +186,15 @@ Command addCompareCommand(CLI::App& app) {
                   "Fraction of pixels allowed beyond the tolerance for exit code 0")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--max-bias-sigmas", o->maxBiasSigmas,
-                  "Fail when a channel's mean difference exceeds this many standard errors (and 1e-5 of "
-                  "its mean): a systematic difference, not paths parted by rounding (0 = off)")
+  cmd->add_option(
+         "--max-bias-sigmas", o->maxBiasSigmas,
+         "Fail when a channel's mean difference exceeds this many standard errors (and 1e-5 of "
+         "its mean): a systematic difference, not paths parted by rounding (0 = off)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
-  cmd->add_option("--layer", o->layer,
-                  "Compare this layer of two layered EXRs (render --aov: albedo, normal, depth, ...)");
+  cmd->add_option(
+      "--layer", o->layer,
+      "Compare this layer of two layered EXRs (render --aov: albedo, normal, depth, ...)");
   cmd->add_option("--diff", o->diffOut, "Write a false-colour difference image (.png)");
   return [o] { return runCompare(*o); };
 }

@@ -38,8 +38,9 @@ void probeDevice(ID3D12Device* device, rhi::AdapterInfo& info) {
     info.apiVersion = featureLevelName(fl.MaxSupportedFeatureLevel);
   // D3D12_RAYTRACING_TIER_1_0 is 10, _1_1 is 11.
   const unsigned tier = unsigned(options5.RaytracingTier);
-  info.apiVersion += tier >= D3D12_RAYTRACING_TIER_1_0 ? fmt::format(", DXR tier {}.{}", tier / 10, tier % 10)
-                                                         : std::string(", no DXR");
+  info.apiVersion += tier >= D3D12_RAYTRACING_TIER_1_0
+                         ? fmt::format(", DXR tier {}.{}", tier / 10, tier % 10)
+                         : std::string(", no DXR");
 
   D3D12_FEATURE_DATA_ARCHITECTURE arch{};
   if (info.type != rhi::AdapterType::Cpu &&

@@ -155,10 +155,11 @@ void D3D12Device::submit(rhi::ICommandList* commandList) {
   auto* list = static_cast<D3D12CommandList*>(commandList);
   // An armed fault injection (rhi/fault_injection.h) reports a removed device.
   if (rhi::faults::shouldFail(rhi::faults::Site::Submit))
-    throw Error(fmt::format("d3d12: the device {} was lost submitting command list '{}' "
-                            "(DXGI_ERROR_DEVICE_REMOVED, injected): the GPU hung or was reset, or its driver "
-                            "failed; nothing more can run on it",
-                            adapter().name, list->debugName()));
+    throw Error(fmt::format(
+        "d3d12: the device {} was lost submitting command list '{}' "
+        "(DXGI_ERROR_DEVICE_REMOVED, injected): the GPU hung or was reset, or its driver "
+        "failed; nothing more can run on it",
+        adapter().name, list->debugName()));
   ID3D12CommandList* lists[] = {list->handle()};
   queue_->ExecuteCommandLists(1, lists);
   list->setSubmissionFence(signalQueue());

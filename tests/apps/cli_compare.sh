@@ -22,4 +22,13 @@ grep -q "NOT within tolerance" "$work/diff.log" || fail "no verdict line"
 # Loose enough a tolerance accepts the noise difference.
 "$penumbra" compare "$work/a.exr" "$work/b.exr" --tolerance 1e9 >/dev/null 2>&1 || fail "tolerance ignored"
 "$penumbra" compare --a vulkan:0 --size 8x8 >/dev/null 2>&1 && fail "--a without --b accepted"
+# AOV layers: a file without them is refused in one line naming the layer.
+"$penumbra" compare "$work/a.exr" "$work/a.exr" --layer albedo >"$work/layer.log" 2>&1 &&
+  fail "--layer on a file without layers accepted"
+grep -q "has no layer 'albedo'" "$work/layer.log" || { cat "$work/layer.log"; fail "no clear error for a missing layer"; }
+# Two seeds differ by noise, not systematically: the bias test passes them
+# when the per-pixel tolerance is waived, and prints the mean difference.
+"$penumbra" compare "$work/a.exr" "$work/b.exr" --allowed-fraction 1 --max-bias-sigmas 4 >"$work/bias.log" 2>&1 ||
+  { cat "$work/bias.log"; fail "two seeds' noise called systematic"; }
+grep -q "^mean difference b - a:" "$work/bias.log" || fail "no mean difference line"
 echo "compare CLI ok"

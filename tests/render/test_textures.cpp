@@ -451,10 +451,9 @@ TEST_CASE("textures: alpha MASK lets shadow rays through transparent texels",
             break;
           }
           const double dist = glm::length(toLight);
-          value =
-              *shadowOpaque
-                  ? 0.0f
-                  : float(albedo / std::numbers::pi * light.intensity.y * (toLight.z / dist) / (dist * dist));
+          value = *shadowOpaque ? 0.0f
+                                : float(albedo / std::numbers::pi * light.intensity.y *
+                                        (toLight.z / dist) / (dist * dist));
         }
         lo = std::min(lo, value);
         hi = std::max(hi, value);

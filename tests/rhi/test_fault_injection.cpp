@@ -19,10 +19,12 @@ TEST_CASE("fault injection: the armed allocation fails as out of memory, once", 
   faults::arm(faults::Site::Allocation, 2);
   auto first = device->createBuffer(desc);  // the first call still succeeds
   // The API's own name for it: what a user would search for.
-  const std::string code = test::testBackend() == "d3d12" ? "E_OUTOFMEMORY" : "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-  REQUIRE_THROWS_WITH(device->createBuffer(desc),
-                      ContainsSubstring("out of device memory allocating 3.0 MiB for buffer 'big'") &&
-                          ContainsSubstring(code));
+  const std::string code =
+      test::testBackend() == "d3d12" ? "E_OUTOFMEMORY" : "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+  REQUIRE_THROWS_WITH(
+      device->createBuffer(desc),
+      ContainsSubstring("out of device memory allocating 3.0 MiB for buffer 'big'") &&
+          ContainsSubstring(code));
   TextureDesc t;
   t.width = t.height = 16;
   t.debugName = "after";
@@ -38,7 +40,8 @@ TEST_CASE("fault injection: the armed submit reports a lost device naming the li
   list->open();
   list->close();
   faults::arm(faults::Site::Submit, 1);
-  const std::string code = test::testBackend() == "d3d12" ? "DXGI_ERROR_DEVICE_REMOVED" : "VK_ERROR_DEVICE_LOST";
+  const std::string code =
+      test::testBackend() == "d3d12" ? "DXGI_ERROR_DEVICE_REMOVED" : "VK_ERROR_DEVICE_LOST";
   REQUIRE_THROWS_WITH(device->submit(list.get()),
                       ContainsSubstring("was lost submitting command list 'doomed' (" + code));
   // The device was not really lost: the next submit goes through.

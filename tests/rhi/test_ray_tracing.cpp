@@ -53,7 +53,8 @@ enum Tags : uint32_t { kMissTag = 1, kMissAltTag = 2, kQuadATag = 100, kQuadBTag
 
 }  // namespace
 
-TEST_CASE("ray tracing: BLAS/TLAS, instances, shader table selection, readback", "[rhi][gpu][spirv-only]") {
+TEST_CASE("ray tracing: BLAS/TLAS, instances, shader table selection, readback",
+          "[rhi][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   auto cmd = device->createCommandList();
   cmd->open();

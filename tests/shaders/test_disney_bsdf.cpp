@@ -321,7 +321,8 @@ TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gp
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all light", "[shaders][bsdf][gpu][spirv-only]") {
+TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all light",
+          "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   auto m = base();
@@ -365,7 +366,8 @@ TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all l
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: near-zero roughness is a perfect mirror below the stated threshold", "[shaders][bsdf][gpu][spirv-only]") {
+TEST_CASE("Disney BSDF: near-zero roughness is a perfect mirror below the stated threshold",
+          "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   // alpha = roughness^2 = 1e-3 (the threshold), 1e-4 (the floor) and 0.
@@ -456,7 +458,8 @@ TEST_CASE("Disney BSDF: reflection lobes are reciprocal", "[shaders][bsdf][gpu][
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("Disney BSDF: no NaN, Inf or negative values over extreme inputs", "[shaders][bsdf][gpu][spirv-only]") {
+TEST_CASE("Disney BSDF: no NaN, Inf or negative values over extreme inputs",
+          "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
   // 2^20 random combinations: parameters at 0, 1, 1e-4, 1 - 1e-4 or random;

@@ -82,7 +82,8 @@ TEST_CASE("HLSL-compiled core: furnace without roulette is exact", "[shaders][gp
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("HLSL-compiled core: furnace with Russian roulette is unbiased", "[shaders][gpu][spirv-only]") {
+TEST_CASE("HLSL-compiled core: furnace with Russian roulette is unbiased",
+          "[shaders][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   auto v = runFurnace(*device, PT_FLAG_RUSSIAN_ROULETTE, 200, 256);
   double sum = 0;

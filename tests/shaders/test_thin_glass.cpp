@@ -80,7 +80,8 @@ TEST_CASE("thin smooth glass reflects with the air-to-glass Fresnel from either 
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
-TEST_CASE("thin rough glass evaluates the same from either face", "[shaders][bsdf][gpu][spirv-only]") {
+TEST_CASE("thin rough glass evaluates the same from either face",
+          "[shaders][bsdf][gpu][spirv-only]") {
   // Mirroring both directions through the sheet must not change f or pdf.
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);

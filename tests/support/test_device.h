@@ -4,10 +4,9 @@
 // the default adapter (lavapipe on CI). Tests end with
 // REQUIRE_NO_VALIDATION_MESSAGES.
 #include <catch2/catch_test_macros.hpp>
+#include <string>
 
 #include "backend_factory.h"
-
-#include <string>
 
 namespace penumbra::test {
 rhi::DeviceHandle makeTestDevice();

@@ -14,7 +14,8 @@
 using namespace penumbra;
 using Catch::Approx;
 
-TEST_CASE("picking: the camera ray is the one the shading core traces", "[viewer][gpu][spirv-only]") {
+TEST_CASE("picking: the camera ray is the one the shading core traces",
+          "[viewer][gpu][spirv-only]") {
   // A tilted camera and a wide image, so that every term of the model counts.
   scene::Camera camera;
   camera.position = {1.0, 2.0, -3.0};
