@@ -19,7 +19,8 @@
 #   d3d12_backends.sh GROUP PENUMBRA PENUMBRA_EXE SOURCE_DIR
 # GROUP: showcase (the five built-in scenes, Whitted), gltf (the glTF test
 # files and scene files), paths (environment maps, denoisers, AOV layers,
-# sample-split pieces, devices, both backends in one Windows process).
+# sample-split pieces, devices, both backends in one Windows process, the
+# viewer offscreen on D3D12).
 # Without wine, vkd3d-proton or a penumbra.exe with DXIL the group is not run:
 # it says why and exits 77 (ctest: "Not Run"), never 0.
 set -u
@@ -154,6 +155,43 @@ case "$group" in
     d3d12 compare --a vulkan:0 --b d3d12:0 --scene material-test --size 48x48 --spp 4 --seed 9 \
       --max-bias-sigmas 4 >"$work/one.log" 2>&1 || { cat "$work/one.log"; fail "compare --a vulkan:0 --b d3d12:0"; }
     echo "penumbra.exe compare --a vulkan:0 --b d3d12:0: $(grep 'max absolute' "$work/one.log")"
+
+    # The viewer on D3D12 (offscreen): a scripted screenshot that the Linux
+    # `penumbra render --settings` reproduces on Vulkan, and the menus drawn
+    # through the RHI's raster subset (ImGui) on D3D12.
+    viewer="$(dirname "$exe")/../viewer/penumbra-viewer.exe"
+    cat >"$work/viewer.script" <<SCRIPT
+set ui off
+set spp-per-frame 4
+set seed 5
+set max-samples 16
+move 0.03 0 0.05
+wait-frames 2
+wait-samples 16
+wait-frames 2
+screenshot $work/shot.exr
+capture $work/shown.png
+set ui on
+wait-frames 3
+capture $work/menus.png
+quit
+SCRIPT
+    bash "$wine_run" "$viewer" --offscreen --backend d3d12 --scene cornell-box --size 160x120 --render-scale 1 \
+      --config "$work/viewer.json" --script "$work/viewer.script" >"$work/viewer.log" 2>&1 ||
+      { cat "$work/viewer.log"; fail "penumbra-viewer.exe --offscreen --backend d3d12"; }
+    # (Windows programs end their lines with CR LF.)
+    tr -d '\r' <"$work/viewer.log" | grep -q "^device: .* via d3d12, offscreen 160x120$" ||
+      { cat "$work/viewer.log"; fail "the viewer did not run on D3D12"; }
+    "$penumbra" render --settings "$work/shot.json" --out "$work/viewer-vulkan.exr" >/dev/null 2>&1 ||
+      fail "penumbra render --settings of the viewer's screenshot"
+    "$penumbra" compare "$work/viewer-vulkan.exr" "$work/shot.exr" --tolerance 1e-3 --max-bias-sigmas 4 \
+      >"$work/viewer-compare.log" 2>&1 ||
+      { cat "$work/viewer-compare.log"; fail "the D3D12 viewer's screenshot differs from render --settings on Vulkan"; }
+    pngtopnm "$work/shown.png" >"$work/shown.ppm" && pngtopnm "$work/menus.png" >"$work/menus.ppm" ||
+      fail "the viewer's captures are not PNG files"
+    changed=$(python3 "$source/tests/apps/changed_pixels.py" "$work/shown.ppm" "$work/menus.ppm")
+    awk -v v="$changed" 'BEGIN { exit !(v > 0.05) }' || fail "the D3D12 viewer's capture does not show the menus"
+    echo "viewer on D3D12: screenshot vs render --settings on Vulkan: $(grep 'max absolute' "$work/viewer-compare.log"); the menus change $changed of the pixels"
 
     # Bad input on D3D12: one line, non-zero exit, no output file.
     d3d12 render --backend d3d12 --device 7 --size 8x8 --spp 1 --out "$work/none.exr" >"$work/bad.log" 2>&1 &&
