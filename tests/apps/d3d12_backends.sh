@@ -81,8 +81,9 @@ compare_case() {
     "$penumbra" compare "$work/$name.vulkan.exr" "$work/$name.d3d12.exr" ${layer:+--layer "$layer"} \
       --tolerance 1e-3 --allowed-fraction "$allowed" --max-bias-sigmas 4 >"$work/$name.compare.log" 2>&1
     local status=$?
-    printf '%-34s D3D12 %5.1f s  %s; %s\n' "$label" "$(echo "$end - $start" | bc)" \
-      "$(grep -m1 'pixels beyond' "$work/$name.compare.log")" "$(grep -m1 'max absolute' "$work/$name.compare.log")"
+    printf '%-34s D3D12 %5.1f s  %s; %s; %s\n' "$label" "$(echo "$end - $start" | bc)" \
+      "$(grep -m1 'pixels beyond' "$work/$name.compare.log")" "$(grep -m1 'max absolute' "$work/$name.compare.log")" \
+      "$(grep -m1 '^mean difference' "$work/$name.compare.log")"
     if [ $status -ne 0 ]; then
       cat "$work/$name.compare.log"
       echo "FAIL $label: the backends differ"
