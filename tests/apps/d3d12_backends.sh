@@ -100,7 +100,7 @@ case "$group" in
     compare_case performance 0.03 --scene performance "${common[@]}"
     compare_case cornell-box-whitted 0.002 --scene cornell-box-whitted "${common[@]}"
     # The sphere-traced mandelbulb and the glass ball part about 8 % of the
-    # paths (scattered pixels; the means agree to within 1.1 standard errors).
+    # paths (scattered pixels; the means agree to within 1.7 standard errors).
     compare_case implicit-surfaces 0.15 --scene implicit-surfaces "${common[@]}"
     compare_case whitted-integrator 0.002 --scene cornell-box-whitted --integrator whitted "${common[@]}"
     # Triangles and implicit surfaces in one scene, with a tinted glass ball:
