@@ -40,14 +40,7 @@ not_run() { echo "NOT RUN (D3D12 $group): $*"; exit 77; }
 command -v wine >/dev/null 2>&1 || not_run "wine is not installed (scripts/setup.sh installs it)"
 [ -f "$exe" ] || not_run "no Windows build at $exe (scripts/build.sh makes it; PENUMBRA_SKIP_WINDOWS skips it)"
 
-# One X server for the whole group (Wine's DXGI wants a display); -displayfd
-# picks a free display without the lock-file race of xvfb-run -a.
-exec 5>"$work/display"
-Xvfb -displayfd 5 -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb_pid=$!
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
-[ -s "$work/display" ] || fail "Xvfb did not start"
-export DISPLAY=":$(head -1 "$work/display")"
+source "$(dirname "$0")/xvfb_display.sh"
 
 d3d12() { bash "$wine_run" "$exe" "$@"; }
 
@@ -81,7 +74,7 @@ compare_case() {
     "$penumbra" compare "$work/$name.vulkan.exr" "$work/$name.d3d12.exr" ${layer:+--layer "$layer"} \
       --tolerance 1e-3 --allowed-fraction "$allowed" --max-bias-sigmas 4 >"$work/$name.compare.log" 2>&1
     local status=$?
-    printf '%-34s D3D12 %5.1f s  %s; %s; %s\n' "$label" "$(echo "$end - $start" | bc)" \
+    printf '%-34s D3D12 %5.1f s  %s; %s; %s\n' "$label" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')" \
       "$(grep -m1 'pixels beyond' "$work/$name.compare.log")" "$(grep -m1 'max absolute' "$work/$name.compare.log")" \
       "$(grep -m1 '^mean difference' "$work/$name.compare.log")"
     if [ $status -ne 0 ]; then

@@ -23,12 +23,7 @@ not_run() { echo "NOT RUN (D3D12 device cases): $*"; exit 77; }
 command -v wine >/dev/null 2>&1 || not_run "wine is not installed (scripts/setup.sh installs it)"
 [ -f "$exe" ] || not_run "no Windows test executable at $exe (scripts/build.sh builds it)"
 
-exec 5>"$work/display"
-Xvfb -displayfd 5 -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb_pid=$!
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
-[ -s "$work/display" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
-export DISPLAY=":$(head -1 "$work/display")"
+source "$(dirname "$0")/xvfb_display.sh"
 export PENUMBRA_TEST_BACKEND=d3d12 PENUMBRA_TEST_API_VALIDATION=0
 export PENUMBRA_TEST_DATA="$source/tests/data"
 
