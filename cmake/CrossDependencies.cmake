@@ -121,11 +121,11 @@ set(IMGUI_INCLUDE_DIRS ${_imgui_source})
 set(IMGUI_BACKEND_SOURCES ${_imgui_source}/backends)
 set(IMGUI_BACKEND_HEADERS ${_imgui_source}/backends)
 
-# Catch2 for the Windows test executable (tests/CMakeLists.txt): Debian's
-# catch2 is a Linux static library, so its source package of the same
-# version (scripts/setup.sh) is built here through its own CMake, which
-# gives Catch2::Catch2WithMain as find_package(Catch2) does natively.
-# Boost.Math's distributions for the tests' chi-square checks, header-only.
+# The Windows test executable (tests/CMakeLists.txt): Boost.Math's
+# distributions for its chi-square checks (header-only), and Catch2: Debian's
+# catch2 is a Linux static library, so its source package of the same version
+# (scripts/setup.sh) is built here through its own CMake, which gives
+# Catch2::Catch2WithMain as find_package(Catch2) does natively.
 if(PENUMBRA_BUILD_TESTS)
   penumbra_cross_headers(${_farm}/boost boost)
   set(PENUMBRA_TEST_INCLUDE_DIRS ${_farm}/boost)

@@ -64,8 +64,8 @@ std::pair<std::string, int> parseDeviceSpec(const std::string& spec) {
   return {spec.substr(0, colon), std::stoi(index)};
 }
 
-// The channels "<layer>.*" of a layered EXR (render --aov) as an image: up
-// to three, in the file's (sorted) order, a single one repeated in R, G, B.
+// The channels "<layer>.*" of a layered EXR (render --aov) as an image: the
+// first three in the file's (sorted) order, a single one repeated in R, G, B.
 image::Image loadLayer(const std::string& path, const std::string& layer) {
   const image::ExrChannels exr = image::loadExrChannels(path);
   std::vector<const std::vector<float>*> channels;
