@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package Penumbra needs to build, test and run on
 # Debian 12 (bookworm). Idempotent: packages already present are left alone.
+# `setup.sh --render` installs only what building and running the renderer
+# needs (README's first command): no viewer, tests, Wine or cross compiler.
 #
 # bookworm's own Mesa (22.3) has no ray tracing in lavapipe, its Catch2 is
 # 2.x and its DirectX-Headers older than the D3D12 backend uses, so those
@@ -17,6 +19,12 @@
 # imgui/, glfw3/ and catch2/, the last for the Windows test executable), where cmake/CrossDependencies.cmake looks for them
 # (its PENUMBRA_WINDOWS_SOURCES cache variable). Skipped when already there.
 set -euo pipefail
+render_only=0
+case "${1:-}" in
+  --render) render_only=1 ;;
+  "") ;;
+  *) echo "setup.sh: unknown option '$1' (--render: only what the renderer needs)" >&2; exit 2 ;;
+esac
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then
@@ -25,13 +33,22 @@ if [ "$(id -u)" -ne 0 ]; then
   fi
 fi
 
-BASE_PACKAGES=(
+# What building and running the renderer (`penumbra`) needs: the first README
+# command installs only these (`setup.sh --render`).
+RENDER_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libvulkan-dev vulkan-validationlayers vulkan-tools
   glslang-tools glslang-dev spirv-tools
   libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-dev libstb-dev
-  libtinyexr-dev libfmt-dev libboost-dev libxxhash-dev
+  libtinyexr-dev libfmt-dev libxxhash-dev
+)
+# The rest: the viewer, the tests, the sanitizer build and the Windows cross
+# build.
+BASE_PACKAGES=(
+  "${RENDER_PACKAGES[@]}"
+  # Boost.Math's distributions for the sampling tests' chi-square p-values.
+  libboost-dev
   # The render farm's tests start a real Slurm controller and node
   # (tests/farm/slurm_cluster.sh), authenticated by munge.
   slurm-wlm munge
@@ -169,6 +186,12 @@ install_d3d12_tools() {
   echo "setup.sh: DXC and vkd3d-proton in $D3D12_TOOLS ($(/usr/local/bin/dxc --version 2>/dev/null | head -1))"
 }
 
+if [ $render_only = 1 ]; then
+  # Mesa's lavapipe (backports) is the renderer's device on a machine without a GPU.
+  BASE_PACKAGES=("${RENDER_PACKAGES[@]}")
+  BACKPORT_PACKAGES=(mesa-vulkan-drivers)
+  WINE_PACKAGES=()
+fi
 missing=()
 for p in "${BASE_PACKAGES[@]}" "${BACKPORT_PACKAGES[@]}" "${WINE_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -176,11 +199,13 @@ done
 # Mesa must be the backports version (25.x); bookworm's 22.3 lacks ray tracing.
 mesa_version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
 case "$mesa_version" in 2[5-9].*|[3-9][0-9].*) ;; *) missing+=(mesa-vulkan-drivers) ;; esac
-catch_version=$(dpkg-query -W -f='${Version}' catch2 2>/dev/null || true)
-case "$catch_version" in 3.*) ;; *) missing+=(catch2) ;; esac
-# DirectX-Headers 1.614 (backports) for DXR 1.1 declarations; bookworm has 1.606.
-dxh_version=$(dpkg-query -W -f='${Version}' directx-headers-dev 2>/dev/null || true)
-case "$dxh_version" in 1.61[4-9]*|1.6[2-9]*|1.[7-9]*|[2-9].*) ;; *) missing+=(directx-headers-dev) ;; esac
+if [ $render_only = 0 ]; then
+  catch_version=$(dpkg-query -W -f='${Version}' catch2 2>/dev/null || true)
+  case "$catch_version" in 3.*) ;; *) missing+=(catch2) ;; esac
+  # DirectX-Headers 1.614 (backports) for DXR 1.1 declarations; bookworm has 1.606.
+  dxh_version=$(dpkg-query -W -f='${Version}' directx-headers-dev 2>/dev/null || true)
+  case "$dxh_version" in 1.61[4-9]*|1.6[2-9]*|1.[7-9]*|[2-9].*) ;; *) missing+=(directx-headers-dev) ;; esac
+fi
 
 install_packages() {
   backports_file=/etc/apt/sources.list.d/penumbra-bookworm-backports.sources
@@ -195,7 +220,7 @@ install_packages() {
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends "${BASE_PACKAGES[@]}"
   $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports "${BACKPORT_PACKAGES[@]}"
-  $SUDO apt-get install -y -q "${WINE_PACKAGES[@]}"
+  if [ ${#WINE_PACKAGES[@]} -gt 0 ]; then $SUDO apt-get install -y -q "${WINE_PACKAGES[@]}"; fi
 }
 
 if [ ${#missing[@]} -eq 0 ]; then
@@ -203,6 +228,8 @@ if [ ${#missing[@]} -eq 0 ]; then
 else
   install_packages
 fi
-fetch_windows_sources
-install_d3d12_tools
+if [ $render_only = 0 ]; then
+  fetch_windows_sources
+  install_d3d12_tools
+fi
 echo "setup.sh: done"
