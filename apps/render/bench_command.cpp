@@ -24,18 +24,21 @@ namespace penumbra::app {
 namespace {
 
 struct BenchOptions {
-  std::string scene = "cornell-box";
-  std::string size = "1920x1080";
-  uint32_t sppPerFrame = 1;
+  SceneOptions scene{"cornell-box", "1920x1080"};
+  DeviceOptions device;
+  SettingOptions settingOptions;
+  render::RenderSettings settings = defaults();  // the table's, as given (settingOptions)
   uint32_t frames = 16;
-  std::string backend = "vulkan";
-  int device = -1;
-  render::Integrator integrator = render::Integrator::Path;
-  render::DenoiseMode denoise = render::DenoiseMode::Off;
   // The denoiser's camera path: scene units per frame along the camera's
   // right vector (0: a still camera).
   double cameraPan = 0;
   uint32_t referenceSpp = 256;  // of the converged reference the moving camera's last frame meets
+
+  static render::RenderSettings defaults() {
+    render::RenderSettings s;
+    s.sppPerFrame = 1;
+    return s;
+  }
 };
 
 // |luminance(p) - luminance(q)| of two RGB(A) pixels (Rec. 709).
@@ -119,7 +122,8 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
                    render::PathTracerSettings settings, const BenchOptions& o) {
   render::Denoiser denoiser(device, tracer.width(), tracer.height());
   render::DenoiserSettings d;
-  d.mode = o.denoise;
+  d.mode = o.settings.denoiser.mode;
+  d.fireflyClamp = o.settings.denoiser.fireflyClamp;
   std::vector<double> trace, filter;
   image::Image previousRaw, previousDenoised, moments;
   double rawChange = 0, denoisedChange = 0;
@@ -137,9 +141,9 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
       tracer.setCamera(camera);
     }
     tracer.startNewMean(nextSample);
-    nextSample += o.sppPerFrame;
-    const auto stats = tracer.renderFrame(settings, o.sppPerFrame);
-    const double seconds = denoiser.run(tracer, camera, o.sppPerFrame, d);
+    nextSample += o.settings.sppPerFrame;
+    const auto stats = tracer.renderFrame(settings, o.settings.sppPerFrame);
+    const double seconds = denoiser.run(tracer, camera, o.settings.sppPerFrame, d);
     image::Image raw = tracer.readback(), denoised = tracer.readback(denoiser.output());
     if (f > 0) {
       trace.push_back(stats.gpuSeconds);
@@ -166,7 +170,8 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
   // idles and its clocks may drop: a still camera times the denoiser.
   if (o.cameraPan == 0) {
     fmt::print("denoiser ({}) GPU ms/frame median {:.3f}, mean {:.3f}\n",
-               render::denoiseModeName(o.denoise), median(filter) * 1e3, mean(filter) * 1e3);
+               render::denoiseModeName(o.settings.denoiser.mode), median(filter) * 1e3,
+               mean(filter) * 1e3);
     fmt::print("path tracing + denoiser GPU ms/frame median {:.3f}\n", median(frame) * 1e3);
   }
   fmt::print(
@@ -216,41 +221,38 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
 }
 
 int runBench(const BenchOptions& o) {
-  auto [width, height] = parseImageSize(o.size);
+  auto [width, height] = parseImageSize(o.scene.size);
   // A scene without light is lit as `render` lights it (the default environment).
   const scene::Scene scene = [&] {
-    scene::Scene loaded = scene::loadScene(o.scene);
+    scene::Scene loaded = scene::loadScene(o.scene.scene);
     render::applyEnvironmentChoice(loaded, {});
     return loaded;
   }();
-  rhi::DeviceCreateInfo info;
-  info.adapterIndex = o.device;
-  auto device = backends::createDevice(o.backend, info);
+  auto device = backends::createDevice(o.device.backend, o.device.createInfo());
   const auto& adapter = device->adapter();
   fmt::print("device: {} ({}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              device->backendName());
   fmt::print("scene: {} ({} triangles), {}x{}, {} spp per frame, {} frames each, {} integrator\n",
-             scene.name, scene.triangleCount(), width, height, o.sppPerFrame, o.frames,
-             render::integratorName(o.integrator));
+             scene.name, scene.triangleCount(), width, height, o.settings.sppPerFrame, o.frames,
+             render::integratorName(o.settings.tracer.integrator));
 
   render::PipelineOptions full;
   full.allEffects = true;
   render::PathTracer specialized(*device, scene, width, height);
   render::PathTracer everything(*device, scene, width, height, full);
-  render::PathTracerSettings settings;
-  settings.integrator = o.integrator;
+  render::PathTracerSettings settings = o.settings.tracer;
 
   // One warm-up frame each (first-dispatch costs), then a fresh mean.
-  specialized.renderFrame(settings, o.sppPerFrame);
-  everything.renderFrame(settings, o.sppPerFrame);
+  specialized.renderFrame(settings, o.settings.sppPerFrame);
+  everything.renderFrame(settings, o.settings.sppPerFrame);
   specialized.resetAccumulation();
   everything.resetAccumulation();
 
   Timings tSpecialized, tFull;
   for (uint32_t f = 0; f < o.frames; ++f) {
     settings.seed = f;  // both pipelines trace the same paths frame by frame
-    auto a = specialized.renderFrame(settings, o.sppPerFrame);
-    auto b = everything.renderFrame(settings, o.sppPerFrame);
+    auto a = specialized.renderFrame(settings, o.settings.sppPerFrame);
+    auto b = everything.renderFrame(settings, o.settings.sppPerFrame);
     tSpecialized.frameSeconds.push_back(a.gpuSeconds);
     tSpecialized.rays += a.rays;
     tFull.frameSeconds.push_back(b.gpuSeconds);
@@ -278,8 +280,12 @@ int runBench(const BenchOptions& o) {
   fmt::print("images: max |difference| {:.3g}, mean {:.3g}, rays traced {} vs {}\n",
              stats.maxAbsoluteDifference, stats.meanAbsoluteDifference, tSpecialized.rays,
              tFull.rays);
-  if (o.denoise != render::DenoiseMode::Off)
+  if (o.settings.denoiser.mode != render::DenoiseMode::Off)
     benchDenoiser(*device, scene, specialized, settings, o);
+  if (o.device.validation && device->validationMessageCount() > 0) {
+    fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
+    return 1;
+  }
   return 0;
 }
 
@@ -290,25 +296,17 @@ Command addBenchCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "bench",
       "Time the effect-specialized pipeline against the full one on one scene (GPU timestamps)");
-  cmd->add_option("--scene", o->scene, "Built-in scene name or scene file (.json)")
-      ->capture_default_str();
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each frame")
-      ->check(CLI::Range(1u, render::PathTracer::kMaxSamplesPerFrame))
-      ->capture_default_str();
+  addSceneOptions(*cmd, o->scene, "Built-in scene name or scene file (.json)");
   cmd->add_option("--frames", o->frames, "Timed frames per pipeline")
       ->check(CLI::Range(1u, 100000u))
       ->capture_default_str();
-  cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
-  cmd->add_option("--device", o->device,
-                  "Device index from 'penumbra devices' (default: best with ray tracing)");
-  cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
-      ->transform(CLI::CheckedTransformer(render::integratorsByName()))
-      ->default_str("path");
-  addDenoiseOption(
-      cmd, o->denoise,
-      "Also time the denoiser on the specialized pipeline's frames (each frame alone): off | "
-      "atrous | svgf");
+  addDeviceOptions(*cmd, o->device);
+  // Bench times both pipelines and writes no image: no --all-effects, no
+  // tone mapping.
+  o->settingOptions.add(*cmd, BenchOptions::defaults(), [](const render::Setting& s) {
+    if (s.change == render::SettingChange::Display) return s.key == "fireflyClamp";
+    return s.change != render::SettingChange::Pipeline;
+  });
   cmd->add_option("--camera-pan", o->cameraPan,
                   "With --denoise: move the camera this far (scene units) along its right vector "
                   "every frame, and report the flicker of what stays in view and, for svgf, the "
@@ -319,12 +317,15 @@ Command addBenchCommand(CLI::App& app) {
                   "compared with")
       ->check(CLI::Range(1u, render::kMaxSamplesPerPixel))
       ->capture_default_str();
-  return [o] {
-    if (o->cameraPan != 0 && o->denoise == render::DenoiseMode::Off)
+  return [o, cmd] {
+    o->settingOptions.apply(*cmd, o->settings);
+    const render::DenoiseMode denoise = o->settings.denoiser.mode;
+    if (o->cameraPan != 0 && denoise == render::DenoiseMode::Off)
       throw Error("--camera-pan: the camera path measures the denoiser (--denoise atrous|svgf)");
     if (!std::isfinite(o->cameraPan))
       throw Error("--camera-pan: the step must be a finite number of scene units");
-    if (o->denoise != render::DenoiseMode::Off && o->integrator != render::Integrator::Path)
+    if (denoise != render::DenoiseMode::Off &&
+        o->settings.tracer.integrator != render::Integrator::Path)
       throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
     return runBench(*o);
   };

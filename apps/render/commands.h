@@ -1,5 +1,4 @@
 #pragma once
-#include "render/denoiser.h"
 // Subcommands of the `penumbra` CLI. Each registers its options on the app and
 // returns the function that runs it.
 #include <CLI/CLI.hpp>
@@ -7,6 +6,8 @@
 #include <functional>
 #include <string>
 #include <utility>
+
+#include "cli_options.h"
 
 namespace penumbra::app {
 using Command = std::function<int()>;
@@ -17,9 +18,4 @@ Command addBenchCommand(CLI::App& app);
 Command addStudyCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
 Command addFarmCommand(CLI::App& app);
-// "512x512" -> (512, 512); penumbra::Error with the flag's name otherwise.
-std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text);
-
-// The --denoise option (off | atrous | svgf) of `render` and `bench`.
-void addDenoiseOption(CLI::App* command, render::DenoiseMode& mode, const std::string& description);
 }  // namespace penumbra::app

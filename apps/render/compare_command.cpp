@@ -20,10 +20,10 @@ namespace {
 struct CompareOptions {
   std::string a, b;              // image files
   std::string deviceA, deviceB;  // or BACKEND:INDEX render targets
-  std::string scene = "cornell-box";
-  std::string size = "128x128";
+  SceneOptions scene{"cornell-box", "128x128"};  // with --a/--b
   uint32_t spp = 16;
-  uint32_t seed = 0;
+  SettingOptions settingOptions;  // the path tracer's settings with --a/--b
+  render::RenderSettings settings;
   double tolerance = 1e-3;
   double allowedFraction = 0.0;
   double maxBiasSigmas = 0.0;  // 0: no test of the mean difference
@@ -90,9 +90,7 @@ image::Image renderOn(const std::string& spec, const scene::Scene& scene, uint32
   auto device = backends::createDevice(backend, info);
   fmt::print("{}: {} via {}\n", spec, device->adapter().name, device->backendName());
   std::fflush(stdout);
-  render::PathTracerSettings settings;
-  settings.seed = o.seed;
-  return render::renderImage(*device, scene, w, h, o.spp, settings);
+  return render::renderImage(*device, scene, w, h, o.spp, o.settings.tracer);
 }
 
 int runCompare(const CompareOptions& o) {
@@ -107,10 +105,11 @@ int runCompare(const CompareOptions& o) {
   image::Image a, b;
   std::string nameA = o.a, nameB = o.b;
   if (renderMode) {
-    const auto [w, h] = parseImageSize(o.size);
-    scene::Scene scene = scene::loadScene(o.scene);
+    const auto [w, h] = parseImageSize(o.scene.size);
+    scene::Scene scene = scene::loadScene(o.scene.scene);
     render::applyEnvironmentChoice(scene, {});  // as `render` lights a scene without light
-    fmt::print("scene: {}, {}x{}, {} spp, seed {}\n", scene.name, w, h, o.spp, o.seed);
+    fmt::print("scene: {}, {}x{}, {} spp, seed {}\n", scene.name, w, h, o.spp,
+               o.settings.tracer.seed);
     a = renderOn(o.deviceA, scene, w, h, o);
     b = renderOn(o.deviceB, scene, w, h, o);
     nameA = o.deviceA;
@@ -172,13 +171,14 @@ Command addCompareCommand(CLI::App& app) {
                       "Render on BACKEND:INDEX (e.g. vulkan:0) instead of reading a file");
   compare->add_option("--b", o->deviceB,
                       "Render on BACKEND:INDEX (e.g. d3d12:0) instead of reading a file");
-  compare->add_option("--scene", o->scene, "Scene to render with --a/--b")->capture_default_str();
-  compare->add_option("--size", o->size, "Image size with --a/--b")->capture_default_str();
+  addSceneOptions(*compare, o->scene, "Scene to render with --a/--b");
   compare->add_option("--spp", o->spp, "Samples per pixel with --a/--b")
       ->check(CLI::Range(1u, 1u << 16))
       ->capture_default_str();
-  compare->add_option("--seed", o->seed, "Random seed with --a/--b (the same on both)")
-      ->capture_default_str();
+  // The path tracer's settings, the same on both sides.
+  o->settingOptions.add(*compare, o->settings, [](const render::Setting& s) {
+    return s.identity && s.change == render::SettingChange::Image && s.key != "sppPerFrame";
+  });
   cmd->add_option("--tolerance", o->tolerance,
                   "Relative per-channel tolerance: |a-b| <= tol * max(|a|, |b|, 1e-3)")
       ->capture_default_str();
@@ -196,7 +196,10 @@ Command addCompareCommand(CLI::App& app) {
       "--layer", o->layer,
       "Compare this layer of two layered EXRs (render --aov: albedo, normal, depth, ...)");
   cmd->add_option("--diff", o->diffOut, "Write a false-colour difference image (.png)");
-  return [o] { return runCompare(*o); };
+  return [o, cmd] {
+    o->settingOptions.apply(*cmd, o->settings);
+    return runCompare(*o);
+  };
 }
 
 }  // namespace penumbra::app

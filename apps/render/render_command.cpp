@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "backend_factory.h"
+#include "cli_options.h"
 #include "commands.h"
 #include "image/image_io.h"
 #include "penumbra_commit.h"
@@ -31,41 +32,22 @@ namespace penumbra::app {
 namespace {
 
 struct RenderOptions {
-  std::string scene = "cornell-box";
+  SceneOptions scene;
+  DeviceOptions device;
+  SettingOptions settings;  // --max-depth, --strategy, ... (render/render_settings.h)
   std::string camera;
-  std::string size = "512x512";
   uint32_t spp = 64;
-  uint32_t sppPerFrame = 16;
   std::string out = "render.png";
-  std::string backend = "vulkan";
-  int device = -1;
-  uint32_t seed = 0;
-  uint32_t maxDepth = 8;
-  render::Integrator integrator = render::Integrator::Path;
-  render::SamplingStrategy strategy = render::SamplingStrategy::Mis;
-  render::MisHeuristic heuristic = render::MisHeuristic::Power;
-  render::Sampler sampler = render::Sampler::Random;
   float aperture = 0.0f;
   float fNumber = 0.0f;
   float focusDistance = 1.0f;
   uint32_t apertureBlades = 0;
-  std::string env;
-  float envRotation = 0.0f;
-  float envIntensity = 1.0f;
-  std::string envBackground;
-  float clamp = 0.0f;
-  bool noRoulette = false;
-  bool validation = false;
+  EnvironmentOptions environment;
   std::string vary;
   std::string set;
-  bool allEffects = false;
   bool allowExternalFiles = false;
   bool printEffects = false;
-  float exposure = 1.0f;
-  render::ToneMapOperator toneOperator = render::ToneMapOperator::Clamp;
   std::string settingsFile;
-  render::DenoiseMode denoise = render::DenoiseMode::Off;
-  bool noFireflyClamp = false;
   std::string aov;
   std::string samples;  // "A:B": a piece of a split render
   uint32_t totalSpp = 0;
@@ -143,18 +125,6 @@ std::vector<image::ExrLayer> aovLayers(const std::vector<std::string>& aovs,
 
 }  // namespace
 
-std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text) {
-  static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
-  std::smatch m;
-  if (!std::regex_match(text, m, pattern))
-    throw Error(fmt::format("--size '{}': expected WIDTHxHEIGHT, e.g. 512x512", text));
-  uint32_t w = std::stoul(m[1]), h = std::stoul(m[2]);
-  if (!render::isValidImageSize(w, h))
-    throw Error(
-        fmt::format("--size '{}': width and height must be 1..{}", text, render::kMaxImageSide));
-  return {w, h};
-}
-
 namespace {
 
 // The job the options describe: a --settings file (a viewer screenshot's
@@ -163,32 +133,16 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   const bool fromFile = !o.settingsFile.empty();
   render::RenderJob job = fromFile ? render::loadRenderJob(o.settingsFile) : render::RenderJob{};
   auto given = [&](const char* flag) { return !fromFile || cmd.count(flag) > 0; };
-  if (given("--scene")) job.scene = o.scene;
+  if (given("--scene")) job.scene = o.scene.scene;
   if (given("--vary")) job.vary = o.vary;
   if (given("--set")) job.set = o.set;
-  if (given("--size")) std::tie(job.width, job.height) = parseImageSize(o.size);
+  if (given("--size")) std::tie(job.width, job.height) = parseImageSize(o.scene.size);
   if (given("--spp")) job.spp = o.spp;
-  if (given("--spp-per-frame")) job.sppPerFrame = o.sppPerFrame;
-  auto& s = job.settings;
-  if (given("--seed")) s.seed = o.seed;
-  if (given("--max-depth")) s.maxDepth = o.maxDepth;
-  if (given("--integrator")) s.integrator = o.integrator;
-  if (given("--strategy")) s.strategy = o.strategy;
-  if (given("--mis-heuristic")) s.misHeuristic = o.heuristic;
-  if (given("--sampler")) s.sampler = o.sampler;
-  if (given("--clamp")) s.radianceClamp = o.clamp;
-  if (given("--no-russian-roulette")) s.russianRoulette = !o.noRoulette;
-  if (given("--exposure")) job.toneMapping.exposure = o.exposure;
-  if (given("--tonemap")) job.toneMapping.toneOperator = o.toneOperator;
-  if (given("--all-effects")) job.allEffects = o.allEffects;
+  o.settings.apply(cmd, job.settings);
   // The environment options only where given: what they leave out stays
   // the record's (or the scene's). A new map starts from its own defaults,
   // as the viewer's does.
-  auto& env = job.environment;
-  if (cmd.count("--env") > 0) env = render::EnvironmentChoice{o.env, {}, {}, {}};
-  if (cmd.count("--env-rotation") > 0) env.rotationDegrees = o.envRotation;
-  if (cmd.count("--env-intensity") > 0) env.intensity = o.envIntensity;
-  if (cmd.count("--env-background") > 0) env.visibleBackground = o.envBackground == "visible";
+  o.environment.apply(cmd, job.environment);
   // A scene camera named on the command line wins over the record's camera.
   if (fromFile && cmd.count("--camera") > 0) job.camera.reset();
   return job;
@@ -222,6 +176,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     return 0;
   }
   const std::vector<std::string> aovs = parseAovs(o.aov, o.out);
+  const render::DenoiseMode denoiseMode = job.settings.denoiser.mode;
   // A piece of a split render: its range is checked against the whole
   // render's before any device is made.
   std::optional<render::SampleTree> splitTree;
@@ -236,7 +191,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
           fmt::format("--spp {} and --total-spp {}: a piece renders --samples of the "
                       "--total-spp render; give --total-spp only",
                       o.spp, o.totalSpp));
-    if (o.denoise != render::DenoiseMode::Off || !aovs.empty())
+    if (denoiseMode != render::DenoiseMode::Off || !aovs.empty())
       throw Error(
           "--samples: a piece holds sums of samples only; --denoise and --aov apply to "
           "whole images");
@@ -246,27 +201,27 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
                       "makes the final image)",
                       o.out));
     job.spp = o.totalSpp;
-    splitTree.emplace(o.totalSpp, job.sppPerFrame);
+    splitTree.emplace(o.totalSpp, job.settings.sppPerFrame);
     splitRange = render::parseSampleRange(o.samples, "--samples");
     splitTree->checkRange(*splitRange, "--samples");
   }
-  if (o.denoise != render::DenoiseMode::Off && job.settings.integrator != render::Integrator::Path)
+  if (denoiseMode != render::DenoiseMode::Off &&
+      job.settings.tracer.integrator != render::Integrator::Path)
     throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
   image::checkWritable(o.out);
   // A piece's identity is the device-independent part of what it renders.
   std::optional<render::SplitRenderIdentity> splitIdentity;
   if (splitTree) {
     const scene::Camera rendered = job.camera ? *job.camera : scene.camera;
-    splitIdentity =
-        render::SplitRenderIdentity{scene::contentHash(scene),
-                                    render::splitSettingsHash(job.settings, rendered, width, height,
-                                                              job.sppPerFrame, job.allEffects),
-                                    width,
-                                    height,
-                                    job.settings.seed,
-                                    job.spp,
-                                    job.sppPerFrame,
-                                    PENUMBRA_COMMIT};
+    splitIdentity = render::SplitRenderIdentity{
+        scene::contentHash(scene),
+        render::splitSettingsHash(job.settings, rendered, width, height),
+        width,
+        height,
+        job.settings.tracer.seed,
+        job.spp,
+        job.settings.sppPerFrame,
+        PENUMBRA_COMMIT};
   }
   if (o.checkOnly) {
     if (splitIdentity)
@@ -276,42 +231,36 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     return 0;
   }
 
-  rhi::DeviceCreateInfo info;
-  info.adapterIndex = o.device;
-  info.validation = o.validation;
-  auto device = backends::createDevice(o.backend, info);
+  auto device = backends::createDevice(o.device.backend, o.device.createInfo());
   const auto& adapter = device->adapter();
   fmt::print("device: {} ({}, {}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              adapter.apiVersion, device->backendName());
   fmt::print("scene: {} ({} triangles, {} implicit objects), {}x{}, {} spp, seed {}\n", scene.name,
              scene.triangleCount(), scene.implicits.size(), width, height, job.spp,
-             job.settings.seed);
-  if (job.settings.radianceClamp > 0.0f)
+             job.settings.tracer.seed);
+  if (job.settings.tracer.radianceClamp > 0.0f)
     fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n",
-               job.settings.radianceClamp);
+               job.settings.tracer.radianceClamp);
   std::fflush(stdout);  // before the progress lines on stderr
 
   render::PipelineOptions pipeline;
-  pipeline.allEffects = job.allEffects;
+  pipeline.allEffects = job.settings.allEffects;
   render::PathTracer tracer(*device, scene, width, height, pipeline);
   if (job.camera) tracer.setCamera(*job.camera);
   std::string effects;
   for (const auto& name : render::effectNames(tracer.pipelineEffects()))
     effects += (effects.empty() ? "" : ", ") + name;
   fmt::print("pipeline effects: {}{}\n", effects.empty() ? "none" : effects,
-             job.allEffects ? " (--all-effects)" : "");
-  render::PathTracerSettings settings = job.settings;
+             job.settings.allEffects ? " (--all-effects)" : "");
+  render::PathTracerSettings settings = render::frameSettings(job.settings);
   // The guide buffers are what the denoiser and the AOVs read; a record of
   // frames that wrote them (a viewer screenshot taken while denoising) asks
   // for them too, to render those frames again exactly.
-  settings.writeGuides =
-      job.settings.writeGuides || o.denoise != render::DenoiseMode::Off || !aovs.empty();
+  if (!aovs.empty()) settings.writeGuides = true;
 
   std::unique_ptr<render::Denoiser> denoiser;
-  render::DenoiserSettings denoise;
-  denoise.mode = o.denoise;
-  denoise.fireflyClamp = !o.noFireflyClamp;
-  if (o.denoise != render::DenoiseMode::Off)
+  const render::DenoiserSettings& denoise = job.settings.denoiser;
+  if (denoiseMode != render::DenoiseMode::Off)
     denoiser = std::make_unique<render::Denoiser>(*device, width, height);
 
   if (splitTree) {
@@ -324,14 +273,14 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     progress.finish();
     // A piece rendered with validation messages is not written: a rerun of
     // the farm would take it as done.
-    if (o.validation && device->validationMessageCount() > 0) {
+    if (o.device.validation && device->validationMessageCount() > 0) {
       fmt::print(stderr, "error: {} validation message(s); the piece is not written\n",
                  device->validationMessageCount());
       return 1;
     }
     piece.identity = *splitIdentity;
     piece.sceneName = scene.name;
-    piece.toneMapping = job.toneMapping;
+    piece.toneMapping = job.settings.toneMapping;
     piece.range = *splitRange;
     // The driver too: two drivers of one GPU may round differently.
     piece.device =
@@ -344,9 +293,9 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   }
 
   Progress progress(job.spp);
-  const render::RenderLoopResult loop =
-      render::renderSamples(tracer, denoiser.get(), settings, denoise, job.spp, job.sppPerFrame,
-                            [&](uint32_t done) { progress.update(done); });
+  const render::RenderLoopResult loop = render::renderSamples(
+      tracer, denoiser.get(), settings, denoise, job.spp, job.settings.sppPerFrame,
+      [&](uint32_t done) { progress.update(done); });
   progress.finish();
   const double gpuSeconds = loop.gpuSeconds, denoiseSeconds = loop.denoiseSeconds;
   const uint64_t rays = loop.rays;
@@ -357,15 +306,15 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     layers = aovLayers(aovs, tracer, denoiser.get(), std::max(1u, tracer.accumulatedSamples()));
     if (denoiser && !aovs.empty()) layers.push_back({"noisy", {"R", "G", "B"}, tracer.readback()});
   }
-  render::saveRender(tracer, result, o.out, job.toneMapping, layers);
+  render::saveRender(tracer, result, o.out, job.settings.toneMapping, layers);
   fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
              gpuSeconds * 1e3, gpuSeconds * 1e3 / job.spp);
   if (denoiser)
-    fmt::print("denoiser ({}): {:.3f} ms GPU time\n", render::denoiseModeName(o.denoise),
+    fmt::print("denoiser ({}): {:.3f} ms GPU time\n", render::denoiseModeName(denoiseMode),
                denoiseSeconds * 1e3);
   fmt::print("rays: {} ({:.2f} Mrays/s)\n", rays, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0);
   fmt::print("wrote {}\n", o.out);
-  if (o.validation && device->validationMessageCount() > 0) {
+  if (o.device.validation && device->validationMessageCount() > 0) {
     fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
     return 1;
   }
@@ -374,22 +323,12 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 
 }  // namespace
 
-void addDenoiseOption(CLI::App* command, render::DenoiseMode& mode,
-                      const std::string& description) {
-  std::map<std::string, render::DenoiseMode> modes;
-  for (auto m : render::kDenoiseModes) modes[render::denoiseModeName(m)] = m;
-  command->add_option("--denoise", mode, description)
-      ->transform(CLI::CheckedTransformer(modes))
-      ->default_str("off");
-}
-
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd =
       app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
-  cmd->add_option("--scene", o->scene,
-                  "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)")
-      ->capture_default_str();
+  addSceneOptions(*cmd, o->scene,
+                  "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)");
   cmd->add_option("--camera", o->camera,
                   "Render from the scene's camera of this name (glTF camera or node name; "
                   "default: the first camera in node order)");
@@ -405,25 +344,12 @@ Command addRenderCommand(CLI::App& app) {
          "--aperture-blades", o->apertureBlades,
          "Aperture blades: 0 round, 3..32 a polygon (the shape of out-of-focus highlights)")
       ->check(CLI::Range(0u, 32u));
-  cmd->add_option("--env", o->env,
-                  "Environment light: an equirectangular .exr or .hdr, 'default' (the studio "
-                  "environment scenes without light get) or 'none'");
-  cmd->add_option("--env-rotation", o->envRotation,
-                  "Turn the environment about the up axis (degrees, counter-clockwise from above)");
-  cmd->add_option("--env-intensity", o->envIntensity, "Scale the environment's radiance")
-      ->check(CLI::Range(0.0f, 1e6f));
-  cmd->add_option("--env-background", o->envBackground,
-                  "Whether camera rays that miss see the environment: visible | hidden (black)")
-      ->check(CLI::IsMember({"visible", "hidden"}));
+  addEnvironmentOptions(*cmd, o->environment);
   cmd->add_option("--focus-distance", o->focusDistance,
                   "Distance in metres along the view to the plane in focus (with --aperture)")
       ->check(CLI::Range(1e-6f, 1e9f));
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--spp", o->spp, "Samples per pixel")
       ->check(CLI::Range(1u, render::kMaxSamplesPerPixel))
-      ->capture_default_str();
-  cmd->add_option("--spp-per-frame", o->sppPerFrame, "Samples per pixel in each GPU frame")
-      ->check(CLI::Range(1u, render::PathTracer::kMaxSamplesPerFrame))
       ->capture_default_str();
   cmd->add_option("--samples", o->samples,
                   "Render samples A to B-1 of a --total-spp render into an .exr piece for "
@@ -432,39 +358,8 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(1u, render::kMaxSamplesPerPixel));
   cmd->add_option("--out", o->out, "Output image: .exr (linear float) or .png (tone-mapped sRGB)")
       ->capture_default_str();
-  cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
-  cmd->add_option("--device", o->device,
-                  "Device index from 'penumbra devices' (default: best with ray tracing)");
-  cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
-  cmd->add_option("--max-depth", o->maxDepth, "Maximum bounces")
-      ->check(CLI::Range(0u, render::kMaxPathDepth))
-      ->capture_default_str();
-  cmd->add_option("--integrator", o->integrator, "Integrator: path | whitted")
-      ->transform(CLI::CheckedTransformer(render::integratorsByName()))
-      ->default_str("path");
-  cmd->add_option("--strategy", o->strategy,
-                  "Path sampling: uniform | cosine | bsdf (no light sampling) | nee | mis")
-      ->transform(CLI::CheckedTransformer(render::strategiesByName()))
-      ->default_str("mis");
-  cmd->add_option("--mis-heuristic", o->heuristic, "MIS weights: power | balance")
-      ->transform(CLI::CheckedTransformer(render::misHeuristicsByName()))
-      ->default_str("power");
-  cmd->add_option("--sampler", o->sampler,
-                  "Random numbers: random (hashed) | sobol (Owen-scrambled Sobol)")
-      ->transform(CLI::CheckedTransformer(render::samplersByName()))
-      ->default_str("random");
-  cmd->add_option("--clamp", o->clamp, "Clamp each sample's radiance to this value (0 = off)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_flag("--no-russian-roulette", o->noRoulette, "Disable Russian roulette");
-  cmd->add_option("--exposure", o->exposure, "Exposure multiplier for PNG output")
-      ->capture_default_str();
-  std::map<std::string, render::ToneMapOperator> toneOperators;
-  for (auto op : render::allToneMapOperators()) toneOperators[render::toneMapOperatorName(op)] = op;
-  cmd->add_option("--tonemap", o->toneOperator,
-                  "Tone curve for PNG output: clamp | reinhard | aces")
-      ->transform(CLI::CheckedTransformer(toneOperators))
-      ->default_str("clamp");
+  addDeviceOptions(*cmd, o->device);
+  o->settings.add(*cmd, render::RenderSettings{});
   cmd->add_option("--settings", o->settingsFile,
                   "Render settings JSON (written beside each viewer screenshot); options given "
                   "explicitly override its values");
@@ -473,8 +368,6 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option(
       "--set", o->set,
       "material-test: the shared material's constants, e.g. metallic=1,baseColor=0.9,0.6,0.2");
-  cmd->add_flag("--all-effects", o->allEffects,
-                "Build the full pipeline instead of only the effects the scene calls for");
   cmd->add_flag("--allow-external-files", o->allowExternalFiles,
                 "Let glTF files read buffers and images outside their own folder");
   cmd->add_flag("--check-only", o->checkOnly,
@@ -482,13 +375,6 @@ Command addRenderCommand(CLI::App& app) {
       ->group("");
   cmd->add_flag("--print-effects", o->printEffects,
                 "List the effects the scene calls for, one per line, and exit");
-  cmd->add_flag("--validation", o->validation,
-                "Enable the API validation layer; fail on any message");
-  addDenoiseOption(
-      cmd, o->denoise,
-      "Denoiser: off | atrous (single frame, on the final image) | svgf (temporal, every frame)");
-  cmd->add_flag("--no-firefly-clamp", o->noFireflyClamp,
-                "Denoiser: keep pixels brighter than all their neighbours (no firefly clamp)");
   cmd->add_option(
       "--aov", o->aov,
       "Auxiliary outputs as EXR layers, comma separated: albedo, normal, depth, emission, "

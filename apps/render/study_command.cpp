@@ -35,8 +35,7 @@ namespace penumbra::app {
 namespace {
 
 struct StudyOptions {
-  std::string scene = "cornell-box";
-  std::string size = "64x64";
+  SceneOptions scene{"cornell-box", "64x64"};
   std::string spp = "1,4,16,64";
   std::string integrators = "path";
   std::string strategies = "mis";
@@ -58,9 +57,7 @@ struct StudyOptions {
   double targetRelMse = 0.0;
   std::string out;
   std::string analyze;
-  std::string backend = "vulkan";
-  int device = -1;
-  bool validation = false;
+  DeviceOptions device;
   // A study split into jobs (docs/farm.md): the reference alone, a range of
   // points, or the gathering of the parts' rows into the results.
   bool referenceOnly = false;
@@ -110,42 +107,32 @@ study::StudySpec makeSpec(const StudyOptions& o) {
   spec.spp = parseList<uint32_t>(
       "--spp", o.spp, [](const std::string& s) { return parseCount(s, 1, 1u << 20); },
       "a sample count 1..1048576");
-  spec.integrators = parseList<render::Integrator>(
-      "--integrator", o.integrators,
-      [](const std::string& s) { return render::parseIntegrator(s); },
-      "an integrator (path, whitted)");
-  spec.strategies = parseList<render::SamplingStrategy>(
-      "--strategy", o.strategies, [](const std::string& s) { return render::parseStrategy(s); },
-      "a strategy (uniform, cosine, bsdf, nee, mis)");
-  spec.heuristics = parseList<render::MisHeuristic>(
-      "--mis-heuristic", o.heuristics,
-      [](const std::string& s) { return render::parseMisHeuristic(s); },
-      "a MIS heuristic (power, balance)");
-  spec.samplers = parseList<render::Sampler>(
-      "--sampler", o.samplers, [](const std::string& s) { return render::parseSampler(s); },
-      "a sampler (random, sobol)");
-  spec.maxDepths = parseList<uint32_t>(
-      "--max-depth", o.maxDepths, [](const std::string& s) { return parseCount(s, 0, 1024); },
-      "a depth 0..1024");
-  spec.russianRoulette = parseList<bool>(
-      "--russian-roulette", o.roulette,
-      [](const std::string& s) -> std::optional<bool> {
-        if (s == "on") return true;
-        if (s == "off") return false;
-        return std::nullopt;
-      },
-      "on or off");
-  spec.clamps = parseList<float>(
-      "--clamp", o.clamps,
-      [](const std::string& s) -> std::optional<float> {
-        const auto v = parseNumber(s);
-        if (!v || *v < 0) return std::nullopt;
-        return float(*v);
-      },
-      "a clamp >= 0 (0 = off)");
-  spec.denoise = parseList<render::DenoiseMode>(
-      "--denoise", o.denoise, [](const std::string& s) { return render::parseDenoiseMode(s); },
-      "a denoiser (off, atrous, svgf)");
+  // The technique axes that are table settings take the table's names and
+  // ranges (render/render_settings.h); a flag's values are on and off.
+  auto axis = [](const char* key, const std::string& text, auto& out) {
+    using T = typename std::decay_t<decltype(out)>::value_type;
+    const render::Setting& setting = *render::findSetting(key);
+    const std::vector<double> values = parseList<double>(
+        fmt::format("--{}", setting.name), text,
+        [&](const std::string& item) { return setting.parse(item); }, setting.expected().c_str());
+    out.clear();
+    for (double v : values) {
+      if constexpr (std::is_same_v<T, bool>)
+        out.push_back(v != 0.0);
+      else if constexpr (std::is_enum_v<T>)
+        out.push_back(T(static_cast<std::underlying_type_t<T>>(v)));
+      else
+        out.push_back(T(v));
+    }
+  };
+  axis("integrator", o.integrators, spec.integrators);
+  axis("strategy", o.strategies, spec.strategies);
+  axis("misHeuristic", o.heuristics, spec.heuristics);
+  axis("sampler", o.samplers, spec.samplers);
+  axis("maxDepth", o.maxDepths, spec.maxDepths);
+  axis("russianRoulette", o.roulette, spec.russianRoulette);
+  axis("radianceClamp", o.clamps, spec.clamps);
+  axis("denoise", o.denoise, spec.denoise);
   spec.allEffects = parseList<bool>(
       "--pipeline", o.pipelines,
       [](const std::string& s) -> std::optional<bool> {
@@ -264,9 +251,9 @@ uint32_t referenceSppOf(const StudyOptions& o) {
 
 // What a cached reference was rendered from (DIR/reference.txt's first line).
 std::string referenceKey(const StudyOptions& o) {
-  const auto [width, height] = parseImageSize(o.size);
-  return fmt::format("{} {}x{} {} spp seed {} depth {}", o.scene, width, height, referenceSppOf(o),
-                     o.referenceSeed, o.referenceMaxDepth);
+  const auto [width, height] = parseImageSize(o.scene.size);
+  return fmt::format("{} {}x{} {} spp seed {} depth {}", o.scene.scene, width, height,
+                     referenceSppOf(o), o.referenceSeed, o.referenceMaxDepth);
 }
 
 // The reference cached in DIR for these options, if any. A cache whose
@@ -312,7 +299,7 @@ void writeAtomically(const std::filesystem::path& path, const std::string& text)
 study::StudyContext studyContext(const StudyOptions& o, uint32_t width, uint32_t height,
                                  const study::Reference& reference) {
   study::StudyContext context;
-  context.scene = o.scene;
+  context.scene = o.scene.scene;
   context.width = width;
   context.height = height;
   context.commit = PENUMBRA_COMMIT;
@@ -356,7 +343,7 @@ void writeResults(const StudyOptions& o, const std::filesystem::path& dir,
 // the results a single run writes.
 int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& points,
                 const std::filesystem::path& dir, study::Reference reference) {
-  const auto [width, height] = parseImageSize(o.size);
+  const auto [width, height] = parseImageSize(o.scene.size);
   if (!o.reference.empty()) {
     // Given by the user: already loaded and checked by runStudy.
   } else if (std::optional<study::Reference> cached = cachedReference(o, dir)) {
@@ -453,10 +440,10 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   // Everything that can fail on bad input fails before any rendering starts.
   const study::StudySpec spec = makeSpec(o);
   const std::vector<study::StudyPoint> points = study::expandStudy(spec);
-  const auto [width, height] = parseImageSize(o.size);
+  const auto [width, height] = parseImageSize(o.scene.size);
   // A scene without light is lit as `render` lights it (the default environment).
   const scene::Scene scene = [&] {
-    scene::Scene loaded = scene::loadScene(o.scene);
+    scene::Scene loaded = scene::loadScene(o.scene.scene);
     render::applyEnvironmentChoice(loaded, {});
     return loaded;
   }();
@@ -494,10 +481,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   }
   OutputGuard written;
 
-  rhi::DeviceCreateInfo info;
-  info.adapterIndex = o.device;
-  info.validation = o.validation;
-  auto device = backends::createDevice(o.backend, info);
+  auto device = backends::createDevice(o.device.backend, o.device.createInfo());
   const auto& adapter = device->adapter();
   fmt::print("device: {} ({}) via {}; commit {}\n", adapter.name, adapter.apiVersion,
              device->backendName(), PENUMBRA_COMMIT);
@@ -571,7 +555,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
     }
   }
   progress.finish();
-  if (o.validation && device->validationMessageCount() > 0) {
+  if (o.device.validation && device->validationMessageCount() > 0) {
     fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
     return 1;
   }
@@ -608,9 +592,7 @@ Command addStudyCommand(CLI::App& app) {
       "study",
       "What accuracy costs in time: render a sweep of techniques and sample counts, each timed "
       "on the GPU and compared with a reference; write results.csv/json and print the answers");
-  cmd->add_option("--scene", o->scene, "Built-in scene name, scene file or glTF file")
-      ->capture_default_str();
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  addSceneOptions(*cmd, o->scene, "Built-in scene name, scene file or glTF file");
   cmd->add_option("--spp", o->spp, "Samples per pixel, comma separated")->capture_default_str();
   cmd->add_option("--integrator", o->integrators, "path, whitted (comma separated)")
       ->capture_default_str();
@@ -662,10 +644,7 @@ Command addStudyCommand(CLI::App& app) {
   cmd->add_option("--out", o->out, "Folder for results.csv, results.json, images/, reference");
   cmd->add_option("--analyze", o->analyze,
                   "Print the answers of an existing results.csv instead of rendering");
-  cmd->add_option("--backend", o->backend, "Backend: vulkan | d3d12")->capture_default_str();
-  cmd->add_option("--device", o->device, "Device index from 'penumbra devices'");
-  cmd->add_flag("--validation", o->validation,
-                "Enable the API validation layer; fail on any message");
+  addDeviceOptions(*cmd, o->device);
   cmd->add_flag("--reference-only", o->referenceOnly,
                 "Split study, step 1: render and cache the reference in --out, nothing else");
   cmd->add_option("--points", o->points,

@@ -1,51 +1,36 @@
 // `penumbra-viewer`: the interactive viewer (GLFW window, Dear ImGui menus).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <tuple>
 
-#include "render/image_size.h"
+#include "cli_options.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "viewer_app.h"
 
-namespace {
-// "1280x720" -> width and height; false when malformed.
-bool parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
-  unsigned w = 0, h = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 ||
-      !penumbra::render::isValidImageSize(w, h))
-    return false;
-  width = w;
-  height = h;
-  return true;
-}
-}  // namespace
-
 int main(int argc, char** argv) {
   using namespace penumbra;
   viewer::ViewerOptions o;
-  std::string size = "1280x720";
+  app::SceneOptions scene{"cornell-box", "1280x720"};
+  app::DeviceOptions device;
+  app::EnvironmentOptions environment;
+  app::SettingOptions settings;
   float renderScale = 0;
   bool noVsync = false;
   CLI::App app{"Penumbra viewer: interactive path tracing"};
-  app.add_option("--scene", o.scene, "Built-in scene name or scene file (.json)")
-      ->capture_default_str();
-  app.add_option("--size", size, "Window size WIDTHxHEIGHT (offscreen: the image shown)")
-      ->capture_default_str();
+  app::addSceneOptions(app, scene, "Built-in scene name, scene file (.json) or glTF file");
   app.add_flag("--offscreen", o.offscreen,
                "No window: the viewer loop renders into an image on any device, a GPU "
                "server without a display too; needs --script");
   app.add_option("--record", o.recordDirectory,
                  "Write every frame as shown, menus included, as DIR/frame-NNNNNN.png");
-  app.add_option("--backend", o.backend, "Backend: vulkan or d3d12")->capture_default_str();
-  app.add_option("--device", o.device,
-                 "Device index from 'penumbra devices' (default: best with ray tracing)");
+  app::addDeviceOptions(app, device);
   app.add_option("--render-scale", renderScale,
                  "Fixed render scale (0.125..1) instead of the automatic one")
       ->check(CLI::Range(0.125f, 1.0f));
-  app.add_option("--spp-per-frame", o.samplesPerFrame, "Samples per pixel each frame")
-      ->check(CLI::Range(1u, 16u))
-      ->capture_default_str();
+  // The settings table's settings (render/render_settings.h), as `render`
+  // takes them; the menus and `set` change them later.
+  settings.add(app, o.render);
   app.add_option("--frames-in-flight", o.framesInFlight,
                  "Frames the CPU may record ahead of the GPU")
       ->check(CLI::Range(1u, 4u))
@@ -55,18 +40,7 @@ int main(int argc, char** argv) {
   app.add_flag("--allow-external-files", o.allowExternalFiles,
                "Let glTF files read buffers and images outside their own folder");
   app.add_option("--config", o.config, "Viewer settings file holding camera bookmarks");
-  std::string envMap, envBackground;
-  float envRotation = 0.0f, envIntensity = 1.0f;
-  app.add_option("--env", envMap,
-                 "Environment light: an equirectangular .exr or .hdr, 'default' or 'none'");
-  app.add_option("--env-rotation", envRotation, "Turn the environment about the up axis (degrees)");
-  app.add_option("--env-intensity", envIntensity, "Scale the environment's radiance")
-      ->check(CLI::Range(0.0f, 1e6f));
-  app.add_option("--env-background", envBackground,
-                 "Whether camera rays that miss see the environment: visible | hidden")
-      ->check(CLI::IsMember({"visible", "hidden"}));
-  app.add_flag("--validation", o.validation,
-               "Enable the API validation layer; exit 1 on any message");
+  app::addEnvironmentOptions(app, environment);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -74,22 +48,22 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s (see --help)\n", e.what());
     return 2;
   }
-  if (!parseSize(size, o.width, o.height)) {
-    std::fprintf(stderr, "error: --size '%s': expected WIDTHxHEIGHT, e.g. 1280x720\n",
-                 size.c_str());
+  try {
+    std::tie(o.width, o.height) = app::parseImageSize(scene.size);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  o.scene = scene.scene;
+  o.device = device;
+  settings.apply(app, o.render);
   if (o.offscreen && o.script.empty()) {
     std::fprintf(stderr,
                  "error: --offscreen needs --script (nothing else would end the session)\n");
     return 2;
   }
   if (renderScale > 0) o.renderScale = renderScale;
-  o.environment.map = envMap;
-  if (app.count("--env-rotation") > 0) o.environment.rotationDegrees = envRotation;
-  if (app.count("--env-intensity") > 0) o.environment.intensity = envIntensity;
-  if (app.count("--env-background") > 0)
-    o.environment.visibleBackground = envBackground == "visible";
+  environment.apply(app, o.environment);
   o.vsync = !noVsync;
   try {
     viewer::Viewer viewer(o);

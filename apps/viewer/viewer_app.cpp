@@ -57,13 +57,11 @@ Viewer::Viewer(const ViewerOptions& options)
       throw Error(fmt::format("--record {}: cannot create the directory ({})",
                               options_.recordDirectory, error.message()));
   }
-  rhi::DeviceCreateInfo info;
-  info.adapterIndex = options_.device;
-  info.validation = options_.validation;
+  rhi::DeviceCreateInfo info = options_.device.createInfo();
   if (window_) info.presentWindow = window_->nativeWindow();
-  device_ = backends::createDevice(options_.backend, info);
+  device_ = backends::createDevice(options_.device.backend, info);
 
-  settings_.samplesPerFrame = options_.samplesPerFrame;
+  settings_.render = options_.render;
   settings_.vsync = options_.vsync;
   settings_.renderScale = scale_.scale();
   settings_.autoRenderScale = scale_.automatic();
@@ -157,7 +155,7 @@ void Viewer::createTracer() {
   targetSize(w, h);
   const RenderSize size = renderSize(std::max(w, 1u), std::max(h, 1u), scale_.scale());
   render::PipelineOptions pipeline;
-  pipeline.allEffects = settings_.allEffects;
+  pipeline.allEffects = settings_.render.allEffects;
   // Frames in flight still use the old tracer's resources.
   device_->waitForIdle();
   tracer_.reset();
@@ -384,7 +382,7 @@ void Viewer::changeEnvironment(const std::string& key, const std::string& value)
 
 void Viewer::takeScreenshot(const std::string& path) {
   image::checkWritable(path);
-  render::saveRender(*tracer_, tracer_->accumulation(), path, settings_.toneMapping);
+  render::saveRender(*tracer_, tracer_->accumulation(), path, settings_.render.toneMapping);
   const std::string record = std::filesystem::path(path).replace_extension(".json").string();
   const RenderSize size{tracer_->width(), tracer_->height()};
   // The record holds the scene by name, the material-test row as --vary/--set
@@ -498,28 +496,26 @@ void Viewer::renderFrame() {
   // The guide buffers cost about a tenth of a frame: written only while the
   // denoiser or a guide view reads them, and a change starts a new mean, so
   // that they always hold every sample of it.
-  const bool guidesRead = (settings_.denoise != render::DenoiseMode::Off &&
-                           settings_.tracer.integrator == render::Integrator::Path) ||
-                          settings_.view != ViewBuffer::Image;
-  if (guidesRead != settings_.tracer.writeGuides) {
-    settings_.tracer.writeGuides = guidesRead;
+  const bool guidesRead = render::denoises(settings_.render) || settings_.view != ViewBuffer::Image;
+  if (guidesRead != settings_.render.tracer.writeGuides) {
+    settings_.render.tracer.writeGuides = guidesRead;
     tracer_->resetAccumulation();
   }
   const bool startedOver = tracer_->accumulationGeneration() != seenGeneration_;
   if (startedOver) stillFrames_ = 0;
-  const bool denoising = settings_.denoise != render::DenoiseMode::Off &&
-                         settings_.tracer.integrator == render::Integrator::Path;
+  const bool denoising = render::denoises(settings_.render);
   const render::DenoiserSettings defaults;
-  if (denoising && settings_.denoise == render::DenoiseMode::Svgf &&
+  if (denoising && settings_.render.denoiser.mode == render::DenoiseMode::Svgf &&
       stillFrames_ < defaults.maxHistory) {
     // New samples every frame, also across camera moves (which start the
     // sequence over), or the history would integrate the same noise.
     tracer_->startNewMean(temporalSamples_);
-    temporalSamples_ += settings_.samplesPerFrame;
+    temporalSamples_ += settings_.render.sppPerFrame;
   }
   seenGeneration_ = tracer_->accumulationGeneration();
   if (settings_.maxSamples == 0 || tracer_->accumulatedSamples() < settings_.maxSamples)
-    tracer_->recordFrame(list, settings_.tracer, settings_.samplesPerFrame, frameQueries_[slot]);
+    tracer_->recordFrame(list, settings_.render.tracer, settings_.render.sppPerFrame,
+                         frameQueries_[slot]);
   stillFrames_ += 1;
   const rhi::TextureHandle& shown = recordDenoiser(list, slot);
   const render::DisplayChannels channels =
@@ -529,7 +525,7 @@ void Viewer::renderFrame() {
                                             : render::DisplayChannels::Color;
   rhi::ITimerQuery* displayQuery = passQuery(DisplayPass, slot);
   list.beginTimerQuery(displayQuery);
-  display_->record(list, shown, displayTexture_, settings_.toneMapping, channels);
+  display_->record(list, shown, displayTexture_, settings_.render.toneMapping, channels);
   list.endTimerQuery(displayQuery);
   if (settings_.showUi) {
     rhi::ITimerQuery* uiQuery = passQuery(UiPass, slot);
@@ -594,8 +590,7 @@ void Viewer::printTimings() const {
 }
 
 const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t slot) {
-  const bool denoising = settings_.denoise != render::DenoiseMode::Off &&
-                         settings_.tracer.integrator == render::Integrator::Path;
+  const bool denoising = render::denoises(settings_.render);
   if (denoising || settings_.view == ViewBuffer::Motion) {
     if (!denoiser_ || denoiser_->width() != tracer_->width() ||
         denoiser_->height() != tracer_->height()) {
@@ -605,23 +600,23 @@ const rhi::TextureHandle& Viewer::recordDenoiser(rhi::ICommandList& list, size_t
     }
   }
   render::DenoiserSettings d;
-  d.fireflyClamp = settings_.fireflyClamp;
+  d.fireflyClamp = settings_.render.denoiser.fireflyClamp;
   const uint32_t samples = tracer_->accumulatedSamples();
   bool denoised = false;
   if (denoising && samples > 0) {
     const bool temporal =
-        settings_.denoise == render::DenoiseMode::Svgf && stillFrames_ <= d.maxHistory;
+        settings_.render.denoiser.mode == render::DenoiseMode::Svgf && stillFrames_ <= d.maxHistory;
     // Once still, the accumulation takes over from the temporal history when
     // it holds more samples than the history did; until then the last
     // temporal frame stays on screen.
-    const bool accumulationAhead = samples >= d.maxHistory * settings_.samplesPerFrame;
+    const bool accumulationAhead = samples >= d.maxHistory * settings_.render.sppPerFrame;
     if (temporal) {
       d.mode = render::DenoiseMode::Svgf;
       denoiser_->record(list, *tracer_, tracer_->camera(), samples, d,
                         passQuery(DenoisePass, slot));
       temporalShown_ = true;
       denoised = true;
-    } else if (settings_.denoise == render::DenoiseMode::Atrous || accumulationAhead ||
+    } else if (settings_.render.denoiser.mode == render::DenoiseMode::Atrous || accumulationAhead ||
                !temporalShown_) {
       d.mode = render::DenoiseMode::Atrous;
       denoiser_->record(list, *tracer_, tracer_->camera(), samples, d,
@@ -686,7 +681,7 @@ int Viewer::run() {
   }
   device_->waitForIdle();
   printTimings();
-  if (options_.validation && device_->validationMessageCount() > 0) {
+  if (options_.device.validation && device_->validationMessageCount() > 0) {
     log::error("{} validation message(s)", device_->validationMessageCount());
     return 1;
   }

@@ -12,6 +12,7 @@
 
 #include "bookmarks.h"
 #include "camera_controller.h"
+#include "cli_options.h"
 #include "imgui_renderer.h"
 #include "render/denoiser.h"
 #include "render/display_pass.h"
@@ -29,12 +30,12 @@ namespace penumbra::viewer {
 struct ViewerOptions {
   std::string scene = "cornell-box";
   uint32_t width = 1280, height = 720;
-  std::string backend = "vulkan";
-  int device = -1;
-  bool validation = false;
+  app::DeviceOptions device;
   std::string script;
   std::optional<float> renderScale;  // fixed scale; unset: automatic
-  uint32_t samplesPerFrame = 1;
+  // The settings table's settings the session starts with (the command
+  // line's; ViewerSettings' defaults otherwise).
+  render::RenderSettings render = ViewerSettings::defaultRenderSettings();
   uint32_t framesInFlight = 2;
   bool vsync = true;
   std::string config;                     // bookmarks file; empty: BookmarkStore::defaultPath()
@@ -70,6 +71,7 @@ class Viewer {
   void drawUi();
   void drawSceneMenu();
   void drawAlgorithmMenu();
+  void drawDisplayOptions();  // the viewer's own: vsync, render scale, sample cap
   void drawMaterialMenu();
   void drawCameraMenu();
   void drawEnvironmentMenu();

@@ -52,50 +52,30 @@ SettingEffect assign(T& field, T value, SettingEffect effect) {
 
 }  // namespace
 
+SettingEffect settingEffect(render::SettingChange change) {
+  switch (change) {
+    case render::SettingChange::Image:
+      return SettingEffect::ResetAccumulation;
+    case render::SettingChange::Pipeline:
+      return SettingEffect::RebuildRenderer;
+    case render::SettingChange::Display:
+      return SettingEffect::None;
+  }
+  return SettingEffect::None;
+}
+
 SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std::string& value) {
   using E = SettingEffect;
-  auto& t = s.tracer;
-  if (name == "spp-per-frame")
-    return assign(s.samplesPerFrame,
-                  parseUint(name, value, 1, render::PathTracer::kMaxSamplesPerFrame),
-                  E::ResetAccumulation);
-  if (name == "max-depth")
-    return assign(t.maxDepth, parseUint(name, value, 0, 1024), E::ResetAccumulation);
-  if (name == "seed")
-    return assign(t.seed, parseUint(name, value, 0, UINT32_MAX), E::ResetAccumulation);
-  if (name == "integrator") {
-    auto v = render::parseIntegrator(value);
-    if (!v) badValue(name, value, "path or whitted");
-    return assign(t.integrator, *v, E::ResetAccumulation);
+  // The table's settings by their command-line names; `guides` follows the
+  // denoiser and the view (Viewer::recordFrame), so it is not set by hand.
+  const render::Setting* setting = render::findSetting(name);
+  if (setting && setting->name == name && setting->commandLine) {
+    const auto v = setting->parse(value);
+    if (!v) badValue(name, value, setting->expected().c_str());
+    if (setting->get(s.render) == *v) return E::None;
+    setting->set(s.render, *v);
+    return settingEffect(setting->change);
   }
-  if (name == "strategy") {
-    auto v = render::parseStrategy(value);
-    if (!v) badValue(name, value, "uniform, cosine, bsdf, nee or mis");
-    return assign(t.strategy, *v, E::ResetAccumulation);
-  }
-  if (name == "mis-heuristic") {
-    auto v = render::parseMisHeuristic(value);
-    if (!v) badValue(name, value, "power or balance");
-    return assign(t.misHeuristic, *v, E::ResetAccumulation);
-  }
-  if (name == "sampler") {
-    auto v = render::parseSampler(value);
-    if (!v) badValue(name, value, "random or sobol");
-    return assign(t.sampler, *v, E::ResetAccumulation);
-  }
-  if (name == "russian-roulette")
-    return assign(t.russianRoulette, parseBool(name, value), E::ResetAccumulation);
-  if (name == "clamp")
-    return assign(t.radianceClamp, parseFloat(name, value, 0, 1e30f), E::ResetAccumulation);
-  if (name == "exposure")
-    return assign(s.toneMapping.exposure, parseFloat(name, value, 0, 1e6f), E::None);
-  if (name == "tonemap") {
-    auto v = render::parseToneMapOperator(value);
-    if (!v) badValue(name, value, "clamp, reinhard or aces");
-    return assign(s.toneMapping.toneOperator, *v, E::None);
-  }
-  if (name == "all-effects")
-    return assign(s.allEffects, parseBool(name, value), E::RebuildRenderer);
   if (name == "render-scale") {
     // A fixed scale: the automatic one would move it again.
     s.autoRenderScale = false;
@@ -106,12 +86,6 @@ SettingEffect applySetting(ViewerSettings& s, const std::string& name, const std
   if (name == "max-samples")
     return assign(s.maxSamples, parseUint(name, value, 0, 1u << 24), E::None);
   if (name == "ui") return assign(s.showUi, parseBool(name, value), E::None);
-  if (name == "denoise") {
-    auto v = render::parseDenoiseMode(value);
-    if (!v) badValue(name, value, "off, atrous or svgf");
-    return assign(s.denoise, *v, E::ResetAccumulation);
-  }
-  if (name == "firefly-clamp") return assign(s.fireflyClamp, parseBool(name, value), E::None);
   if (name == "view") {
     auto v = parseViewBuffer(value);
     if (!v) badValue(name, value, "image, albedo, normal, depth, emission or motion");
@@ -169,10 +143,7 @@ render::RenderJob makeRenderJob(const ViewerSettings& settings, const std::strin
   job.height = size.height;
   job.spp = accumulatedSamples;
   // The same frames in the same order: samples are stratified per frame.
-  job.sppPerFrame = settings.samplesPerFrame;
-  job.settings = settings.tracer;
-  job.toneMapping = settings.toneMapping;
-  job.allEffects = settings.allEffects;
+  job.settings = settings.render;
   return job;
 }
 

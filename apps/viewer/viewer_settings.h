@@ -10,6 +10,7 @@
 #include "render/denoiser.h"
 #include "render/path_tracer.h"
 #include "render/render_job.h"
+#include "render/render_settings.h"
 #include "render/tone_mapping.h"
 
 namespace penumbra::viewer {
@@ -22,24 +23,28 @@ std::optional<ViewBuffer> parseViewBuffer(std::string_view name);
 const std::vector<ViewBuffer>& allViewBuffers();
 
 struct ViewerSettings {
-  render::PathTracerSettings tracer;
-  uint32_t samplesPerFrame = 1;  // low by default: each frame must stay interactive
-  render::ToneMapping toneMapping;
-  bool allEffects = false;
+  // The settings table's (render/render_settings.h); one sample per pixel
+  // per frame by default: each frame must stay interactive.
+  render::RenderSettings render = defaultRenderSettings();
   float renderScale = 1.0f;
   bool autoRenderScale = true;
   bool vsync = true;
   uint32_t maxSamples = 0;  // accumulation stops here; 0 = never
   bool showUi = true;       // the menus and the stats overlay (F1)
-  // Svgf: the temporal denoiser while the camera moves, then the a-trous
-  // filter on the accumulation once it holds more than the temporal
-  // history would. Atrous: the a-trous filter on the accumulation always.
-  render::DenoiseMode denoise = render::DenoiseMode::Off;
-  bool fireflyClamp = true;
   ViewBuffer view = ViewBuffer::Image;
+  // The denoise setting in the viewer: Svgf runs the temporal denoiser while
+  // the camera moves, then the a-trous filter on the accumulation once it
+  // holds more than the temporal history would; Atrous runs the a-trous
+  // filter on the accumulation always.
+
+  static render::RenderSettings defaultRenderSettings() {
+    render::RenderSettings s;
+    s.sppPerFrame = 1;
+    return s;
+  }
 };
 
-// What a change calls for.
+// What a change calls for (a table setting's: its SettingChange).
 enum class SettingEffect {
   None,               // display only (exposure, tone curve, vsync, render scale mode)
   ResetAccumulation,  // the image changes: start the running mean again
@@ -47,13 +52,15 @@ enum class SettingEffect {
   Resize,             // the render resolution changes
 };
 
-// Sets one setting by its script name ("spp-per-frame", "max-depth",
-// "integrator", "strategy", "mis-heuristic", "sampler", "russian-roulette", "clamp",
-// "seed", "exposure", "tonemap", "all-effects", "render-scale", "auto-scale",
-// "vsync", "max-samples", "ui", "denoise", "firefly-clamp", "view"). Throws penumbra::Error naming
-// the setting on a bad name or value.
+// Sets one setting by its script name: a settings-table setting by its
+// command-line name ("max-depth", "spp-per-frame", "denoise", ...; on/off for
+// flags), or one of the viewer's own: "render-scale", "auto-scale", "vsync",
+// "max-samples", "ui", "view". Throws penumbra::Error naming the setting on a
+// bad name or value.
 SettingEffect applySetting(ViewerSettings& settings, const std::string& name,
                            const std::string& value);
+// What changing a table setting calls for in the viewer.
+SettingEffect settingEffect(render::SettingChange change);
 
 // The render resolution for a framebuffer of this size at this scale (>= 1x1).
 struct RenderSize {

@@ -28,6 +28,55 @@ bool enumCombo(const char* label, T& value, const std::vector<T>& values, NameOf
   return changed;
 }
 
+// The widget a table setting asks for; true when it changed the value.
+bool settingWidget(const render::Setting& setting, render::RenderSettings& settings) {
+  const std::string label(setting.label);
+  const double before = setting.get(settings);
+  double value = before;
+  switch (setting.widget) {
+    case render::SettingWidget::None:
+      return false;
+    case render::SettingWidget::Checkbox: {
+      bool on = value != 0.0;
+      if (ImGui::Checkbox(label.c_str(), &on)) value = on ? 1.0 : 0.0;
+      break;
+    }
+    case render::SettingWidget::Slider: {
+      int v = int(value);
+      if (ImGui::SliderInt(label.c_str(), &v, int(setting.widgetMin), int(setting.widgetMax)))
+        value = double(v);
+      break;
+    }
+    case render::SettingWidget::Drag: {
+      float v = float(value);
+      if (ImGui::DragFloat(label.c_str(), &v, setting.widgetStep, setting.widgetMin,
+                           setting.widgetMax))
+        value = double(v);
+      break;
+    }
+    case render::SettingWidget::Input: {
+      int v = int(value);
+      if (ImGui::InputInt(label.c_str(), &v) && v >= 0) value = double(v);
+      break;
+    }
+    case render::SettingWidget::Combo: {
+      const size_t current = size_t(value);
+      if (ImGui::BeginCombo(label.c_str(), std::string(setting.choices[current]).c_str())) {
+        for (size_t i = 0; i < setting.choices.size(); ++i)
+          if (ImGui::Selectable(std::string(setting.choices[i]).c_str(), i == current))
+            value = double(i);
+        ImGui::EndCombo();
+      }
+      break;
+    }
+  }
+  // Widgets may offer values past the accepted range (a dragged float):
+  // what the table refuses is not set.
+  if (value == before || !setting.accepts(value)) return false;
+  setting.set(settings, value);
+  return true;
+}
+
 }  // namespace
 
 void Viewer::drawUi() {
@@ -145,55 +194,41 @@ void Viewer::drawEnvironmentMenu() {
 }
 
 void Viewer::drawAlgorithmMenu() {
-  auto& t = settings_.tracer;
-  bool reset = false;
-  reset |=
-      enumCombo("integrator", t.integrator, {render::Integrator::Path, render::Integrator::Whitted},
-                &render::integratorName);
-  int spp = int(settings_.samplesPerFrame);
-  if (ImGui::SliderInt("spp per frame", &spp, 1, int(render::PathTracer::kMaxSamplesPerFrame))) {
-    settings_.samplesPerFrame = uint32_t(spp);
-    reset = true;
+  // The settings table's widgets (render/render_settings.h), group by group;
+  // the viewer's own display settings follow the table's display group.
+  auto& r = settings_.render;
+  std::optional<render::SettingGroup> group;
+  auto endGroup = [&](render::SettingGroup ended) {
+    if (ended == render::SettingGroup::Denoiser)
+      enumCombo("view", settings_.view, allViewBuffers(), &viewBufferName);
+    if (ended == render::SettingGroup::Display) drawDisplayOptions();
+  };
+  for (const render::Setting& setting : render::renderSettingsTable()) {
+    if (setting.widget == render::SettingWidget::None) continue;
+    if (setting.pathTracerOnly && r.tracer.integrator != render::Integrator::Path) continue;
+    if (group != setting.group) {
+      if (group) {
+        endGroup(*group);
+        ImGui::Separator();
+      }
+      group = setting.group;
+      if (*group == render::SettingGroup::Pipeline) {
+        std::string effects;
+        for (const auto& name : render::effectNames(tracer_->pipelineEffects()))
+          effects += (effects.empty() ? "" : ", ") + name;
+        ImGui::TextWrapped("pipeline effects: %s", effects.empty() ? "none" : effects.c_str());
+      }
+    }
+    const bool disabled =
+        setting.key == "fireflyClamp" && r.denoiser.mode == render::DenoiseMode::Off;
+    ImGui::BeginDisabled(disabled);
+    if (settingWidget(setting, r)) applyEffect(settingEffect(setting.change));
+    ImGui::EndDisabled();
   }
-  int depth = int(t.maxDepth);
-  if (ImGui::SliderInt("max depth", &depth, 0, 64)) {
-    t.maxDepth = uint32_t(depth);
-    reset = true;
-  }
-  if (t.integrator == render::Integrator::Path) {
-    using S = render::SamplingStrategy;
-    reset |= enumCombo("strategy", t.strategy, {S::Uniform, S::Cosine, S::Bsdf, S::Nee, S::Mis},
-                       &render::strategyName);
-    reset |= enumCombo("MIS heuristic", t.misHeuristic,
-                       {render::MisHeuristic::Power, render::MisHeuristic::Balance},
-                       &render::misHeuristicName);
-    reset |= ImGui::Checkbox("Russian roulette", &t.russianRoulette);
-    reset |= ImGui::DragFloat("clamp (0 = off)", &t.radianceClamp, 0.1f, 0.0f, 1e4f);
-  }
-  reset |= enumCombo("sampler", t.sampler, {render::Sampler::Random, render::Sampler::Sobol},
-                     &render::samplerName);
-  int seed = int(t.seed);
-  if (ImGui::InputInt("seed", &seed) && seed >= 0) {
-    t.seed = uint32_t(seed);
-    reset = true;
-  }
-  if (reset) tracer_->resetAccumulation();
+  if (group) endGroup(*group);
+}
 
-  ImGui::Separator();
-  if (enumCombo("denoiser", settings_.denoise,
-                std::vector<render::DenoiseMode>(std::begin(render::kDenoiseModes),
-                                                 std::end(render::kDenoiseModes)),
-                &render::denoiseModeName))
-    tracer_->resetAccumulation();
-  ImGui::BeginDisabled(settings_.denoise == render::DenoiseMode::Off);
-  ImGui::Checkbox("firefly clamp", &settings_.fireflyClamp);
-  ImGui::EndDisabled();
-  enumCombo("view", settings_.view, allViewBuffers(), &viewBufferName);
-
-  ImGui::Separator();
-  ImGui::DragFloat("exposure", &settings_.toneMapping.exposure, 0.01f, 0.0f, 100.0f);
-  enumCombo("tone mapping", settings_.toneMapping.toneOperator, render::allToneMapOperators(),
-            &render::toneMapOperatorName);
+void Viewer::drawDisplayOptions() {
   if (ImGui::Checkbox("vsync", &settings_.vsync)) applyEffect(SettingEffect::None);
   if (ImGui::Checkbox("auto render scale", &settings_.autoRenderScale))
     applyEffect(SettingEffect::None);
@@ -208,14 +243,6 @@ void Viewer::drawAlgorithmMenu() {
   int cap = int(settings_.maxSamples);
   if (ImGui::InputInt("stop at spp (0 = never)", &cap) && cap >= 0)
     settings_.maxSamples = uint32_t(cap);
-
-  ImGui::Separator();
-  std::string effects;
-  for (const auto& name : render::effectNames(tracer_->pipelineEffects()))
-    effects += (effects.empty() ? "" : ", ") + name;
-  ImGui::TextWrapped("pipeline effects: %s", effects.empty() ? "none" : effects.c_str());
-  if (ImGui::Checkbox("all effects", &settings_.allEffects))
-    applyEffect(SettingEffect::RebuildRenderer);
 }
 
 void Viewer::materialsChanged() {
@@ -309,8 +336,9 @@ void Viewer::drawStats() {
   ImGui::Text(
       "GPU %.2f ms/frame, %.1f Mrays/s", lastStats_.gpuSeconds * 1e3,
       lastStats_.gpuSeconds > 0 ? double(lastStats_.rays) / lastStats_.gpuSeconds * 1e-6 : 0.0);
-  if (settings_.denoise != render::DenoiseMode::Off)
-    ImGui::Text("denoiser (%s) GPU %.2f ms", render::denoiseModeName(settings_.denoise),
+  if (settings_.render.denoiser.mode != render::DenoiseMode::Off)
+    ImGui::Text("denoiser (%s) GPU %.2f ms",
+                render::denoiseModeName(settings_.render.denoiser.mode),
                 passTimers_[DenoisePass].lastSeconds * 1e3);
   ImGui::Text("display GPU %.2f ms, UI GPU %.2f ms", passTimers_[DisplayPass].lastSeconds * 1e3,
               passTimers_[UiPass].lastSeconds * 1e3);

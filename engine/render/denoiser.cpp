@@ -9,24 +9,6 @@
 
 namespace penumbra::render {
 
-std::optional<DenoiseMode> parseDenoiseMode(std::string_view name) {
-  for (DenoiseMode m : kDenoiseModes)
-    if (name == denoiseModeName(m)) return m;
-  return std::nullopt;
-}
-
-const char* denoiseModeName(DenoiseMode mode) {
-  switch (mode) {
-    case DenoiseMode::Off:
-      return "off";
-    case DenoiseMode::Atrous:
-      return "atrous";
-    case DenoiseMode::Svgf:
-      return "svgf";
-  }
-  return "?";
-}
-
 Denoiser::Denoiser(rhi::IDevice& device, uint32_t width, uint32_t height)
     : device_(device), width_(width), height_(height) {
   requireValidImageSize("denoiser", width, height);

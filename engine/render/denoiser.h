@@ -26,7 +26,7 @@ enum class DenoiseMode { Off, Atrous, Svgf };
 inline constexpr DenoiseMode kDenoiseModes[] = {DenoiseMode::Off, DenoiseMode::Atrous,
                                                 DenoiseMode::Svgf};
 
-// "off", "atrous", "svgf" (as parseIntegrator and the others in render_job.h).
+// "off", "atrous", "svgf": the denoise setting's choices (render_settings.cpp).
 std::optional<DenoiseMode> parseDenoiseMode(std::string_view name);
 const char* denoiseModeName(DenoiseMode mode);
 

@@ -39,25 +39,16 @@ uint32_t readCount(const nlohmann::json& doc, const char* key, uint32_t lo, uint
 
 }  // namespace
 
-std::string splitSettingsHash(const PathTracerSettings& s, const scene::Camera& camera,
-                              uint32_t width, uint32_t height, uint32_t blockSpp, bool allEffects) {
-#if defined(__x86_64__) && defined(__GLIBCXX__)
-  static_assert(sizeof(PathTracerSettings) == 40,
-                "a PathTracerSettings field is not hashed (partial_render.cpp)");
-#endif
+std::string splitSettingsHash(const RenderSettings& settings, const scene::Camera& camera,
+                              uint32_t width, uint32_t height) {
   ContentHash h;
-  h.value(s.integrator);
-  h.value(s.strategy);
-  h.value(s.misHeuristic);
-  h.value(s.sampler);
-  h.value(s.maxDepth);
-  h.value(s.rouletteStartDepth);
-  h.value(s.russianRoulette);
-  h.value(s.radianceClamp);
-  h.value(s.seed);
-  // The pipeline variant that writes guides rounds differently on some
-  // compilers (docs/results.md): part of what decides the image.
-  h.value(s.writeGuides);
+  // By name, so a setting added to the table is in the hash without another
+  // line here (tests/render/test_partial_render.cpp flips each one).
+  for (const Setting& setting : renderSettingsTable()) {
+    if (!setting.identity) continue;
+    h.text(setting.key);
+    h.value(setting.get(settings));
+  }
   h.value(camera.position);
   h.value(camera.forward);
   h.value(camera.up);
@@ -67,8 +58,6 @@ std::string splitSettingsHash(const PathTracerSettings& s, const scene::Camera& 
   h.value(camera.apertureBlades);
   h.value(width);
   h.value(height);
-  h.value(blockSpp);
-  h.value(allEffects);
   return h.hex();
 }
 

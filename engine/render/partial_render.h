@@ -33,11 +33,12 @@ struct SplitRenderIdentity {
   bool operator==(const SplitRenderIdentity&) const = default;
 };
 
-// Everything but the scene that decides the image: the path tracer's
-// settings (seed and guides included), the camera rendered, the size, the
-// samples per block and whether the full pipeline was used.
-std::string splitSettingsHash(const PathTracerSettings& settings, const scene::Camera& camera,
-                              uint32_t width, uint32_t height, uint32_t blockSpp, bool allEffects);
+// Everything but the scene that decides the image: every identity setting
+// of the table (render_settings.h: seed, guides, samples per frame and the
+// pipeline included), each fed in by its key, then the camera rendered and
+// the size.
+std::string splitSettingsHash(const RenderSettings& settings, const scene::Camera& camera,
+                              uint32_t width, uint32_t height);
 
 struct PartialRender {
   SplitRenderIdentity identity;

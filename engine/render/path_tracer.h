@@ -50,6 +50,9 @@ struct PathTracerSettings {
   // and the AOVs read them. Off by default: the pipeline that writes them
   // (PT_OUTPUT_GUIDES) is about a tenth slower.
   bool writeGuides = false;
+  // Field by field: tests/render/test_render_settings.cpp finds a field the
+  // settings table does not describe with it.
+  bool operator==(const PathTracerSettings&) const = default;
 };
 
 // How the pipeline is built. By default it holds only the effects the scene

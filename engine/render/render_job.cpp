@@ -29,16 +29,6 @@ struct Named {
   Enum value;
   const char* name;
 };
-constexpr Named<Integrator> kIntegrators[] = {{Integrator::Path, "path"},
-                                              {Integrator::Whitted, "whitted"}};
-constexpr Named<SamplingStrategy> kStrategies[] = {{SamplingStrategy::Uniform, "uniform"},
-                                                   {SamplingStrategy::Cosine, "cosine"},
-                                                   {SamplingStrategy::Bsdf, "bsdf"},
-                                                   {SamplingStrategy::Nee, "nee"},
-                                                   {SamplingStrategy::Mis, "mis"}};
-constexpr Named<MisHeuristic> kHeuristics[] = {{MisHeuristic::Power, "power"},
-                                               {MisHeuristic::Balance, "balance"}};
-constexpr Named<Sampler> kSamplers[] = {{Sampler::Random, "random"}, {Sampler::Sobol, "sobol"}};
 constexpr Named<scene::MaterialModel> kModels[] = {{scene::MaterialModel::Disney, "disney"},
                                                    {scene::MaterialModel::Lambert, "lambert"},
                                                    {scene::MaterialModel::Phong, "phong"}};
@@ -135,14 +125,32 @@ class Reader {
       fail(key, "must be an array of 3 numbers");
     return {finite(value[0], key), finite(value[1], key), finite(value[2], key)};
   }
-  template <class Enum>
-  void readEnum(const char* key, Enum& out, std::optional<Enum> (*parse)(std::string_view)) const {
-    std::string name;
-    read(key, name);
-    if (name.empty()) return;
-    auto value = parse(name);
-    if (!value) fail(key, fmt::format("'{}' is not a known value", name));
-    out = *value;
+  // A table setting's value (render_settings.h), checked as its type says.
+  double setting(const Setting& setting, const json& value) const {
+    const std::string key(setting.key);
+    switch (setting.type) {
+      case SettingType::Flag:
+        if (!value.is_boolean())
+          fail(key, fmt::format("must be true or false (got {})", scene::jsonTypeName(value)));
+        return value.get<bool>() ? 1.0 : 0.0;
+      case SettingType::Count:
+        return double(
+            scene::toInteger(value, source_, key, int64_t(setting.min), int64_t(setting.max)));
+      case SettingType::Number: {
+        const double v = finite(value, key);
+        if (!(v >= setting.min && v <= setting.max))
+          fail(key, fmt::format("{} is outside {}..{}", float(v), setting.min, setting.max));
+        return v;
+      }
+      case SettingType::Choice: {
+        if (!value.is_string())
+          fail(key, fmt::format("must be a string (got {})", scene::jsonTypeName(value)));
+        const auto index = setting.parse(value.get<std::string>());
+        if (!index) fail(key, fmt::format("'{}' is not a known value", value.get<std::string>()));
+        return *index;
+      }
+    }
+    fail(key, "has an unknown type");
   }
   // A number that fits a float: the renderer cannot use NaN or infinity.
   float finite(const json& value, const std::string& key) const {
@@ -160,6 +168,23 @@ class Reader {
   const json& doc_;
   const std::string& source_;
 };
+
+// Floats are written as the float the setting holds; nlohmann writes
+// enough digits for them to read back exactly.
+json settingToJson(const Setting& setting, const RenderSettings& settings) {
+  const double v = setting.get(settings);
+  switch (setting.type) {
+    case SettingType::Flag:
+      return v != 0.0;
+    case SettingType::Count:
+      return uint32_t(v);
+    case SettingType::Number:
+      return float(v);
+    case SettingType::Choice:
+      return setting.format(v);
+  }
+  return nullptr;
+}
 
 json overrideToJson(const MaterialOverride& o) {
   const scene::Material& m = o.material;
@@ -204,49 +229,6 @@ MaterialOverride overrideFromJson(const json& j, const std::string& key, const R
 }
 
 }  // namespace
-
-const char* integratorName(Integrator integrator) {
-  return nameOf(kIntegrators, integrator);
-}
-const char* strategyName(SamplingStrategy strategy) {
-  return nameOf(kStrategies, strategy);
-}
-const char* misHeuristicName(MisHeuristic heuristic) {
-  return nameOf(kHeuristics, heuristic);
-}
-const char* samplerName(Sampler sampler) {
-  return nameOf(kSamplers, sampler);
-}
-std::optional<Integrator> parseIntegrator(std::string_view name) {
-  return parseName(kIntegrators, name);
-}
-std::optional<SamplingStrategy> parseStrategy(std::string_view name) {
-  return parseName(kStrategies, name);
-}
-std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
-  return parseName(kHeuristics, name);
-}
-std::optional<Sampler> parseSampler(std::string_view name) {
-  return parseName(kSamplers, name);
-}
-template <class Enum, size_t N>
-std::map<std::string, Enum> byName(const Named<Enum> (&table)[N]) {
-  std::map<std::string, Enum> names;
-  for (const auto& entry : table) names.emplace(entry.name, entry.value);
-  return names;
-}
-std::map<std::string, Integrator> integratorsByName() {
-  return byName(kIntegrators);
-}
-std::map<std::string, SamplingStrategy> strategiesByName() {
-  return byName(kStrategies);
-}
-std::map<std::string, MisHeuristic> misHeuristicsByName() {
-  return byName(kHeuristics);
-}
-std::map<std::string, Sampler> samplersByName() {
-  return byName(kSamplers);
-}
 
 const char* materialModelName(scene::MaterialModel model) {
   return nameOf(kModels, model);
@@ -361,24 +343,8 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["width"] = job.width;
   doc["height"] = job.height;
   doc["spp"] = job.spp;
-  doc["sppPerFrame"] = job.sppPerFrame;
-  const auto& s = job.settings;
-  doc["integrator"] = integratorName(s.integrator);
-  doc["strategy"] = strategyName(s.strategy);
-  doc["misHeuristic"] = misHeuristicName(s.misHeuristic);
-  doc["sampler"] = samplerName(s.sampler);
-  doc["maxDepth"] = s.maxDepth;
-  doc["russianRoulette"] = s.russianRoulette;
-  doc["rouletteStartDepth"] = s.rouletteStartDepth;
-  doc["radianceClamp"] = s.radianceClamp;
-  doc["seed"] = s.seed;
-  // Whether the frames also wrote the denoiser's guide buffers: that is
-  // another pipeline variant (PT_OUTPUT_GUIDES), whose code a GPU compiler
-  // may contract differently, so reproducing a frame bit for bit takes it.
-  doc["guides"] = s.writeGuides;
-  doc["exposure"] = job.toneMapping.exposure;
-  doc["toneMapping"] = toneMapOperatorName(job.toneMapping.toneOperator);
-  doc["allEffects"] = job.allEffects;
+  for (const Setting& setting : renderSettingsTable())
+    if (setting.recorded) doc[std::string(setting.key)] = settingToJson(setting, job.settings);
   if (!job.environment.empty()) {
     const EnvironmentChoice& e = job.environment;
     json env = json::object();
@@ -457,21 +423,9 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source,
   r.read("width", job.width);
   r.read("height", job.height);
   r.read("spp", job.spp, 1, kMaxSamplesPerPixel);
-  r.read("sppPerFrame", job.sppPerFrame);
-  auto& s = job.settings;
-  r.readEnum("integrator", s.integrator, &parseIntegrator);
-  r.readEnum("strategy", s.strategy, &parseStrategy);
-  r.readEnum("misHeuristic", s.misHeuristic, &parseMisHeuristic);
-  r.readEnum("sampler", s.sampler, &parseSampler);
-  r.read("maxDepth", s.maxDepth, 0, kMaxPathDepth);
-  r.read("russianRoulette", s.russianRoulette);
-  r.read("rouletteStartDepth", s.rouletteStartDepth, 0, kMaxPathDepth);
-  r.read("radianceClamp", s.radianceClamp, 0.0f);
-  r.read("seed", s.seed);
-  r.read("guides", s.writeGuides);
-  r.read("exposure", job.toneMapping.exposure, 0.0f);
-  r.readEnum("toneMapping", job.toneMapping.toneOperator, &parseToneMapOperator);
-  r.read("allEffects", job.allEffects);
+  for (const Setting& setting : renderSettingsTable())
+    if (setting.recorded && doc.contains(setting.key))
+      setting.set(job.settings, r.setting(setting, doc.at(std::string(setting.key))));
   if (doc.contains("environment")) {
     const json& e = doc["environment"];
     if (!e.is_object()) r.fail("environment", "must be an object");
@@ -501,8 +455,6 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source,
   if (!isValidImageSize(job.width, job.height))
     r.fail("width/height", fmt::format("must be 1..{}", kMaxImageSide));
   if (job.spp < 1) r.fail("spp", "must be at least 1");
-  if (job.sppPerFrame < 1 || job.sppPerFrame > PathTracer::kMaxSamplesPerFrame)
-    r.fail("sppPerFrame", "must be 1..16");
   return job;
 }
 

@@ -37,7 +37,7 @@
 #include <vector>
 
 #include "render/path_tracer.h"
-#include "render/tone_mapping.h"
+#include "render/render_settings.h"
 #include "scene/input_limits.h"
 #include "scene/scene.h"
 
@@ -78,29 +78,17 @@ struct RenderJob {
   std::optional<scene::Camera> camera;  // absent: the scene's camera
   uint32_t width = 512, height = 512;
   uint32_t spp = 64;
-  uint32_t sppPerFrame = 16;
-  PathTracerSettings settings;
-  ToneMapping toneMapping;
-  bool allEffects = false;
+  RenderSettings settings;                  // the table's settings (render_settings.h)
   std::vector<MaterialOverride> materials;  // applied after vary/set
   EnvironmentChoice environment;
 };
 
-// Each choice's names, in one table per enum (render_job.cpp), read by
-// settings files, the command line (the *ByName maps feed CLI11's
-// CheckedTransformer), studies and the viewer.
+// Each choice's name, from the settings table (render_settings.cpp), which
+// settings files, the command line, studies and the viewer all read.
 const char* integratorName(Integrator integrator);
 const char* strategyName(SamplingStrategy strategy);
 const char* misHeuristicName(MisHeuristic heuristic);
 const char* samplerName(Sampler sampler);
-std::optional<Integrator> parseIntegrator(std::string_view name);
-std::optional<SamplingStrategy> parseStrategy(std::string_view name);
-std::optional<MisHeuristic> parseMisHeuristic(std::string_view name);
-std::optional<Sampler> parseSampler(std::string_view name);
-std::map<std::string, Integrator> integratorsByName();
-std::map<std::string, SamplingStrategy> strategiesByName();
-std::map<std::string, MisHeuristic> misHeuristicsByName();
-std::map<std::string, Sampler> samplersByName();
 
 const char* materialModelName(scene::MaterialModel model);
 std::optional<scene::MaterialModel> parseMaterialModel(std::string_view name);
@@ -121,11 +109,6 @@ std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Materia
 // `source` and the field if an index is out of range or the name differs.
 void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverride>& overrides,
                             const std::string& source);
-
-// The ranges a record's counts must lie in (the CLI's --spp and --max-depth
-// take the same): larger ones are refused, not rendered for days.
-inline constexpr uint32_t kMaxSamplesPerPixel = 1u << 20;
-inline constexpr uint32_t kMaxPathDepth = 1024;  // maxDepth, rouletteStartDepth
 
 std::string renderJobToJson(const RenderJob& job);
 // Throws penumbra::Error naming `source` and the field on a malformed

@@ -20,9 +20,10 @@ enum class ToneMapOperator : uint32_t {
 struct ToneMapping {
   float exposure = 1.0f;
   ToneMapOperator toneOperator = ToneMapOperator::Clamp;
+  bool operator==(const ToneMapping&) const = default;
 };
 
-// "clamp", "reinhard", "aces".
+// "clamp", "reinhard", "aces": the tonemap setting's choices (render_settings.cpp).
 const char* toneMapOperatorName(ToneMapOperator op);
 std::optional<ToneMapOperator> parseToneMapOperator(std::string_view name);
 const std::vector<ToneMapOperator>& allToneMapOperators();

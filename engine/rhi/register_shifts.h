@@ -12,6 +12,11 @@ namespace penumbra::rhi {
 
 enum class RegisterClass : uint8_t { B, T, U, S };  // CBV, SRV, UAV, sampler
 
+// The register spaces of the push constants and of shader records (D3D12
+// root constants; root_signature_layout.h).
+constexpr uint32_t kPushConstantSpace = PENUMBRA_PUSH_CONSTANT_SPACE;
+constexpr uint32_t kShaderRecordSpace = PENUMBRA_SHADER_RECORD_SPACE;
+
 constexpr uint32_t kShiftB = PENUMBRA_B(0);
 constexpr uint32_t kShiftT = PENUMBRA_T(0);
 constexpr uint32_t kShiftU = PENUMBRA_U(0);

@@ -21,13 +21,14 @@
 #include <vector>
 
 #include "rhi/pipeline.h"
+#include "rhi/register_shifts.h"
 
 namespace penumbra::rhi {
 
+// The spaces come from bindings.hlsli, as the shaders' declarations do
+// (register_shifts.h).
 constexpr uint32_t kPushConstantRegister = 0;
-constexpr uint32_t kPushConstantSpace = 900;
 constexpr uint32_t kShaderRecordRegister = 0;
-constexpr uint32_t kShaderRecordSpace = 901;
 // D3D12 root signatures hold at most 64 DWORDs: a root constant costs one,
 // a descriptor table one.
 constexpr uint32_t kMaxRootSignatureDwords = 64;

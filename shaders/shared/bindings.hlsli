@@ -13,7 +13,12 @@
 // block of a DXR/compute entry point and a shader's local record data. HLSL:
 //   [[vk::push_constant]] ConstantBuffer<T> gPush : PENUMBRA_PUSH_CONSTANTS;
 //   [[vk::shader_record_ext]] ConstantBuffer<R> gRecord : PENUMBRA_SHADER_RECORD;
-#define PENUMBRA_PUSH_CONSTANTS register(b0, space900)
+// The spaces are numbers here once; engine/rhi/register_shifts.h gives them
+// to the D3D12 root signature (root_signature_layout.h), so the two sides
+// cannot disagree.
+#define PENUMBRA_PUSH_CONSTANT_SPACE 900
+#define PENUMBRA_SHADER_RECORD_SPACE 901
+#define PENUMBRA_PUSH_CONSTANTS register(b0, PENUMBRA_CAT(space, PENUMBRA_PUSH_CONSTANT_SPACE))
 // register(tN) etc. from a macro that expands to the number N, so DXR entry
 // points take register numbers from the same *_shared.h defines as the host.
 #define PENUMBRA_CAT_(a, b) a##b
@@ -22,5 +27,5 @@
 #define PENUMBRA_REGISTER_T(n) register(PENUMBRA_CAT(t, n))
 #define PENUMBRA_REGISTER_U(n) register(PENUMBRA_CAT(u, n))
 #define PENUMBRA_REGISTER_S(n) register(PENUMBRA_CAT(s, n))
-#define PENUMBRA_SHADER_RECORD register(b0, space901)
+#define PENUMBRA_SHADER_RECORD register(b0, PENUMBRA_CAT(space, PENUMBRA_SHADER_RECORD_SPACE))
 #endif

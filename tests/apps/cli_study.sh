@@ -55,7 +55,7 @@ fails() {  # the command must fail with exactly one line on stderr naming `what`
   [ "$(wc -l <"$work/err")" = 1 ] || { cat "$work/err"; exit 1; }
   grep -q -- "$what" "$work/err" || { cat "$work/err"; exit 1; }
 }
-fails "'foo' is not a strategy" study --strategy mis,foo --out "$work/bad"
+fails "'foo' is not one of uniform, cosine, bsdf, nee, mis" study --strategy mis,foo --out "$work/bad"
 fails "'0' is not a sample count" study --spp 1,0 --out "$work/bad"
 fails "overlap the study's seeds 1..3" study --reference-seed 2 --out "$work/bad"
 fails "is required" study --spp 1

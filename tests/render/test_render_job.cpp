@@ -29,18 +29,18 @@ TEST_CASE("render job: a written record reads back with every field", "[render]"
   CHECK(job.width == 320u);
   CHECK(job.height == 200u);
   CHECK(job.spp == 48u);
-  CHECK(job.sppPerFrame == 4u);
-  CHECK(job.settings.integrator == render::Integrator::Whitted);
-  CHECK(job.settings.strategy == render::SamplingStrategy::Nee);
-  CHECK(job.settings.misHeuristic == render::MisHeuristic::Balance);
-  CHECK(job.settings.maxDepth == 5u);
-  CHECK_FALSE(job.settings.russianRoulette);
-  CHECK(job.settings.rouletteStartDepth == 2u);
-  CHECK(job.settings.radianceClamp == 8.0f);
-  CHECK(job.settings.seed == 11u);
-  CHECK(job.toneMapping.exposure == 1.5f);
-  CHECK(job.toneMapping.toneOperator == render::ToneMapOperator::Reinhard);
-  CHECK(job.allEffects);
+  CHECK(job.settings.sppPerFrame == 4u);
+  CHECK(job.settings.tracer.integrator == render::Integrator::Whitted);
+  CHECK(job.settings.tracer.strategy == render::SamplingStrategy::Nee);
+  CHECK(job.settings.tracer.misHeuristic == render::MisHeuristic::Balance);
+  CHECK(job.settings.tracer.maxDepth == 5u);
+  CHECK_FALSE(job.settings.tracer.russianRoulette);
+  CHECK(job.settings.tracer.rouletteStartDepth == 2u);
+  CHECK(job.settings.tracer.radianceClamp == 8.0f);
+  CHECK(job.settings.tracer.seed == 11u);
+  CHECK(job.settings.toneMapping.exposure == 1.5f);
+  CHECK(job.settings.toneMapping.toneOperator == render::ToneMapOperator::Reinhard);
+  CHECK(job.settings.allEffects);
 }
 
 TEST_CASE("render job: floats survive the round trip bit for bit", "[render]") {
@@ -51,13 +51,13 @@ TEST_CASE("render job: floats survive the round trip bit for bit", "[render]") {
   camera.forward = {0.5773503f, 0.5773503f, 0.5773503f};
   camera.verticalFovDegrees = 39.3077f;
   job.camera = camera;
-  job.settings.radianceClamp = 0.3f;
+  job.settings.tracer.radianceClamp = 0.3f;
   const auto back = render::renderJobFromJson(render::renderJobToJson(job), "round trip");
   REQUIRE(back.camera.has_value());
   CHECK(back.camera->position == camera.position);
   CHECK(back.camera->forward == camera.forward);
   CHECK(back.camera->verticalFovDegrees == camera.verticalFovDegrees);
-  CHECK(back.settings.radianceClamp == 0.3f);
+  CHECK(back.settings.tracer.radianceClamp == 0.3f);
   CHECK_FALSE(render::renderJobFromJson(R"({"format":"penumbra-render","version":1})", "x").camera);
 }
 
@@ -82,8 +82,8 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   job.width = 321;
   job.height = 123;
   job.spp = 77;
-  job.sppPerFrame = 7;
-  auto& t = job.settings;
+  job.settings.sppPerFrame = 7;
+  auto& t = job.settings.tracer;
   t.integrator = render::Integrator::Whitted;
   t.strategy = render::SamplingStrategy::Cosine;
   t.misHeuristic = render::MisHeuristic::Balance;
@@ -94,9 +94,9 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   t.radianceClamp = 4.5f;
   t.seed = 99;
   t.writeGuides = true;
-  job.toneMapping.exposure = 0.75f;
-  job.toneMapping.toneOperator = render::ToneMapOperator::AcesFitted;
-  job.allEffects = true;
+  job.settings.toneMapping.exposure = 0.75f;
+  job.settings.toneMapping.toneOperator = render::ToneMapOperator::AcesFitted;
+  job.settings.allEffects = true;
   job.environment.map = "sky.hdr";
   job.environment.rotationDegrees = -35.0f;
   job.environment.intensity = 2.25f;
@@ -117,20 +117,20 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   CHECK(back.width == job.width);
   CHECK(back.height == job.height);
   CHECK(back.spp == job.spp);
-  CHECK(back.sppPerFrame == job.sppPerFrame);
-  CHECK(back.settings.integrator == t.integrator);
-  CHECK(back.settings.strategy == t.strategy);
-  CHECK(back.settings.misHeuristic == t.misHeuristic);
-  CHECK(back.settings.sampler == t.sampler);
-  CHECK(back.settings.maxDepth == t.maxDepth);
-  CHECK(back.settings.russianRoulette == t.russianRoulette);
-  CHECK(back.settings.rouletteStartDepth == t.rouletteStartDepth);
-  CHECK(back.settings.radianceClamp == t.radianceClamp);
-  CHECK(back.settings.seed == t.seed);
-  CHECK(back.settings.writeGuides == t.writeGuides);
-  CHECK(back.toneMapping.exposure == job.toneMapping.exposure);
-  CHECK(back.toneMapping.toneOperator == job.toneMapping.toneOperator);
-  CHECK(back.allEffects == job.allEffects);
+  CHECK(back.settings.sppPerFrame == job.settings.sppPerFrame);
+  CHECK(back.settings.tracer.integrator == t.integrator);
+  CHECK(back.settings.tracer.strategy == t.strategy);
+  CHECK(back.settings.tracer.misHeuristic == t.misHeuristic);
+  CHECK(back.settings.tracer.sampler == t.sampler);
+  CHECK(back.settings.tracer.maxDepth == t.maxDepth);
+  CHECK(back.settings.tracer.russianRoulette == t.russianRoulette);
+  CHECK(back.settings.tracer.rouletteStartDepth == t.rouletteStartDepth);
+  CHECK(back.settings.tracer.radianceClamp == t.radianceClamp);
+  CHECK(back.settings.tracer.seed == t.seed);
+  CHECK(back.settings.tracer.writeGuides == t.writeGuides);
+  CHECK(back.settings.toneMapping.exposure == job.settings.toneMapping.exposure);
+  CHECK(back.settings.toneMapping.toneOperator == job.settings.toneMapping.toneOperator);
+  CHECK(back.settings.allEffects == job.settings.allEffects);
   CHECK(back.environment.map == "sky.hdr");
   CHECK(back.environment.rotationDegrees == -35.0f);
   CHECK(back.environment.intensity == 2.25f);
@@ -149,7 +149,7 @@ TEST_CASE("render job: malformed records name the file and the field", "[render]
       "b.json: \"strategy\" 'best' is not a known value");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(
                           R"({"format":"penumbra-render","version":1,"sppPerFrame":32})", "c.json"),
-                      "c.json: \"sppPerFrame\" must be 1..16");
+                      "c.json: \"sppPerFrame\" 32 is not a whole number in 1..16");
   REQUIRE_THROWS_WITH(
       render::renderJobFromJson(
           R"({"format":"penumbra-render","version":1,"camera":{"position":[1,2]}})", "d.json"),
@@ -308,10 +308,10 @@ TEST_CASE("render job: out-of-range numbers and wrong types name the file and th
   // The ends of each range still load.
   const auto job = render::renderJobFromJson(
       record(R"("seed":4294967295,"maxDepth":1024,"spp":1048576,"sppPerFrame":16.0)"), "s.json");
-  CHECK(job.settings.seed == 4294967295u);
-  CHECK(job.settings.maxDepth == 1024u);
+  CHECK(job.settings.tracer.seed == 4294967295u);
+  CHECK(job.settings.tracer.maxDepth == 1024u);
   CHECK(job.spp == 1048576u);
-  CHECK(job.sppPerFrame == 16u);
+  CHECK(job.settings.sppPerFrame == 16u);
 }
 
 TEST_CASE("render job: records nested past the JSON depth limit are refused unparsed", "[render]") {

@@ -14,28 +14,28 @@ using viewer::SettingEffect;
 TEST_CASE("viewer settings: each script setting reaches the renderer's parameter", "[viewer]") {
   viewer::ViewerSettings s;
   CHECK(viewer::applySetting(s, "spp-per-frame", "4") == SettingEffect::ResetAccumulation);
-  CHECK(s.samplesPerFrame == 4u);
+  CHECK(s.render.sppPerFrame == 4u);
   CHECK(viewer::applySetting(s, "max-depth", "3") == SettingEffect::ResetAccumulation);
-  CHECK(s.tracer.maxDepth == 3u);
+  CHECK(s.render.tracer.maxDepth == 3u);
   CHECK(viewer::applySetting(s, "integrator", "whitted") == SettingEffect::ResetAccumulation);
-  CHECK(s.tracer.integrator == render::Integrator::Whitted);
+  CHECK(s.render.tracer.integrator == render::Integrator::Whitted);
   CHECK(viewer::applySetting(s, "strategy", "nee") == SettingEffect::ResetAccumulation);
-  CHECK(s.tracer.strategy == render::SamplingStrategy::Nee);
+  CHECK(s.render.tracer.strategy == render::SamplingStrategy::Nee);
   CHECK(viewer::applySetting(s, "mis-heuristic", "balance") == SettingEffect::ResetAccumulation);
-  CHECK(s.tracer.misHeuristic == render::MisHeuristic::Balance);
+  CHECK(s.render.tracer.misHeuristic == render::MisHeuristic::Balance);
   CHECK(viewer::applySetting(s, "russian-roulette", "off") == SettingEffect::ResetAccumulation);
-  CHECK_FALSE(s.tracer.russianRoulette);
+  CHECK_FALSE(s.render.tracer.russianRoulette);
   CHECK(viewer::applySetting(s, "clamp", "10") == SettingEffect::ResetAccumulation);
-  CHECK(s.tracer.radianceClamp == 10.0f);
+  CHECK(s.render.tracer.radianceClamp == 10.0f);
   CHECK(viewer::applySetting(s, "seed", "7") == SettingEffect::ResetAccumulation);
-  CHECK(s.tracer.seed == 7u);
+  CHECK(s.render.tracer.seed == 7u);
   // Display-only settings leave the accumulation alone.
   CHECK(viewer::applySetting(s, "exposure", "2.5") == SettingEffect::None);
-  CHECK(s.toneMapping.exposure == 2.5f);
+  CHECK(s.render.toneMapping.exposure == 2.5f);
   CHECK(viewer::applySetting(s, "tonemap", "aces") == SettingEffect::None);
-  CHECK(s.toneMapping.toneOperator == render::ToneMapOperator::AcesFitted);
+  CHECK(s.render.toneMapping.toneOperator == render::ToneMapOperator::AcesFitted);
   CHECK(viewer::applySetting(s, "all-effects", "on") == SettingEffect::RebuildRenderer);
-  CHECK(s.allEffects);
+  CHECK(s.render.allEffects);
   // A fixed render scale turns the automatic one off.
   CHECK(viewer::applySetting(s, "render-scale", "0.5") == SettingEffect::Resize);
   CHECK(s.renderScale == 0.5f);
@@ -53,17 +53,17 @@ TEST_CASE("viewer settings: bad names and values are errors that name them", "[v
   REQUIRE_THROWS_WITH(viewer::applySetting(s, "spp-per-frame", "17"),
                       "setting 'spp-per-frame': '17' is not an integer in 1..16");
   REQUIRE_THROWS_WITH(viewer::applySetting(s, "strategy", "best"),
-                      "setting 'strategy': 'best' is not uniform, cosine, bsdf, nee or mis");
+                      "setting 'strategy': 'best' is not one of uniform, cosine, bsdf, nee, mis");
   REQUIRE_THROWS_WITH(viewer::applySetting(s, "colour", "red"), "unknown setting 'colour'");
-  CHECK(s.samplesPerFrame == 1u);  // untouched by the failures
+  CHECK(s.render.sppPerFrame == 1u);  // untouched by the failures
 }
 
 TEST_CASE("viewer settings: the screenshot record reproduces the frames rendered", "[viewer]") {
   viewer::ViewerSettings s;
-  s.samplesPerFrame = 4;
-  s.tracer.seed = 9;
-  s.tracer.maxDepth = 5;
-  s.toneMapping.exposure = 2.0f;
+  s.render.sppPerFrame = 4;
+  s.render.tracer.seed = 9;
+  s.render.tracer.maxDepth = 5;
+  s.render.toneMapping.exposure = 2.0f;
   scene::Camera camera;
   camera.position = {0.1f, 0.2f, 0.3f};
   const auto job =
@@ -76,10 +76,11 @@ TEST_CASE("viewer settings: the screenshot record reproduces the frames rendered
   CHECK(job.width == 160u);
   CHECK(job.height == 90u);
   CHECK(job.spp == 32u);         // what has accumulated
-  CHECK(job.sppPerFrame == 4u);  // in frames of the same size (stratification is per frame)
-  CHECK(job.settings.seed == 9u);
-  CHECK(job.settings.maxDepth == 5u);
-  CHECK(job.toneMapping.exposure == 2.0f);
+  CHECK(job.settings.sppPerFrame ==
+        4u);  // in frames of the same size (stratification is per frame)
+  CHECK(job.settings.tracer.seed == 9u);
+  CHECK(job.settings.tracer.maxDepth == 5u);
+  CHECK(job.settings.toneMapping.exposure == 2.0f);
 }
 
 TEST_CASE("viewer settings: render size follows the scale, never below one pixel", "[viewer]") {

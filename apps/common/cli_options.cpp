@@ -1,0 +1,121 @@
+#include "cli_options.h"
+
+#include <fmt/format.h>
+
+#include <regex>
+
+#include "render/image_size.h"
+#include "util/error.h"
+
+namespace penumbra::app {
+
+rhi::DeviceCreateInfo DeviceOptions::createInfo() const {
+  rhi::DeviceCreateInfo info;
+  info.adapterIndex = device;
+  info.validation = validation;
+  return info;
+}
+
+void addDeviceOptions(CLI::App& cmd, DeviceOptions& o) {
+  cmd.add_option("--backend", o.backend, "Backend: vulkan | d3d12")->capture_default_str();
+  cmd.add_option("--device", o.device,
+                 "Device index from 'penumbra devices' (default: best with ray tracing)");
+  cmd.add_flag("--validation", o.validation,
+               "Enable the API validation layer; fail on any message");
+}
+
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, const std::string& sceneHelp) {
+  cmd.add_option("--scene", o.scene, sceneHelp)->capture_default_str();
+  cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+}
+
+std::pair<uint32_t, uint32_t> parseImageSize(const std::string& text) {
+  static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
+  std::smatch m;
+  if (!std::regex_match(text, m, pattern))
+    throw Error(fmt::format("--size '{}': expected WIDTHxHEIGHT, e.g. 512x512", text));
+  uint32_t w = std::stoul(m[1]), h = std::stoul(m[2]);
+  if (!render::isValidImageSize(w, h))
+    throw Error(
+        fmt::format("--size '{}': width and height must be 1..{}", text, render::kMaxImageSide));
+  return {w, h};
+}
+
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentOptions& o) {
+  cmd.add_option("--env", o.map,
+                 "Environment light: an equirectangular .exr or .hdr, 'default' (the studio "
+                 "environment scenes without light get) or 'none'");
+  cmd.add_option("--env-rotation", o.rotationDegrees,
+                 "Turn the environment about the up axis (degrees, counter-clockwise from above)");
+  cmd.add_option("--env-intensity", o.intensity, "Scale the environment's radiance")
+      ->check(CLI::Range(0.0f, 1e6f));
+  cmd.add_option("--env-background", o.background,
+                 "Whether camera rays that miss see the environment: visible | hidden (black)")
+      ->check(CLI::IsMember({"visible", "hidden"}));
+}
+
+void EnvironmentOptions::apply(const CLI::App& cmd, render::EnvironmentChoice& choice) const {
+  if (cmd.count("--env") > 0) choice = render::EnvironmentChoice{map, {}, {}, {}};
+  if (cmd.count("--env-rotation") > 0) choice.rotationDegrees = rotationDegrees;
+  if (cmd.count("--env-intensity") > 0) choice.intensity = intensity;
+  if (cmd.count("--env-background") > 0) choice.visibleBackground = background == "visible";
+}
+
+void SettingOptions::add(CLI::App& cmd, const render::RenderSettings& defaults,
+                         const Filter& include) {
+  using render::SettingType;
+  for (const render::Setting& s : render::renderSettingsTable()) {
+    if (!s.commandLine || (include && !include(s))) continue;
+    Bound& b = bound_.emplace_back(Bound{&s, s.commandLineFlag()});
+    const double value = s.get(defaults);
+    const std::string help(s.help);
+    switch (s.type) {
+      case SettingType::Flag:
+        cmd.add_flag(b.flag, b.flagGiven, help);
+        break;
+      case SettingType::Count:
+        b.count = uint32_t(value);
+        cmd.add_option(b.flag, b.count, help)
+            ->check(CLI::Range(uint32_t(s.min), uint32_t(s.max)))
+            ->capture_default_str();
+        break;
+      case SettingType::Number:
+        b.number = float(value);
+        cmd.add_option(b.flag, b.number, help)
+            ->check(CLI::Range(float(s.min), float(s.max)))
+            ->capture_default_str();
+        break;
+      case SettingType::Choice: {
+        b.choice = s.format(value);
+        std::vector<std::string> names(s.choices.begin(), s.choices.end());
+        cmd.add_option(b.flag, b.choice, help)->check(CLI::IsMember(names))->capture_default_str();
+        break;
+      }
+    }
+  }
+}
+
+void SettingOptions::apply(const CLI::App& cmd, render::RenderSettings& settings) const {
+  using render::SettingType;
+  for (const Bound& b : bound_) {
+    if (cmd.count(b.flag) == 0) continue;
+    const render::Setting& s = *b.setting;
+    switch (s.type) {
+      case SettingType::Flag:
+        // The flag names the side that is not the default.
+        s.set(settings, s.get(render::RenderSettings{}) != 0.0 ? 0.0 : 1.0);
+        break;
+      case SettingType::Count:
+        s.set(settings, double(b.count));
+        break;
+      case SettingType::Number:
+        s.set(settings, double(b.number));
+        break;
+      case SettingType::Choice:
+        s.set(settings, s.parseOrThrow(b.choice, b.flag));
+        break;
+    }
+  }
+}
+
+}  // namespace penumbra::app
