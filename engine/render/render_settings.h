@@ -3,7 +3,7 @@
 // the values; renderSettingsTable() says, for each one, its record (JSON)
 // key, its command-line and viewer `set` name, its type and accepted range,
 // its viewer widget, and whether it is part of a render's identity. The
-// command line (apps/common/setting_options.h), render records
+// command line (apps/common/cli_options.h), render records
 // (render_job.h), the viewer's Algorithm menu and `set` command, the study's
 // technique axes and the split-render hash (partial_render.h) all read this
 // table, so adding a setting is one field, one table entry (render_settings.cpp)
