@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "rhi/fault_injection.h"
-#include "rhi/validation.h"
-#include "util/error.h"
+#include "penumbra/rhi/fault_injection.h"
+#include "penumbra/rhi/validation.h"
+#include "penumbra/util/error.h"
 #include "vulkan/vulkan_backend.h"
 #ifdef PENUMBRA_HAVE_D3D12
 #include "d3d12/d3d12_backend.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "rhi/device.h"
+#include "penumbra/rhi/device.h"
 
 namespace penumbra::backends {
 

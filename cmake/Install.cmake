@@ -10,27 +10,31 @@ set(_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
 # static, so a consumer's link needs the archives of their PRIVATE
 # dependencies too (penumbra_shaders, penumbra_scenes, the D3D12 backend).
 set(_exported penumbra_util penumbra_rhi penumbra_shaders penumbra_scenes penumbra_image penumbra_scene
-    penumbra_render penumbra_study penumbra_engine penumbra_backends)
+    penumbra_render penumbra_batch penumbra_study penumbra_engine penumbra_backends)
 if(TARGET penumbra_backend_d3d12)
   list(APPEND _exported penumbra_backend_d3d12)
 endif()
 install(TARGETS ${_exported} EXPORT PenumbraTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  PUBLIC_HEADER DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR})  # penumbra_shaders.h
+  PUBLIC_HEADER DESTINATION ${PENUMBRA_INSTALL_SHADER_INCLUDEDIR})  # penumbra_shaders.h
 install(EXPORT PenumbraTargets NAMESPACE penumbra:: DESTINATION ${_config_dir})
 
-# Headers, by the paths they include each other by ("rhi/device.h"). Left
-# out: the glTF loader's internals, which take tinygltf's types (a private
-# dependency), and the SPIR-V reflection the package does not contain.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/ DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
+# The public headers, by the paths they include each other by
+# (<penumbra/rhi/device.h>). Left out, the internals: the glTF loader's
+# pieces, which take tinygltf's types (a private dependency); the SPIR-V
+# reflection the package does not contain; JSON reading helpers; the RHI's
+# validation objects and fault injection (reached through rhi/validation.h
+# and the device's create info, not by name).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/penumbra DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h"
-  REGEX "/scene/(tinygltf|gltf_accessors|gltf_lights|gltf_materials|gltf_primitives|gltf_textures)\\.h$" EXCLUDE
-  REGEX "/rhi/shader_reflection\\.h$" EXCLUDE)
-install(FILES ${PROJECT_SOURCE_DIR}/backends/backend_factory.h DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR})
+  REGEX "/scene/(tinygltf|gltf_accessors|gltf_lights|gltf_materials|gltf_primitives|gltf_textures|json_reading)\\.h$" EXCLUDE
+  REGEX "/rhi/(shader_reflection|validation_objects|fault_injection)\\.h$" EXCLUDE)
+install(FILES ${PROJECT_SOURCE_DIR}/backends/backend_factory.h
+  DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}/penumbra)
 # The structs and registers C++ shares with the shaders (path_tracer_shared.h
-# for render/path_tracer.h, bindings.hlsli for rhi/register_shifts.h), in the
-# same include root, as the build's second include directory puts them.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/shared/ DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
+# for render/path_tracer.h, bindings.hlsli for rhi/register_shifts.h), in
+# their own root, as the build's include directory of shaders/shared.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/shared/ DESTINATION ${PENUMBRA_INSTALL_SHADER_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h" PATTERN "bindings.hlsli")
 
 # DirectX-Headers' target, where the D3D12 backend links one (native Windows).

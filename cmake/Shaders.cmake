@@ -291,7 +291,7 @@ function(penumbra_add_shaders)
 #include <span>
 #include <string_view>
 
-#include "rhi/pipeline.h"
+#include "penumbra/rhi/pipeline.h"
 
 namespace @namespace@ {
 // SPIR-V words of an embedded shader by source file name; empty if unknown.
@@ -308,7 +308,7 @@ rhi::ShaderDesc shaderDesc(std::string_view name);
 
 #include <string>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 @includes@
 namespace @namespace@ {
 namespace {
@@ -353,10 +353,10 @@ rhi::ShaderDesc shaderDesc(std::string_view name) {
   string(REGEX REPLACE "^penumbra_" "" export_name ${ARG_TARGET})
   add_library(penumbra::${export_name} ALIAS ${ARG_TARGET})
   # Installed (cmake/Install.cmake), the generated header goes beside the
-  # engine's headers; PUBLIC_HEADER is how install(TARGETS) finds it.
+  # shaders' shared headers; PUBLIC_HEADER is how install(TARGETS) finds it.
   set_target_properties(${ARG_TARGET} PROPERTIES EXPORT_NAME ${export_name}
                         PUBLIC_HEADER ${out_dir}/include/${ARG_TARGET}.h)
   target_include_directories(${ARG_TARGET} PRIVATE ${out_dir}
-    PUBLIC $<BUILD_INTERFACE:${out_dir}/include> $<INSTALL_INTERFACE:${PENUMBRA_INSTALL_INCLUDEDIR}>)
+    PUBLIC $<BUILD_INTERFACE:${out_dir}/include> $<INSTALL_INTERFACE:${PENUMBRA_INSTALL_SHADER_INCLUDEDIR}>)
   target_link_libraries(${ARG_TARGET} PUBLIC penumbra::rhi)
 endfunction()

@@ -4,8 +4,8 @@
 
 #include <regex>
 
-#include "render/image_size.h"
-#include "util/error.h"
+#include "penumbra/render/image_size.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::app {
 

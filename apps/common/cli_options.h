@@ -1,7 +1,7 @@
 #pragma once
 // Options more than one command takes, declared once: the device options,
 // the scene and image size, and every setting of the settings table
-// (render/render_settings.h) as an option of its own.
+// (batch/render_settings.h) as an option of its own.
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <deque>
@@ -9,9 +9,9 @@
 #include <string>
 #include <utility>
 
-#include "render/render_job.h"
-#include "render/render_settings.h"
-#include "rhi/device.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/batch/render_settings.h"
+#include "penumbra/rhi/device.h"
 
 namespace penumbra::app {
 

@@ -12,13 +12,13 @@
 
 #include "backend_factory.h"
 #include "commands.h"
-#include "image/image_compare.h"
-#include "render/denoiser.h"
-#include "render/effect_set.h"
-#include "render/path_tracer.h"
-#include "render/render_job.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/image/image_compare.h"
+#include "penumbra/render/denoiser.h"
+#include "penumbra/render/effect_set.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::app {
 namespace {
@@ -114,6 +114,47 @@ std::string joinNames(uint32_t effects) {
   return joined;
 }
 
+// The last frame of the pan against a converged render from its camera
+// (an independent seed), by how long the denoiser's history is at each
+// pixel: just disoccluded (1 frame), recent (2-4), settled (5 or more).
+void benchPanAgainstReference(rhi::IDevice& device, const scene::Scene& scene,
+                              render::PathTracer& tracer, const scene::Camera& camera,
+                              const render::PathTracerSettings& settings, const BenchOptions& o,
+                              const image::Image& lastRaw, const image::Image& lastDenoised,
+                              const image::Image& moments) {
+  render::PathTracer reference(device, scene, tracer.width(), tracer.height());
+  reference.setCamera(camera);
+  render::PathTracerSettings converged = settings;
+  converged.writeGuides = false;
+  converged.seed = 987654321u;
+  while (reference.accumulatedSamples() < o.referenceSpp)
+    reference.renderFrame(converged, std::min(render::PathTracer::kMaxSamplesPerFrame,
+                                              o.referenceSpp - reference.accumulatedSamples()));
+  const image::Image truth = reference.readback();
+  const image::Image normalDepth = tracer.readback(tracer.guides().normalDepth);
+  size_t surfacePixels = 0;
+  for (size_t i = 3; i < normalDepth.rgba.size(); i += 4)
+    surfacePixels += normalDepth.rgba[i] > 0.0f;
+  fmt::print(
+      "last frame of the pan against a {} spp reference, the {} pixels with a surface, relative "
+      "MSE "
+      "raw / denoised:\n",
+      o.referenceSpp, surfacePixels);
+  const struct {
+    const char* label;
+    float lo, hi;
+  } buckets[] = {{"just disoccluded (history 1)", 0.0f, 1.5f},
+                 {"history 2-4 frames", 1.5f, 4.5f},
+                 {"history 5+ frames", 4.5f, 1e30f}};
+  for (const auto& b : buckets) {
+    const std::vector<bool> mask = historyMask(moments, normalDepth, b.lo, b.hi);
+    fmt::print("  {:<30} {:>8} pixels: {:.4g} / {:.4g}\n", b.label,
+               std::count(mask.begin(), mask.end(), true),
+               image::maskedRelativeMse(lastRaw, truth, mask),
+               image::maskedRelativeMse(lastDenoised, truth, mask));
+  }
+}
+
 // The denoiser on the specialized pipeline's frames, each frame its own
 // samples (the real-time case; a still camera): the denoiser's GPU time, the
 // frame it makes with the path tracer's, and the temporal stability, the
@@ -184,40 +225,8 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
       rawChange / o.frames, denoisedChange / o.frames,
       denoisedChange > 0 ? rawChange / denoisedChange : 0.0);
   if (o.cameraPan == 0 || d.mode != render::DenoiseMode::Svgf) return;
-  // The last frame of the pan against a converged render from its camera
-  // (an independent seed), by how long the denoiser's history is at each
-  // pixel: just disoccluded (1 frame), recent (2-4), settled (5 or more).
-  render::PathTracer reference(device, scene, tracer.width(), tracer.height());
-  reference.setCamera(camera);
-  render::PathTracerSettings converged = settings;
-  converged.writeGuides = false;
-  converged.seed = 987654321u;
-  while (reference.accumulatedSamples() < o.referenceSpp)
-    reference.renderFrame(converged, std::min(render::PathTracer::kMaxSamplesPerFrame,
-                                              o.referenceSpp - reference.accumulatedSamples()));
-  const image::Image truth = reference.readback();
-  const image::Image normalDepth = tracer.readback(tracer.guides().normalDepth);
-  size_t surfacePixels = 0;
-  for (size_t i = 3; i < normalDepth.rgba.size(); i += 4)
-    surfacePixels += normalDepth.rgba[i] > 0.0f;
-  fmt::print(
-      "last frame of the pan against a {} spp reference, the {} pixels with a surface, relative "
-      "MSE "
-      "raw / denoised:\n",
-      o.referenceSpp, surfacePixels);
-  const struct {
-    const char* label;
-    float lo, hi;
-  } buckets[] = {{"just disoccluded (history 1)", 0.0f, 1.5f},
-                 {"history 2-4 frames", 1.5f, 4.5f},
-                 {"history 5+ frames", 4.5f, 1e30f}};
-  for (const auto& b : buckets) {
-    const std::vector<bool> mask = historyMask(moments, normalDepth, b.lo, b.hi);
-    fmt::print("  {:<30} {:>8} pixels: {:.4g} / {:.4g}\n", b.label,
-               std::count(mask.begin(), mask.end(), true),
-               image::maskedRelativeMse(previousRaw, truth, mask),
-               image::maskedRelativeMse(previousDenoised, truth, mask));
-  }
+  benchPanAgainstReference(device, scene, tracer, camera, settings, o, previousRaw,
+                           previousDenoised, moments);
 }
 
 int runBench(const BenchOptions& o) {

@@ -7,12 +7,12 @@
 
 #include "backend_factory.h"
 #include "commands.h"
-#include "image/image_compare.h"
-#include "image/image_io.h"
-#include "render/path_tracer.h"
-#include "render/render_job.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/image/image_compare.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::app {
 namespace {

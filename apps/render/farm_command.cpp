@@ -16,9 +16,9 @@
 
 #include "commands.h"
 #include "farm_plan.h"
-#include "image/image_io.h"
-#include "render/render_job.h"
-#include "util/error.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::app {
 namespace {

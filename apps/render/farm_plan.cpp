@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "image/image_io.h"
-#include "render/partial_render.h"
-#include "scene/json_reading.h"
-#include "util/error.h"
+#include "penumbra/batch/partial_render.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/scene/json_reading.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::app {
 

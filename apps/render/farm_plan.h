@@ -1,6 +1,6 @@
 #pragma once
 // What `penumbra farm` submits: a render split into shards
-// (render/sample_split.h), as a Slurm job array of `penumbra render
+// (batch/sample_split.h), as a Slurm job array of `penumbra render
 // --samples` tasks and a merge job, all written into a work directory on the
 // file system the cluster shares:
 //
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "render/sample_split.h"
+#include "penumbra/batch/sample_split.h"
 
 namespace penumbra::app {
 
@@ -56,7 +56,7 @@ std::string planToJson(const FarmPlan& plan);
 FarmPlan planFromJson(const std::string& text, const std::string& source);
 
 // The shards whose file is absent, not a piece of this render's range, or
-// damaged (render/partial_render.h's checks); their indices, ascending.
+// damaged (batch/partial_render.h's checks); their indices, ascending.
 // `problems` receives a line for each file that exists but was refused.
 std::vector<size_t> missingShards(const FarmPlan& plan, std::vector<std::string>* problems);
 // Slurm's --array list: "0-3", "1,4-6".

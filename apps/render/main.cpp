@@ -3,8 +3,8 @@
 #include <map>
 
 #include "commands.h"
-#include "util/error.h"
-#include "util/log.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
 
 int main(int argc, char** argv) {
   using namespace penumbra;

@@ -1,15 +1,15 @@
 // `penumbra merge`: the pieces of a split render (`render --samples A:B
-// --total-spp N`) into the final image (render/partial_render.h).
+// --total-spp N`) into the final image (batch/partial_render.h).
 #include <fmt/format.h>
 
 #include <memory>
 
 #include "backend_factory.h"
 #include "commands.h"
-#include "image/image_io.h"
-#include "render/partial_render.h"
-#include "render/render_output.h"
-#include "util/error.h"
+#include "penumbra/batch/partial_render.h"
+#include "penumbra/batch/render_output.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::app {
 namespace {

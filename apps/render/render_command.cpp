@@ -11,22 +11,22 @@
 #include "backend_factory.h"
 #include "cli_options.h"
 #include "commands.h"
-#include "image/image_io.h"
+#include "penumbra/batch/partial_render.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/batch/render_loop.h"
+#include "penumbra/batch/render_output.h"
+#include "penumbra/batch/sample_split.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/render/denoiser.h"
+#include "penumbra/render/effect_set.h"
+#include "penumbra/render/image_size.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/material_row.h"
+#include "penumbra/scene/scene_hash.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 #include "penumbra_commit.h"
 #include "progress.h"
-#include "render/denoiser.h"
-#include "render/effect_set.h"
-#include "render/image_size.h"
-#include "render/partial_render.h"
-#include "render/path_tracer.h"
-#include "render/render_job.h"
-#include "render/render_loop.h"
-#include "render/render_output.h"
-#include "render/sample_split.h"
-#include "scene/material_row.h"
-#include "scene/scene_hash.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
 
 namespace penumbra::app {
 namespace {
@@ -34,7 +34,7 @@ namespace {
 struct RenderOptions {
   SceneOptions scene;
   DeviceOptions device;
-  SettingOptions settings;  // --max-depth, --strategy, ... (render/render_settings.h)
+  SettingOptions settings;  // --max-depth, --strategy, ... (batch/render_settings.h)
   std::string camera;
   uint32_t spp = 64;
   std::string out = "render.png";
@@ -148,10 +148,10 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   return job;
 }
 
-int runRender(const RenderOptions& o, const CLI::App& cmd) {
-  // Everything that can fail on bad input fails before any rendering starts.
-  render::RenderJob job = makeJob(o, cmd);
-  const uint32_t width = job.width, height = job.height;
+// The scene the job renders: loaded, the camera named on the command line
+// chosen and given its lens options, the material row, the viewer's
+// material edits and the environment applied.
+scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job) {
   scene::Scene scene = scene::loadScene(job.scene, {o.allowExternalFiles});
   if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
   // The thin lens given on the command line, on whichever camera renders.
@@ -168,6 +168,126 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   // The viewer's Material-menu edits, on top of the row as the viewer had it.
   render::applyMaterialOverrides(scene, job.materials, o.settingsFile);
   render::applyEnvironmentChoice(scene, job.environment);
+  return scene;
+}
+
+// A piece of a split render (--samples A:B --total-spp N).
+struct Piece {
+  render::SampleTree tree;
+  render::SampleRange range;
+  render::SplitRenderIdentity identity;  // the device-independent part of what it renders
+};
+
+// The piece the options ask for, if any, checked against the whole render
+// before any device is made; sets job.spp to the whole render's.
+std::optional<Piece> planPiece(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job,
+                               const scene::Scene& scene, bool aovs) {
+  if (o.samples.empty() && cmd.count("--total-spp") == 0) return std::nullopt;
+  if (o.samples.empty() || cmd.count("--total-spp") == 0)
+    throw Error(
+        "--samples A:B and --total-spp N go together (samples A to B-1 of an N-sample "
+        "render)");
+  if (cmd.count("--spp") > 0 && o.spp != o.totalSpp)
+    throw Error(
+        fmt::format("--spp {} and --total-spp {}: a piece renders --samples of the "
+                    "--total-spp render; give --total-spp only",
+                    o.spp, o.totalSpp));
+  if (job.settings.denoiser.mode != render::DenoiseMode::Off || aovs)
+    throw Error(
+        "--samples: a piece holds sums of samples only; --denoise and --aov apply to "
+        "whole images");
+  if (image::formatFromPath(o.out) != image::FileFormat::Exr)
+    throw Error(
+        fmt::format("--samples: the piece '{}' must be an .exr file (`penumbra merge` "
+                    "makes the final image)",
+                    o.out));
+  job.spp = o.totalSpp;
+  render::SampleTree tree(o.totalSpp, job.settings.sppPerFrame);
+  const render::SampleRange range = render::parseSampleRange(o.samples, "--samples");
+  tree.checkRange(range, "--samples");
+  const scene::Camera rendered = job.camera ? *job.camera : scene.camera;
+  const render::SplitRenderIdentity identity{
+      scene::contentHash(scene),
+      render::splitSettingsHash(job.settings, rendered, job.width, job.height),
+      job.width,
+      job.height,
+      job.settings.tracer.seed,
+      job.spp,
+      job.settings.sppPerFrame,
+      PENUMBRA_COMMIT};
+  return Piece{std::move(tree), range, identity};
+}
+
+// Fails the run when the validation layer spoke (--validation).
+int validationStatus(const RenderOptions& o, rhi::IDevice& device, const char* what) {
+  if (!o.device.validation || device.validationMessageCount() == 0) return 0;
+  fmt::print(stderr, "error: {} validation message(s){}\n", device.validationMessageCount(), what);
+  return 1;
+}
+
+int renderPiece(const RenderOptions& o, rhi::IDevice& device, render::PathTracer& tracer,
+                const render::PathTracerSettings& settings, const Piece& plan,
+                const render::RenderJob& job, const scene::Scene& scene) {
+  Progress progress(plan.range.count());
+  render::FrameStats stats;
+  render::PartialRender piece;
+  piece.sums = render::renderSampleRange(
+      tracer, settings, plan.tree, plan.range, [&](uint32_t done) { progress.update(done); },
+      &stats);
+  progress.finish();
+  // A piece rendered with validation messages is not written: a rerun of
+  // the farm would take it as done.
+  if (int status = validationStatus(o, device, "; the piece is not written")) return status;
+  piece.identity = plan.identity;
+  piece.sceneName = scene.name;
+  piece.toneMapping = job.settings.toneMapping;
+  piece.range = plan.range;
+  // The driver too: two drivers of one GPU may round differently.
+  const auto& adapter = device.adapter();
+  piece.device =
+      fmt::format("{} ({}, driver {})", adapter.name, device.backendName(), adapter.driver);
+  render::savePartialRender(o.out, piece);
+  fmt::print("GPU time: {:.3f} ms for samples {} of {}\n", stats.gpuSeconds * 1e3,
+             render::formatSampleRange(plan.range), job.spp);
+  fmt::print("wrote {} (a piece: `penumbra merge` combines the pieces)\n", o.out);
+  return 0;
+}
+
+int renderWhole(const RenderOptions& o, rhi::IDevice& device, render::PathTracer& tracer,
+                const render::PathTracerSettings& settings, const render::RenderJob& job,
+                const std::vector<std::string>& aovs) {
+  const render::DenoiserSettings& denoise = job.settings.denoiser;
+  std::unique_ptr<render::Denoiser> denoiser;
+  if (denoise.mode != render::DenoiseMode::Off)
+    denoiser = std::make_unique<render::Denoiser>(device, job.width, job.height);
+  Progress progress(job.spp);
+  const render::RenderLoopResult loop = render::renderSamples(
+      tracer, denoiser.get(), settings, denoise, job.spp, job.settings.sppPerFrame,
+      [&](uint32_t done) { progress.update(done); });
+  progress.finish();
+  const rhi::TextureHandle& result = denoiser ? denoiser->output() : tracer.accumulation();
+  std::vector<image::ExrLayer> layers;
+  if (image::formatFromPath(o.out) == image::FileFormat::Exr) {
+    layers = aovLayers(aovs, tracer, denoiser.get(), std::max(1u, tracer.accumulatedSamples()));
+    if (denoiser && !aovs.empty()) layers.push_back({"noisy", {"R", "G", "B"}, tracer.readback()});
+  }
+  render::saveRender(tracer, result, o.out, job.settings.toneMapping, layers);
+  fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
+             loop.gpuSeconds * 1e3, loop.gpuSeconds * 1e3 / job.spp);
+  if (denoiser)
+    fmt::print("denoiser ({}): {:.3f} ms GPU time\n", render::denoiseModeName(denoise.mode),
+               loop.denoiseSeconds * 1e3);
+  fmt::print("rays: {} ({:.2f} Mrays/s)\n", loop.rays,
+             loop.gpuSeconds > 0 ? loop.rays / loop.gpuSeconds * 1e-6 : 0.0);
+  fmt::print("wrote {}\n", o.out);
+  return validationStatus(o, device, "");
+}
+
+// Parse, check, hand over, report: everything that can fail on bad input
+// fails before any device is made.
+int runRender(const RenderOptions& o, const CLI::App& cmd) {
+  render::RenderJob job = makeJob(o, cmd);
+  const scene::Scene scene = loadJobScene(o, cmd, job);
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene)))
       fmt::print("{}\n", name);
@@ -176,57 +296,15 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
     return 0;
   }
   const std::vector<std::string> aovs = parseAovs(o.aov, o.out);
-  const render::DenoiseMode denoiseMode = job.settings.denoiser.mode;
-  // A piece of a split render: its range is checked against the whole
-  // render's before any device is made.
-  std::optional<render::SampleTree> splitTree;
-  std::optional<render::SampleRange> splitRange;
-  if (!o.samples.empty() || cmd.count("--total-spp") > 0) {
-    if (o.samples.empty() || cmd.count("--total-spp") == 0)
-      throw Error(
-          "--samples A:B and --total-spp N go together (samples A to B-1 of an N-sample "
-          "render)");
-    if (cmd.count("--spp") > 0 && o.spp != o.totalSpp)
-      throw Error(
-          fmt::format("--spp {} and --total-spp {}: a piece renders --samples of the "
-                      "--total-spp render; give --total-spp only",
-                      o.spp, o.totalSpp));
-    if (denoiseMode != render::DenoiseMode::Off || !aovs.empty())
-      throw Error(
-          "--samples: a piece holds sums of samples only; --denoise and --aov apply to "
-          "whole images");
-    if (image::formatFromPath(o.out) != image::FileFormat::Exr)
-      throw Error(
-          fmt::format("--samples: the piece '{}' must be an .exr file (`penumbra merge` "
-                      "makes the final image)",
-                      o.out));
-    job.spp = o.totalSpp;
-    splitTree.emplace(o.totalSpp, job.settings.sppPerFrame);
-    splitRange = render::parseSampleRange(o.samples, "--samples");
-    splitTree->checkRange(*splitRange, "--samples");
-  }
-  if (denoiseMode != render::DenoiseMode::Off &&
+  const std::optional<Piece> piece = planPiece(o, cmd, job, scene, !aovs.empty());
+  if (job.settings.denoiser.mode != render::DenoiseMode::Off &&
       job.settings.tracer.integrator != render::Integrator::Path)
     throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
   image::checkWritable(o.out);
-  // A piece's identity is the device-independent part of what it renders.
-  std::optional<render::SplitRenderIdentity> splitIdentity;
-  if (splitTree) {
-    const scene::Camera rendered = job.camera ? *job.camera : scene.camera;
-    splitIdentity = render::SplitRenderIdentity{
-        scene::contentHash(scene),
-        render::splitSettingsHash(job.settings, rendered, width, height),
-        width,
-        height,
-        job.settings.tracer.seed,
-        job.spp,
-        job.settings.sppPerFrame,
-        PENUMBRA_COMMIT};
-  }
   if (o.checkOnly) {
-    if (splitIdentity)
-      fmt::print("identity: {} {} {}\n", splitIdentity->sceneHash, splitIdentity->settingsHash,
-                 splitIdentity->build);
+    if (piece)
+      fmt::print("identity: {} {} {}\n", piece->identity.sceneHash, piece->identity.settingsHash,
+                 piece->identity.build);
     fmt::print("checked: nothing refused\n");
     return 0;
   }
@@ -236,7 +314,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   fmt::print("device: {} ({}, {}) via {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              adapter.apiVersion, device->backendName());
   fmt::print("scene: {} ({} triangles, {} implicit objects), {}x{}, {} spp, seed {}\n", scene.name,
-             scene.triangleCount(), scene.implicits.size(), width, height, job.spp,
+             scene.triangleCount(), scene.implicits.size(), job.width, job.height, job.spp,
              job.settings.tracer.seed);
   if (job.settings.tracer.radianceClamp > 0.0f)
     fmt::print("radiance clamp: {} per sample (biased: energy above it is discarded)\n",
@@ -245,80 +323,20 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 
   render::PipelineOptions pipeline;
   pipeline.allEffects = job.settings.allEffects;
-  render::PathTracer tracer(*device, scene, width, height, pipeline);
+  render::PathTracer tracer(*device, scene, job.width, job.height, pipeline);
   if (job.camera) tracer.setCamera(*job.camera);
   std::string effects;
   for (const auto& name : render::effectNames(tracer.pipelineEffects()))
     effects += (effects.empty() ? "" : ", ") + name;
   fmt::print("pipeline effects: {}{}\n", effects.empty() ? "none" : effects,
              job.settings.allEffects ? " (--all-effects)" : "");
-  render::PathTracerSettings settings = render::frameSettings(job.settings);
   // The guide buffers are what the denoiser and the AOVs read; a record of
   // frames that wrote them (a viewer screenshot taken while denoising) asks
   // for them too, to render those frames again exactly.
+  render::PathTracerSettings settings = render::frameSettings(job.settings);
   if (!aovs.empty()) settings.writeGuides = true;
-
-  std::unique_ptr<render::Denoiser> denoiser;
-  const render::DenoiserSettings& denoise = job.settings.denoiser;
-  if (denoiseMode != render::DenoiseMode::Off)
-    denoiser = std::make_unique<render::Denoiser>(*device, width, height);
-
-  if (splitTree) {
-    Progress progress(splitRange->count());
-    render::FrameStats stats;
-    render::PartialRender piece;
-    piece.sums = render::renderSampleRange(
-        tracer, settings, *splitTree, *splitRange, [&](uint32_t done) { progress.update(done); },
-        &stats);
-    progress.finish();
-    // A piece rendered with validation messages is not written: a rerun of
-    // the farm would take it as done.
-    if (o.device.validation && device->validationMessageCount() > 0) {
-      fmt::print(stderr, "error: {} validation message(s); the piece is not written\n",
-                 device->validationMessageCount());
-      return 1;
-    }
-    piece.identity = *splitIdentity;
-    piece.sceneName = scene.name;
-    piece.toneMapping = job.settings.toneMapping;
-    piece.range = *splitRange;
-    // The driver too: two drivers of one GPU may round differently.
-    piece.device =
-        fmt::format("{} ({}, driver {})", adapter.name, device->backendName(), adapter.driver);
-    render::savePartialRender(o.out, piece);
-    fmt::print("GPU time: {:.3f} ms for samples {} of {}\n", stats.gpuSeconds * 1e3,
-               render::formatSampleRange(*splitRange), job.spp);
-    fmt::print("wrote {} (a piece: `penumbra merge` combines the pieces)\n", o.out);
-    return 0;
-  }
-
-  Progress progress(job.spp);
-  const render::RenderLoopResult loop = render::renderSamples(
-      tracer, denoiser.get(), settings, denoise, job.spp, job.settings.sppPerFrame,
-      [&](uint32_t done) { progress.update(done); });
-  progress.finish();
-  const double gpuSeconds = loop.gpuSeconds, denoiseSeconds = loop.denoiseSeconds;
-  const uint64_t rays = loop.rays;
-  const rhi::TextureHandle& result = denoiser ? denoiser->output() : tracer.accumulation();
-
-  std::vector<image::ExrLayer> layers;
-  if (image::formatFromPath(o.out) == image::FileFormat::Exr) {
-    layers = aovLayers(aovs, tracer, denoiser.get(), std::max(1u, tracer.accumulatedSamples()));
-    if (denoiser && !aovs.empty()) layers.push_back({"noisy", {"R", "G", "B"}, tracer.readback()});
-  }
-  render::saveRender(tracer, result, o.out, job.settings.toneMapping, layers);
-  fmt::print("GPU time: {:.3f} ms total, {:.3f} ms per sample per pixel of the whole image\n",
-             gpuSeconds * 1e3, gpuSeconds * 1e3 / job.spp);
-  if (denoiser)
-    fmt::print("denoiser ({}): {:.3f} ms GPU time\n", render::denoiseModeName(denoiseMode),
-               denoiseSeconds * 1e3);
-  fmt::print("rays: {} ({:.2f} Mrays/s)\n", rays, gpuSeconds > 0 ? rays / gpuSeconds * 1e-6 : 0.0);
-  fmt::print("wrote {}\n", o.out);
-  if (o.device.validation && device->validationMessageCount() > 0) {
-    fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
-    return 1;
-  }
-  return 0;
+  return piece ? renderPiece(o, *device, tracer, settings, *piece, job, scene)
+               : renderWhole(o, *device, tracer, settings, job, aovs);
 }
 
 }  // namespace

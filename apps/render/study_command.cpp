@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -19,17 +20,17 @@
 
 #include "backend_factory.h"
 #include "commands.h"
-#include "image/image_io.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/batch/sample_split.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/scene/json_reading.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/study/study_analysis.h"
+#include "penumbra/study/study_results.h"
+#include "penumbra/study/study_runner.h"
+#include "penumbra/util/error.h"
 #include "penumbra_commit.h"
 #include "progress.h"
-#include "render/render_job.h"
-#include "render/sample_split.h"
-#include "scene/json_reading.h"
-#include "scene/scene_loader.h"
-#include "study/study_analysis.h"
-#include "study/study_results.h"
-#include "study/study_runner.h"
-#include "util/error.h"
 
 namespace penumbra::app {
 namespace {
@@ -108,7 +109,7 @@ study::StudySpec makeSpec(const StudyOptions& o) {
       "--spp", o.spp, [](const std::string& s) { return parseCount(s, 1, 1u << 20); },
       "a sample count 1..1048576");
   // The technique axes that are table settings take the table's names and
-  // ranges (render/render_settings.h); a flag's values are on and off.
+  // ranges (batch/render_settings.h); a flag's values are on and off.
   auto axis = [](const char* key, const std::string& text, auto& out) {
     using T = typename std::decay_t<decltype(out)>::value_type;
     const render::Setting& setting = *render::findSetting(key);
@@ -427,6 +428,90 @@ int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& poi
   return 0;
 }
 
+// The --reference image, checked against the study's size; without one,
+// the seeds the rendered reference would use are checked against the points'.
+study::Reference givenReference(const StudyOptions& o, const study::StudySpec& spec, uint32_t width,
+                                uint32_t height) {
+  study::Reference reference;
+  if (o.reference.empty()) {
+    study::checkReferenceIndependence(spec, o.referenceSeed);
+    return reference;
+  }
+  reference.image = image::loadExr(o.reference);
+  reference.source = o.reference;
+  if (reference.image.width != width || reference.image.height != height)
+    throw Error(fmt::format("--reference '{}': {}x{}, the study renders {}x{}", o.reference,
+                            reference.image.width, reference.image.height, width, height));
+  return reference;
+}
+
+// The rendered reference: cached beside the results (the same scene, size,
+// samples and seed render the same reference), or rendered and cached now.
+study::Reference renderOrCachedReference(const StudyOptions& o, const std::filesystem::path& dir,
+                                         study::StudyRunner& runner,
+                                         const std::function<void(uint32_t)>& report) {
+  if (std::optional<study::Reference> cached = cachedReference(o, dir)) return std::move(*cached);
+  // The parts of a split study share one reference, rendered once
+  // before them (--reference-only): they never race to write it.
+  if (!o.points.empty())
+    throw Error(
+        fmt::format("study --points: '{}' holds no reference for this study yet; run "
+                    "the same study with --reference-only first",
+                    o.out));
+  study::Technique referenceTechnique;
+  referenceTechnique.maxDepth = o.referenceMaxDepth;
+  study::Reference reference =
+      runner.renderReference(referenceTechnique, referenceSppOf(o), o.referenceSeed, report);
+  const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
+  image::saveExr(cachedImage.string(), reference.image);
+  writeAtomically(cachedKey, fmt::format("{}\n{:.17g}\n", referenceKey(o), reference.noiseRelMse));
+  return reference;
+}
+
+// Measures points first..end-1 against the reference; the first seed's
+// image of each point is kept (linear, and a preview for the report).
+template <class Report>
+std::vector<study::StudyRow> measurePoints(study::StudyRunner& runner,
+                                           const std::vector<study::StudyPoint>& points,
+                                           size_t first, size_t end, const study::StudySpec& spec,
+                                           const study::Reference& reference,
+                                           const std::filesystem::path& dir, OutputGuard& written,
+                                           const Report& report, uint64_t done) {
+  std::vector<study::StudyRow> rows;
+  for (size_t i = first; i < end; ++i) {
+    const study::StudyPoint& point = points[i];
+    rows.push_back(runner.run(point, reference, report(done)));
+    done += point.spp;
+    if (point.seed == spec.firstSeed) {
+      const std::string name = study::imageName(point.technique.label(), point.spp);
+      const auto exr = dir / "images" / (name + ".exr"), png = dir / "images" / (name + ".png");
+      image::saveExr(exr.string(), runner.lastImage());
+      written.add(exr);
+      image::savePng(png.string(), image::encodeSrgb8(runner.lastImage()));
+      written.add(png);
+    }
+  }
+  return rows;
+}
+
+// A part of a split study: its rows and where they were measured, for --gather.
+int writePart(const std::filesystem::path& dir, const study::StudyContext& context, size_t first,
+              size_t end, const std::vector<study::StudyRow>& rows, OutputGuard& written) {
+  const auto part = dir / "points" / fmt::format("points-{}-{}", first, end);
+  std::filesystem::create_directories(part.parent_path());
+  nlohmann::json where;
+  where["device"] = context.device;
+  where["api"] = context.api;
+  where["backend"] = context.backend;
+  where["commit"] = context.commit;
+  writeAtomically(part.string() + ".json", where.dump(2) + "\n");
+  writeAtomically(part.string() + ".csv", study::resultsCsv(rows));
+  written.keep();
+  fmt::print("wrote {}.csv ({} rows; `penumbra study ... --gather` makes the results)\n",
+             part.string(), rows.size());
+  return 0;
+}
+
 int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   if (!o.analyze.empty()) {
     const auto rows = study::parseResultsCsv(readFile(o.analyze), o.analyze);
@@ -447,16 +532,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
     render::applyEnvironmentChoice(loaded, {});
     return loaded;
   }();
-  study::Reference reference;
-  if (!o.reference.empty()) {
-    reference.image = image::loadExr(o.reference);
-    reference.source = o.reference;
-    if (reference.image.width != width || reference.image.height != height)
-      throw Error(fmt::format("--reference '{}': {}x{}, the study renders {}x{}", o.reference,
-                              reference.image.width, reference.image.height, width, height));
-  } else {
-    study::checkReferenceIndependence(spec, o.referenceSeed);
-  }
+  study::Reference reference = givenReference(o, spec, width, height);
   if (int(!o.points.empty()) + int(o.referenceOnly) + int(o.gather) > 1)
     throw Error("study: --points, --reference-only and --gather exclude each other");
   if (o.referenceOnly && !o.reference.empty())
@@ -495,8 +571,6 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   runner.setTimingRepeats(o.repeats);
   uint64_t total = 0;
   for (size_t i = first; i < end && !o.referenceOnly; ++i) total += points[i].spp;
-  study::Technique referenceTechnique;
-  referenceTechnique.maxDepth = o.referenceMaxDepth;
   const bool renderReference = o.reference.empty();
   const uint32_t referenceSpp = referenceSppOf(o);
   if (renderReference) total += referenceSpp;
@@ -508,25 +582,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   };
 
   if (renderReference) {
-    // Cached beside the results: the same scene, size, samples and seed
-    // render the same reference.
-    if (std::optional<study::Reference> cached = cachedReference(o, dir)) {
-      reference = std::move(*cached);
-    } else {
-      // The parts of a split study share one reference, rendered once
-      // before them (--reference-only): they never race to write it.
-      if (!o.points.empty())
-        throw Error(
-            fmt::format("study --points: '{}' holds no reference for this study yet; run "
-                        "the same study with --reference-only first",
-                        o.out));
-      reference =
-          runner.renderReference(referenceTechnique, referenceSpp, o.referenceSeed, report(0));
-      const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
-      image::saveExr(cachedImage.string(), reference.image);
-      writeAtomically(cachedKey,
-                      fmt::format("{}\n{:.17g}\n", referenceKey(o), reference.noiseRelMse));
-    }
+    reference = renderOrCachedReference(o, dir, runner, report(0));
     done += referenceSpp;
   }
   if (o.referenceOnly) {
@@ -539,21 +595,8 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
     image::savePng(referencePreview.string(), image::encodeSrgb8(reference.image));
     written.add(referencePreview);
   }
-  std::vector<study::StudyRow> rows;
-  for (size_t i = first; i < end; ++i) {
-    const study::StudyPoint& point = points[i];
-    rows.push_back(runner.run(point, reference, report(done)));
-    done += point.spp;
-    if (point.seed == spec.firstSeed) {
-      // The linear image, and its preview for the report.
-      const std::string name = study::imageName(point.technique.label(), point.spp);
-      const auto exr = dir / "images" / (name + ".exr"), png = dir / "images" / (name + ".png");
-      image::saveExr(exr.string(), runner.lastImage());
-      written.add(exr);
-      image::savePng(png.string(), image::encodeSrgb8(runner.lastImage()));
-      written.add(png);
-    }
-  }
+  const std::vector<study::StudyRow> rows =
+      measurePoints(runner, points, first, end, spec, reference, dir, written, report, done);
   progress.finish();
   if (o.device.validation && device->validationMessageCount() > 0) {
     fmt::print(stderr, "error: {} validation message(s)\n", device->validationMessageCount());
@@ -564,22 +607,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   context.device = adapter.name;
   context.api = adapter.apiVersion;
   context.backend = device->backendName();
-  if (!o.points.empty()) {
-    // A part: its rows and where they were measured, for --gather.
-    const auto part = dir / "points" / fmt::format("points-{}-{}", first, end);
-    std::filesystem::create_directories(part.parent_path());
-    nlohmann::json where;
-    where["device"] = context.device;
-    where["api"] = context.api;
-    where["backend"] = context.backend;
-    where["commit"] = context.commit;
-    writeAtomically(part.string() + ".json", where.dump(2) + "\n");
-    writeAtomically(part.string() + ".csv", study::resultsCsv(rows));
-    written.keep();
-    fmt::print("wrote {}.csv ({} rows; `penumbra study ... --gather` makes the results)\n",
-               part.string(), rows.size());
-    return 0;
-  }
+  if (!o.points.empty()) return writePart(dir, context, first, end, rows, written);
   writeResults(o, dir, context, rows, written);
   return 0;
 }

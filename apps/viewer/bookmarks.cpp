@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "scene/json_reading.h"
-#include "util/error.h"
-#include "util/json_nesting.h"
-#include "util/log.h"
+#include "penumbra/scene/json_reading.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/json_nesting.h"
+#include "penumbra/util/log.h"
 
 namespace penumbra::viewer {
 namespace {

@@ -5,7 +5,7 @@
 // a screenshot taken before moving matches a headless render of the scene.
 #include <glm/glm.hpp>
 
-#include "scene/scene.h"
+#include "penumbra/scene/scene.h"
 
 namespace penumbra::viewer {
 

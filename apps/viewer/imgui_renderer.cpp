@@ -7,8 +7,8 @@
 #include <cstring>
 
 #include "imgui_shared.h"
+#include "penumbra/util/error.h"
 #include "penumbra_shaders.h"
-#include "util/error.h"
 
 namespace penumbra::viewer {
 

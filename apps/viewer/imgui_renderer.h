@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "rhi/rhi.h"
+#include "penumbra/rhi/rhi.h"
 
 namespace penumbra::viewer {
 

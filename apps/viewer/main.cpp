@@ -4,8 +4,8 @@
 #include <tuple>
 
 #include "cli_options.h"
-#include "util/error.h"
-#include "util/log.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
 #include "viewer_app.h"
 
 int main(int argc, char** argv) {
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   app.add_option("--render-scale", renderScale,
                  "Fixed render scale (0.125..1) instead of the automatic one")
       ->check(CLI::Range(0.125f, 1.0f));
-  // The settings table's settings (render/render_settings.h), as `render`
+  // The settings table's settings (batch/render_settings.h), as `render`
   // takes them; the menus and `set` change them later.
   settings.add(app, o.render);
   app.add_option("--frames-in-flight", o.framesInFlight,

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/camera_model.h"
+#include "penumbra/render/camera_model.h"
 
 namespace penumbra::viewer {
 

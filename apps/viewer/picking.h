@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "render/path_tracer.h"
-#include "scene/scene.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/scene.h"
 
 namespace penumbra::viewer {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "render/render_job.h"
-#include "util/error.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::viewer {
 

@@ -10,16 +10,16 @@
 
 #include "backend_factory.h"
 #include "backends/imgui_impl_glfw.h"
-#include "image/image_io.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/batch/render_output.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/render/image_size.h"
+#include "penumbra/rhi/fault_injection.h"
+#include "penumbra/scene/material_row.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
 #include "picking.h"
-#include "render/image_size.h"
-#include "render/render_job.h"
-#include "render/render_output.h"
-#include "rhi/fault_injection.h"
-#include "scene/material_row.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
-#include "util/log.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -421,22 +421,9 @@ std::vector<scene::Material> Viewer::uneditedMaterials() const {
   return loaded.materials;
 }
 
-void Viewer::renderFrame() {
-  uint32_t w = 0, h = 0;
-  targetSize(w, h);
-  if (w == 0 || h == 0) {  // minimised: nothing to present to
-    glfwWaitEventsTimeout(0.1);
-    return;
-  }
-  if (swapchain_ && (w != swapchain_->desc().width || h != swapchain_->desc().height)) {
-    swapchain_->resize(w, h);
-    resizeRender();
-  }
-  if (swapchain_) {
-    w = swapchain_->desc().width;
-    h = swapchain_->desc().height;
-  }
-  const bool capturing = !pendingCaptures_.empty() || !options_.recordDirectory.empty();
+// The display image (and the capture buffer screenshots read) at the
+// framebuffer's size.
+void Viewer::ensureDisplayTargets(uint32_t w, uint32_t h, bool capturing) {
   if (!displayTexture_ || displayTexture_->desc().width != w ||
       displayTexture_->desc().height != h) {
     device_->waitForIdle();  // frames in flight draw into the old one
@@ -458,20 +445,11 @@ void Viewer::renderFrame() {
     desc.debugName = "display capture";
     captureBuffer_ = device_->createBuffer(desc);
   }
-  rhi::ITexture* backBuffer = nullptr;
-  if (swapchain_) {
-    backBuffer = swapchain_->acquireNextImage();
-    if (!backBuffer) {
-      swapchain_->resize(w, h);
-      return;
-    }
-  }
-  // One list per frame slot: open() waits for the slot's previous frame,
-  // whose statistics are then ready. Path tracing, display and UI go into
-  // the same list, so the CPU runs up to framesInFlight frames ahead.
-  const size_t slot = frameNumber_ % frameLists_.size();
-  auto& list = *frameLists_[slot];
-  list.open();
+}
+
+// The statistics of the frame this slot held last: its GPU has finished it
+// (the slot's list was just opened).
+void Viewer::collectFrameStats(size_t slot) {
   if (frameQueries_[slot].samples > 0) {
     lastStats_ = tracer_->frameStats(frameQueries_[slot]);
     tracingMs_.push_back(lastStats_.gpuSeconds * 1e3);
@@ -490,7 +468,11 @@ void Viewer::renderFrame() {
     }
     timer.recorded[slot] = false;
   }
+}
 
+// The path tracer's frame: the guide buffers and the temporal denoiser's
+// sample sequence decided, then the frame recorded.
+void Viewer::recordPathTracing(rhi::ICommandList& list, size_t slot) {
   // The temporal denoiser integrates frames itself: until its history is
   // full, each frame starts a new mean; then the tracer accumulates.
   // The guide buffers cost about a tenth of a frame: written only while the
@@ -517,6 +499,42 @@ void Viewer::renderFrame() {
     tracer_->recordFrame(list, settings_.render.tracer, settings_.render.sppPerFrame,
                          frameQueries_[slot]);
   stillFrames_ += 1;
+}
+
+void Viewer::renderFrame() {
+  uint32_t w = 0, h = 0;
+  targetSize(w, h);
+  if (w == 0 || h == 0) {  // minimised: nothing to present to
+    glfwWaitEventsTimeout(0.1);
+    return;
+  }
+  if (swapchain_ && (w != swapchain_->desc().width || h != swapchain_->desc().height)) {
+    swapchain_->resize(w, h);
+    resizeRender();
+  }
+  if (swapchain_) {
+    w = swapchain_->desc().width;
+    h = swapchain_->desc().height;
+  }
+  const bool capturing = !pendingCaptures_.empty() || !options_.recordDirectory.empty();
+  ensureDisplayTargets(w, h, capturing);
+  rhi::ITexture* backBuffer = nullptr;
+  if (swapchain_) {
+    backBuffer = swapchain_->acquireNextImage();
+    if (!backBuffer) {
+      swapchain_->resize(w, h);
+      return;
+    }
+  }
+  // One list per frame slot: open() waits for the slot's previous frame,
+  // whose statistics are then ready. Path tracing, display and UI go into
+  // the same list, so the CPU runs up to framesInFlight frames ahead.
+  const size_t slot = frameNumber_ % frameLists_.size();
+  auto& list = *frameLists_[slot];
+  list.open();
+  collectFrameStats(slot);
+
+  recordPathTracing(list, slot);
   const rhi::TextureHandle& shown = recordDenoiser(list, slot);
   const render::DisplayChannels channels =
       settings_.view == ViewBuffer::Normal || settings_.view == ViewBuffer::Motion

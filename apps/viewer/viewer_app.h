@@ -14,13 +14,13 @@
 #include "camera_controller.h"
 #include "cli_options.h"
 #include "imgui_renderer.h"
-#include "render/denoiser.h"
-#include "render/display_pass.h"
-#include "render/path_tracer.h"
-#include "render/render_job.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/render/denoiser.h"
+#include "penumbra/render/display_pass.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/rhi/rhi.h"
+#include "penumbra/scene/scene.h"
 #include "render_scale.h"
-#include "rhi/rhi.h"
-#include "scene/scene.h"
 #include "script.h"
 #include "viewer_settings.h"
 #include "window.h"
@@ -70,6 +70,9 @@ class Viewer {
   const rhi::TextureHandle& recordDenoiser(rhi::ICommandList& list, size_t slot);
   void drawUi();
   void drawSceneMenu();
+  void ensureDisplayTargets(uint32_t width, uint32_t height, bool capturing);
+  void collectFrameStats(size_t slot);
+  void recordPathTracing(rhi::ICommandList& list, size_t slot);
   void drawAlgorithmMenu();
   void drawDisplayOptions();  // the viewer's own: vsync, render scale, sample cap
   void drawMaterialMenu();

@@ -6,7 +6,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::viewer {
 namespace {

@@ -7,11 +7,11 @@
 // the RenderJob recorded beside a screenshot (for `penumbra render --settings`).
 #include <string>
 
-#include "render/denoiser.h"
-#include "render/path_tracer.h"
-#include "render/render_job.h"
-#include "render/render_settings.h"
-#include "render/tone_mapping.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/batch/render_settings.h"
+#include "penumbra/render/denoiser.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/render/tone_mapping.h"
 
 namespace penumbra::viewer {
 
@@ -23,7 +23,7 @@ std::optional<ViewBuffer> parseViewBuffer(std::string_view name);
 const std::vector<ViewBuffer>& allViewBuffers();
 
 struct ViewerSettings {
-  // The settings table's (render/render_settings.h); one sample per pixel
+  // The settings table's (batch/render_settings.h); one sample per pixel
   // per frame by default: each frame must stay interactive.
   render::RenderSettings render = defaultRenderSettings();
   float renderScale = 1.0f;

@@ -2,11 +2,11 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
-#include "render/effect_set.h"
-#include "render/render_job.h"
-#include "scene/material_row.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/render/effect_set.h"
+#include "penumbra/scene/material_row.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 #include "viewer_app.h"
 
 namespace penumbra::viewer {
@@ -194,7 +194,7 @@ void Viewer::drawEnvironmentMenu() {
 }
 
 void Viewer::drawAlgorithmMenu() {
-  // The settings table's widgets (render/render_settings.h), group by group;
+  // The settings table's widgets (batch/render_settings.h), group by group;
   // the viewer's own display settings follow the table's display group.
   auto& r = settings_.render;
   std::optional<render::SettingGroup> group;

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

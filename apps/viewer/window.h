@@ -4,7 +4,7 @@
 // controller and Dear ImGui read.
 #include <string>
 
-#include "rhi/presentation.h"
+#include "penumbra/rhi/presentation.h"
 
 struct GLFWwindow;
 

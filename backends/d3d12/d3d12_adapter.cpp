@@ -2,7 +2,7 @@
 #include <fmt/format.h>
 
 #include "d3d12_backend.h"
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::d3d12 {
 namespace {

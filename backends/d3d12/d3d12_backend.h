@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "d3d12_common.h"
-#include "rhi/rhi.h"
-#include "rhi/root_signature_layout.h"
-#include "rhi/shader_table_records.h"
+#include "penumbra/rhi/rhi.h"
+#include "penumbra/rhi/root_signature_layout.h"
+#include "penumbra/rhi/shader_table_records.h"
 
 namespace penumbra::d3d12 {
 

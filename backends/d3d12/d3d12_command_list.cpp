@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "d3d12_backend.h"
-#include "rhi/shader_table_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/shader_table_layout.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::d3d12 {
 namespace {

@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "d3d12_backend.h"
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::d3d12 {
 

@@ -6,9 +6,9 @@
 
 #include "d3d12_backend.h"
 #include "d3d12_swapchain.h"
-#include "rhi/fault_injection.h"
-#include "util/error.h"
-#include "util/log.h"
+#include "penumbra/rhi/fault_injection.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
 
 namespace penumbra::d3d12 {
 namespace {

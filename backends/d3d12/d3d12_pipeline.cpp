@@ -8,8 +8,8 @@
 #include <list>
 
 #include "d3d12_backend.h"
-#include "rhi/binding_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/binding_layout.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::d3d12 {
 namespace {
@@ -205,6 +205,98 @@ D3D12GraphicsPipeline::D3D12GraphicsPipeline(D3D12Device& device, const rhi::Gra
   setName(pipeline_.Get(), desc.debugName);
 }
 
+namespace {
+
+// The subobjects of a ray-tracing state object and everything they point
+// at: every pointer in a subobject must stay valid until CreateStateObject,
+// so each piece lives in a std::list (stable element addresses) and the
+// subobject array is reserved up front (associations point into it).
+class StateObjectParts {
+ public:
+  explicit StateObjectParts(size_t maxSubobjects) { subobjects_.reserve(maxSubobjects); }
+
+  // A DXIL library with one entry point, exported as `name`.
+  void addLibrary(const D3D12_SHADER_BYTECODE& bytecode, const std::wstring& name,
+                  const std::wstring& entryPoint) {
+    auto& e = exports_.emplace_back();
+    e.Name = wide(name);
+    e.ExportToRename = wide(entryPoint);
+    e.Flags = D3D12_EXPORT_FLAG_NONE;
+    auto& lib = libraries_.emplace_back();
+    lib.DXILLibrary = bytecode;
+    lib.NumExports = 1;
+    lib.pExports = &e;
+    add(D3D12_STATE_SUBOBJECT_TYPE_DXIL_LIBRARY, &lib);
+  }
+  void addHitGroup(const std::wstring& name, D3D12_HIT_GROUP_TYPE type, LPCWSTR closestHit,
+                   LPCWSTR anyHit, LPCWSTR intersection) {
+    auto& hg = hitGroups_.emplace_back();
+    hg.HitGroupExport = wide(name);
+    hg.Type = type;
+    hg.ClosestHitShaderImport = closestHit;
+    hg.AnyHitShaderImport = anyHit;
+    hg.IntersectionShaderImport = intersection;
+    add(D3D12_STATE_SUBOBJECT_TYPE_HIT_GROUP, &hg);
+  }
+  // A local root signature and its association with the exports it serves.
+  void addLocalRootSignature(ID3D12RootSignature* signature, const std::vector<LPCWSTR>& names) {
+    auto& local = locals_.emplace_back();
+    local.pLocalRootSignature = signature;
+    add(D3D12_STATE_SUBOBJECT_TYPE_LOCAL_ROOT_SIGNATURE, &local);
+    auto& list = exportLists_.emplace_back(names);
+    auto& association = associations_.emplace_back();
+    association.pSubobjectToAssociate = &subobjects_.back();
+    association.NumExports = UINT(list.size());
+    association.pExports = list.data();
+    add(D3D12_STATE_SUBOBJECT_TYPE_SUBOBJECT_TO_EXPORTS_ASSOCIATION, &association);
+  }
+  void add(D3D12_STATE_SUBOBJECT_TYPE type, const void* desc) {
+    if (subobjects_.size() == subobjects_.capacity())
+      throw Error("d3d12: internal error: state subobjects outgrew their reservation");
+    subobjects_.push_back({type, desc});
+  }
+  D3D12_STATE_OBJECT_DESC desc() const {
+    D3D12_STATE_OBJECT_DESC stateObject{};
+    stateObject.Type = D3D12_STATE_OBJECT_TYPE_RAYTRACING_PIPELINE;
+    stateObject.NumSubobjects = UINT(subobjects_.size());
+    stateObject.pSubobjects = subobjects_.data();
+    return stateObject;
+  }
+
+ private:
+  LPCWSTR wide(const std::wstring& s) { return strings_.emplace_back(s).c_str(); }
+
+  std::list<D3D12_EXPORT_DESC> exports_;
+  std::list<D3D12_DXIL_LIBRARY_DESC> libraries_;
+  std::list<D3D12_HIT_GROUP_DESC> hitGroups_;
+  std::list<std::wstring> strings_;
+  std::list<std::vector<LPCWSTR>> exportLists_;
+  std::list<D3D12_SUBOBJECT_TO_EXPORTS_ASSOCIATION> associations_;
+  std::list<D3D12_LOCAL_ROOT_SIGNATURE> locals_;
+  std::vector<D3D12_STATE_SUBOBJECT> subobjects_;
+};
+
+// A local root signature of `bytes` of shader-record constants.
+ComPtr<ID3D12RootSignature> localRootSignature(D3D12Device& device, uint32_t bytes,
+                                               const std::string& pipelineName) {
+  const rhi::RootConstantsLayout constants = rhi::computeShaderRecordConstants(bytes);
+  D3D12_ROOT_PARAMETER1 parameter{};
+  parameter.ParameterType = D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS;
+  parameter.Constants.ShaderRegister = constants.shaderRegister;
+  parameter.Constants.RegisterSpace = constants.registerSpace;
+  parameter.Constants.Num32BitValues = constants.num32BitValues;
+  parameter.ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
+  D3D12_VERSIONED_ROOT_SIGNATURE_DESC rs{};
+  rs.Version = D3D_ROOT_SIGNATURE_VERSION_1_1;
+  rs.Desc_1_1.NumParameters = 1;
+  rs.Desc_1_1.pParameters = &parameter;
+  rs.Desc_1_1.Flags = D3D12_ROOT_SIGNATURE_FLAG_LOCAL_ROOT_SIGNATURE;
+  return createRootSignature(
+      device, rs, fmt::format("{} local root signature ({} bytes)", pipelineName, bytes));
+}
+
+}  // namespace
+
 // D3D12: CreateStateObject(RAYTRACING_PIPELINE) with one DXIL library per
 // shader (its entry point exported under the RHI export name), hit groups,
 // the shader config (payload/attribute sizes), the pipeline config (max
@@ -212,41 +304,29 @@ D3D12GraphicsPipeline::D3D12GraphicsPipeline(D3D12Device& device, const rhi::Gra
 // their export associations for shaders that read shader-record data.
 D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi::RayTracingPipelineDesc& desc)
     : device_(device), desc_(desc) {
-  // Every pointer in a subobject must stay valid until CreateStateObject:
-  // std::list keeps element addresses stable as it grows.
-  std::list<D3D12_EXPORT_DESC> exports;
-  std::list<D3D12_DXIL_LIBRARY_DESC> libraries;
-  std::list<D3D12_HIT_GROUP_DESC> hitGroups;
-  std::list<std::wstring> strings;
-  std::list<std::vector<LPCWSTR>> exportLists;
-  std::list<D3D12_SUBOBJECT_TO_EXPORTS_ASSOCIATION> associations;
-  std::vector<D3D12_STATE_SUBOBJECT> subobjects;
-  // Associations point at other subobjects: reserve so they never move.
-  subobjects.reserve(desc.shaders.size() + desc.hitGroups.size() * 2 + 16);
-  auto wide = [&](const std::wstring& s) { return strings.emplace_back(s).c_str(); };
+  // A library per shader, a subobject per hit group, three configurations, and
+  // at most a local root signature and its association per export.
+  const size_t exportCount = desc.shaders.size() + desc.hitGroups.size();
+  StateObjectParts parts(exportCount + 3 + 2 * exportCount);
+  // Each export's D3D12 name; two RHI names must not map to one.
+  auto claim = [&](const std::string& exportName) {
+    const std::wstring name = exportIdentifier(exportName);
+    for (const auto& [other, otherName] : d3dNames_)
+      if (otherName == name)
+        throw Error(fmt::format("d3d12: pipeline '{}': export names '{}' and '{}' collide",
+                                desc.debugName, other, exportName));
+    d3dNames_[exportName] = name;
+    return name;
+  };
 
   rhi::PipelineBindingLayout layout;
   std::map<std::string, uint32_t> shaderRecordBytes;
   for (const auto& shader : desc.shaders) {
     const D3D12_SHADER_BYTECODE bytecode = dxilOf(shader);
-    const std::wstring name = exportIdentifier(shader.exportName);
-    for (const auto& [other, otherName] : d3dNames_)
-      if (otherName == name)
-        throw Error(fmt::format("d3d12: pipeline '{}': export names '{}' and '{}' collide", desc.debugName, other,
-                                shader.exportName));
-    d3dNames_[shader.exportName] = name;
+    const std::wstring name = claim(shader.exportName);
     shaderRecordBytes[shader.exportName] = shader.shaderRecordBytes;
     rhi::mergeBindingLayout(layout, shader.bindingLayout, shader.exportName);
-
-    auto& e = exports.emplace_back();
-    e.Name = wide(name);
-    e.ExportToRename = wide(toWide(shader.entryPoint));
-    e.Flags = D3D12_EXPORT_FLAG_NONE;
-    auto& lib = libraries.emplace_back();
-    lib.DXILLibrary = bytecode;
-    lib.NumExports = 1;
-    lib.pExports = &e;
-    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_DXIL_LIBRARY, &lib});
+    parts.addLibrary(bytecode, name, toWide(shader.entryPoint));
     if (shader.stage == rhi::ShaderStage::RayGeneration || shader.stage == rhi::ShaderStage::Miss)
       localRootBytes_[shader.exportName] = shader.shaderRecordBytes;
   }
@@ -256,19 +336,11 @@ D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi:
     return shader.empty() ? nullptr : d3dNames_.at(shader).c_str();
   };
   for (const auto& group : desc.hitGroups) {
-    const std::wstring name = exportIdentifier(group.exportName);
-    for (const auto& [other, otherName] : d3dNames_)
-      if (otherName == name)
-        throw Error(fmt::format("d3d12: pipeline '{}': export name '{}' used twice (as '{}')", desc.debugName,
-                                group.exportName, other));
-    d3dNames_[group.exportName] = name;
-    auto& hg = hitGroups.emplace_back();
-    hg.HitGroupExport = wide(name);
-    hg.Type = group.isProcedural ? D3D12_HIT_GROUP_TYPE_PROCEDURAL_PRIMITIVE : D3D12_HIT_GROUP_TYPE_TRIANGLES;
-    hg.ClosestHitShaderImport = import(group.closestHit);
-    hg.AnyHitShaderImport = import(group.anyHit);
-    hg.IntersectionShaderImport = import(group.intersection);
-    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_HIT_GROUP, &hg});
+    const std::wstring name = claim(group.exportName);
+    parts.addHitGroup(name,
+                      group.isProcedural ? D3D12_HIT_GROUP_TYPE_PROCEDURAL_PRIMITIVE
+                                         : D3D12_HIT_GROUP_TYPE_TRIANGLES,
+                      import(group.closestHit), import(group.anyHit), import(group.intersection));
     // A hit group's record serves all its shaders: the largest of theirs.
     uint32_t bytes = 0;
     for (const auto* s : {&group.closestHit, &group.anyHit, &group.intersection})
@@ -277,50 +349,25 @@ D3D12RayTracingPipeline::D3D12RayTracingPipeline(D3D12Device& device, const rhi:
   }
 
   D3D12_RAYTRACING_SHADER_CONFIG shaderConfig{desc.maxPayloadBytes, desc.maxAttributeBytes};
-  subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_RAYTRACING_SHADER_CONFIG, &shaderConfig});
+  parts.add(D3D12_STATE_SUBOBJECT_TYPE_RAYTRACING_SHADER_CONFIG, &shaderConfig);
   D3D12_RAYTRACING_PIPELINE_CONFIG pipelineConfig{desc.maxRecursionDepth};
-  subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_RAYTRACING_PIPELINE_CONFIG, &pipelineConfig});
+  parts.add(D3D12_STATE_SUBOBJECT_TYPE_RAYTRACING_PIPELINE_CONFIG, &pipelineConfig);
 
   rootSignature_ = std::make_unique<D3D12RootSignature>(device_, std::move(layout), desc.debugName);
   D3D12_GLOBAL_ROOT_SIGNATURE global{rootSignature_->handle()};
-  subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_GLOBAL_ROOT_SIGNATURE, &global});
+  parts.add(D3D12_STATE_SUBOBJECT_TYPE_GLOBAL_ROOT_SIGNATURE, &global);
 
   // Local root signatures: one per distinct record size, associated with the
   // raygen/miss shaders and hit groups whose records carry that much data.
   std::map<uint32_t, std::vector<LPCWSTR>> exportsBySize;
   for (const auto& [exportName, bytes] : localRootBytes_)
     if (bytes > 0) exportsBySize[bytes].push_back(d3dNames_.at(exportName).c_str());
-  std::list<D3D12_LOCAL_ROOT_SIGNATURE> locals;
   for (auto& [bytes, names] : exportsBySize) {
-    const rhi::RootConstantsLayout constants = rhi::computeShaderRecordConstants(bytes);
-    D3D12_ROOT_PARAMETER1 parameter{};
-    parameter.ParameterType = D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS;
-    parameter.Constants.ShaderRegister = constants.shaderRegister;
-    parameter.Constants.RegisterSpace = constants.registerSpace;
-    parameter.Constants.Num32BitValues = constants.num32BitValues;
-    parameter.ShaderVisibility = D3D12_SHADER_VISIBILITY_ALL;
-    D3D12_VERSIONED_ROOT_SIGNATURE_DESC rs{};
-    rs.Version = D3D_ROOT_SIGNATURE_VERSION_1_1;
-    rs.Desc_1_1.NumParameters = 1;
-    rs.Desc_1_1.pParameters = &parameter;
-    rs.Desc_1_1.Flags = D3D12_ROOT_SIGNATURE_FLAG_LOCAL_ROOT_SIGNATURE;
-    localRootSignatures_.push_back(
-        createRootSignature(device_, rs, fmt::format("{} local root signature ({} bytes)", desc.debugName, bytes)));
-    auto& local = locals.emplace_back();
-    local.pLocalRootSignature = localRootSignatures_.back().Get();
-    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_LOCAL_ROOT_SIGNATURE, &local});
-    auto& list = exportLists.emplace_back(names);
-    auto& association = associations.emplace_back();
-    association.pSubobjectToAssociate = &subobjects.back();
-    association.NumExports = UINT(list.size());
-    association.pExports = list.data();
-    subobjects.push_back({D3D12_STATE_SUBOBJECT_TYPE_SUBOBJECT_TO_EXPORTS_ASSOCIATION, &association});
+    localRootSignatures_.push_back(localRootSignature(device_, bytes, desc.debugName));
+    parts.addLocalRootSignature(localRootSignatures_.back().Get(), names);
   }
 
-  D3D12_STATE_OBJECT_DESC stateObject{};
-  stateObject.Type = D3D12_STATE_OBJECT_TYPE_RAYTRACING_PIPELINE;
-  stateObject.NumSubobjects = UINT(subobjects.size());
-  stateObject.pSubobjects = subobjects.data();
+  const D3D12_STATE_OBJECT_DESC stateObject = parts.desc();
   device_.checkDevice(device_.handle()->CreateStateObject(&stateObject, IID_PPV_ARGS(&stateObject_)),
                       "CreateStateObject (ray-tracing pipeline; run with --validation for the reason)");
   setName(stateObject_.Get(), desc.debugName);

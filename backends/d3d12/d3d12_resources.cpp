@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "d3d12_backend.h"
-#include "rhi/fault_injection.h"
-#include "rhi/shader_table_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/fault_injection.h"
+#include "penumbra/rhi/shader_table_layout.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::d3d12 {
 

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::d3d12 {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "d3d12_backend.h"
-#include "rhi/presentation.h"
+#include "penumbra/rhi/presentation.h"
 
 namespace penumbra::d3d12 {
 

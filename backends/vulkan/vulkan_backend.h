@@ -7,8 +7,8 @@
 #include <memory>
 #include <vector>
 
-#include "rhi/rhi.h"
-#include "rhi/shader_table_records.h"
+#include "penumbra/rhi/rhi.h"
+#include "penumbra/rhi/shader_table_records.h"
 #include "vulkan_functions.h"
 
 namespace penumbra::vk {

@@ -2,8 +2,8 @@
 
 #include <cstring>
 
-#include "rhi/shader_table_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/shader_table_layout.h"
+#include "penumbra/util/error.h"
 #include "vulkan_backend.h"
 
 namespace penumbra::vk {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string_view>
 
-#include "rhi/fault_injection.h"
-#include "util/error.h"
+#include "penumbra/rhi/fault_injection.h"
+#include "penumbra/util/error.h"
 #include "vulkan_backend.h"
 #include "vulkan_surface.h"
 #include "vulkan_swapchain.h"
@@ -21,18 +21,15 @@ bool hasDeviceExtension(VkPhysicalDevice physical, const char* name) {
     if (std::string_view(e.extensionName) == name) return true;
   return false;
 }
-}  // namespace
-
-VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalDevice physicalDevice,
-                           rhi::AdapterInfo adapter, const rhi::NativeWindow& presentWindow)
-    : instance_(std::move(instance)), physicalDevice_(physicalDevice), adapter_(std::move(adapter)) {
-  validationBaseline_ = instance_->validationMessages();
+// The queue family the device uses: ray tracing runs on any queue with
+// compute; the universal queue is preferred, which presentation (the
+// viewer) will want too.
+uint32_t chooseQueueFamily(VkPhysicalDevice physicalDevice, const std::string& adapterName,
+                           VkQueueFamilyProperties& chosen) {
   uint32_t familyCount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
   std::vector<VkQueueFamilyProperties> families(familyCount);
-  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, families.data());
-  // Ray tracing runs on any queue with compute; prefer the universal queue,
-  // which presentation (the viewer) will want too.
+  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, families.data());
   int family = -1;
   for (uint32_t i = 0; i < familyCount; ++i) {
     const auto flags = families[i].queueFlags;
@@ -40,12 +37,61 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
       if (family < 0 || !(families[family].queueFlags & VK_QUEUE_GRAPHICS_BIT)) family = int(i);
     }
   }
-  if (family < 0) throw Error(fmt::format("vulkan: {} has no compute queue", adapter_.name));
-  queueFamily_ = uint32_t(family);
+  if (family < 0) throw Error(fmt::format("vulkan: {} has no compute queue", adapterName));
+  chosen = families[size_t(family)];
+  return uint32_t(family);
+}
+
+// One queue does everything (ray tracing, the UI, presentation), so the
+// chosen family must also present to this window.
+void requirePresentation(VkInstance instance, VkPhysicalDevice physicalDevice, uint32_t family,
+                         const rhi::NativeWindow& window, const std::string& adapterName) {
+  VulkanSurface probe(instance, window);
+  VkBool32 supported = VK_FALSE;
+  check(vkGetPhysicalDeviceSurfaceSupportKHR(physicalDevice, family, probe.handle(), &supported),
+        "vkGetPhysicalDeviceSurfaceSupportKHR");
+  if (!supported)
+    throw Error(fmt::format("vulkan: the queue family {} of {} cannot present to this {} window",
+                            family, adapterName, rhi::windowSystemName(window.system)));
+}
+
+// Bindless texture arrays (rhi::BindingLayoutItem::arraySize == 0) index
+// runtime-sized arrays of sampled images and samplers with nonuniformEXT,
+// and bind only the elements a binding set fills.
+void requireBindlessFeatures(VkPhysicalDevice physicalDevice, const std::string& adapterName) {
+  VkPhysicalDeviceVulkan12Features supported12{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  supported.pNext = &supported12;
+  vkGetPhysicalDeviceFeatures2(physicalDevice, &supported);
+  std::string missing;
+  for (auto [have, name] :
+       {std::pair{supported12.runtimeDescriptorArray, "runtimeDescriptorArray"},
+        std::pair{supported12.shaderSampledImageArrayNonUniformIndexing,
+                  "shaderSampledImageArrayNonUniformIndexing"},
+        std::pair{supported12.descriptorBindingPartiallyBound, "descriptorBindingPartiallyBound"}})
+    if (!have) missing += (missing.empty() ? "" : ", ") + std::string(name);
+  if (!missing.empty())
+    throw Error(
+        fmt::format("vulkan: {} lacks the descriptor-indexing features bindless textures need: {}",
+                    adapterName, missing));
+}
+}  // namespace
+
+VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance,
+                           VkPhysicalDevice physicalDevice, rhi::AdapterInfo adapter,
+                           const rhi::NativeWindow& presentWindow)
+    : instance_(std::move(instance)),
+      physicalDevice_(physicalDevice),
+      adapter_(std::move(adapter)) {
+  validationBaseline_ = instance_->validationMessages();
+  VkQueueFamilyProperties familyProperties{};
+  const uint32_t family = chooseQueueFamily(physicalDevice_, adapter_.name, familyProperties);
+  queueFamily_ = family;
   shaderStages_ = VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-  if (families[family].queueFlags & VK_QUEUE_GRAPHICS_BIT)
+  if (familyProperties.queueFlags & VK_QUEUE_GRAPHICS_BIT)
     shaderStages_ |= VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-  timestampValidBits_ = families[family].timestampValidBits;
+  timestampValidBits_ = familyProperties.timestampValidBits;
 
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(physicalDevice_, &props);
@@ -74,14 +120,8 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
     // queue chosen above must also present to this window.
     if (!hasDeviceExtension(physicalDevice_, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
       throw Error(fmt::format("vulkan: {} cannot present (no VK_KHR_swapchain)", adapter_.name));
-    VulkanSurface probe(instance_->handle(), presentWindow);
-    VkBool32 supported = VK_FALSE;
-    check(vkGetPhysicalDeviceSurfaceSupportKHR(physicalDevice_, queueFamily_, probe.handle(), &supported),
-          "vkGetPhysicalDeviceSurfaceSupportKHR");
-    if (!supported)
-      throw Error(fmt::format("vulkan: the queue family {} of {} cannot present to this {} window",
-                              queueFamily_, adapter_.name,
-                              rhi::windowSystemName(presentWindow.system)));
+    requirePresentation(instance_->handle(), physicalDevice_, queueFamily_, presentWindow,
+                        adapter_.name);
     extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     canPresent_ = true;
   }
@@ -95,20 +135,7 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   // Bindless texture arrays (rhi::BindingLayoutItem::arraySize == 0) index
   // runtime-sized arrays of sampled images and samplers with nonuniformEXT,
   // and bind only the elements a binding set fills.
-  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  supported.pNext = &supported12;
-  vkGetPhysicalDeviceFeatures2(physicalDevice_, &supported);
-  std::string missing;
-  for (auto [have, name] : {std::pair{supported12.runtimeDescriptorArray, "runtimeDescriptorArray"},
-                            std::pair{supported12.shaderSampledImageArrayNonUniformIndexing,
-                                      "shaderSampledImageArrayNonUniformIndexing"},
-                            std::pair{supported12.descriptorBindingPartiallyBound,
-                                      "descriptorBindingPartiallyBound"}})
-    if (!have) missing += (missing.empty() ? "" : ", ") + std::string(name);
-  if (!missing.empty())
-    throw Error(fmt::format("vulkan: {} lacks the descriptor-indexing features bindless textures need: {}",
-                            adapter_.name, missing));
+  requireBindlessFeatures(physicalDevice_, adapter_.name);
   VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   v12.bufferDeviceAddress = VK_TRUE;
   v12.runtimeDescriptorArray = VK_TRUE;
@@ -121,7 +148,7 @@ VulkanDevice::VulkanDevice(std::shared_ptr<VulkanInstance> instance, VkPhysicalD
   // only createGraphicsPipeline fails.
   VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamicRendering{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
-  if ((families[family].queueFlags & VK_QUEUE_GRAPHICS_BIT) &&
+  if ((familyProperties.queueFlags & VK_QUEUE_GRAPHICS_BIT) &&
       hasDeviceExtension(physicalDevice_, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME)) {
     VkPhysicalDeviceDynamicRenderingFeaturesKHR supportedDynamic{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};

@@ -16,7 +16,7 @@
 
 #include <mutex>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::vk {
 #define PENUMBRA_VK_DEFINE(name) PFN_##name name = nullptr;

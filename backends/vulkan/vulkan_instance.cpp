@@ -4,8 +4,8 @@
 #include <map>
 #include <mutex>
 
-#include "util/error.h"
-#include "util/log.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
 #include "vulkan_backend.h"
 #include "vulkan_surface.h"
 

@@ -4,9 +4,9 @@
 
 #include <cstring>
 
-#include "rhi/binding_layout.h"
-#include "rhi/shader_table_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/binding_layout.h"
+#include "penumbra/rhi/shader_table_layout.h"
+#include "penumbra/util/error.h"
 #include "vulkan_backend.h"
 
 namespace penumbra::vk {

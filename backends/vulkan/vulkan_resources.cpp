@@ -1,9 +1,9 @@
 // Buffers, textures and acceleration structures.
 #include <fmt/format.h>
 
-#include "rhi/fault_injection.h"
-#include "rhi/shader_table_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/fault_injection.h"
+#include "penumbra/rhi/shader_table_layout.h"
+#include "penumbra/util/error.h"
 #include "vulkan_backend.h"
 
 namespace penumbra::vk {

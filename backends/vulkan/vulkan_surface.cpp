@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 // The window-system structs and function types. Only the types are needed
 // (functions come from the loader at run time), so Wayland's are declared

@@ -5,7 +5,7 @@
 // Bool, Status) would otherwise leak into every backend file.
 #include <vector>
 
-#include "rhi/presentation.h"
+#include "penumbra/rhi/presentation.h"
 #include "vulkan_functions.h"
 
 namespace penumbra::vk {

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "util/error.h"
-#include "util/log.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
 
 namespace penumbra::vk {
 

@@ -3,7 +3,7 @@
 #include <memory>
 #include <vector>
 
-#include "rhi/presentation.h"
+#include "penumbra/rhi/presentation.h"
 #include "vulkan_backend.h"
 #include "vulkan_surface.h"
 

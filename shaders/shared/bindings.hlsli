@@ -1,5 +1,5 @@
 // The register-to-binding shift table, defined here once: HLSL register(tN)
-// is Vulkan binding PENUMBRA_T(N), and so on (engine/rhi/register_shifts.h
+// is Vulkan binding PENUMBRA_T(N), and so on (engine/penumbra/rhi/register_shifts.h
 // reads the same macros). Plain macros, so C++, GLSL layout qualifiers and
 // HLSL attributes can all use them.
 #ifndef PENUMBRA_BINDINGS_HLSLI
@@ -9,11 +9,11 @@
 #define PENUMBRA_U(n) (64 + (n))
 #define PENUMBRA_S(n) (96 + (n))
 
-// D3D12 root constants (engine/rhi/root_signature_layout.h): the push-constant
+// D3D12 root constants (engine/penumbra/rhi/root_signature_layout.h): the push-constant
 // block of a DXR/compute entry point and a shader's local record data. HLSL:
 //   [[vk::push_constant]] ConstantBuffer<T> gPush : PENUMBRA_PUSH_CONSTANTS;
 //   [[vk::shader_record_ext]] ConstantBuffer<R> gRecord : PENUMBRA_SHADER_RECORD;
-// The spaces are numbers here once; engine/rhi/register_shifts.h gives them
+// The spaces are numbers here once; engine/penumbra/rhi/register_shifts.h gives them
 // to the D3D12 root signature (root_signature_layout.h), so the two sides
 // cannot disagree.
 #define PENUMBRA_PUSH_CONSTANT_SPACE 900

@@ -7,11 +7,11 @@
 
 // `filmPosition` is in pixels, (0,0) the top-left corner of the image.
 float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
-  float tanHalfFov = c.cameraPosition.w;
-  float aspect = c.cameraRight.w;
-  float sx = (2.0 * filmPosition.x / float(c.image.x) - 1.0) * tanHalfFov * aspect;
-  float sy = (1.0 - 2.0 * filmPosition.y / float(c.image.y)) * tanHalfFov;
-  return normalize(c.cameraForward.xyz + sx * c.cameraRight.xyz + sy * c.cameraUp.xyz);
+  float tanHalfFov = c.camera.tanHalfFovY;
+  float aspect = c.camera.aspectRatio;
+  float sx = (2.0 * filmPosition.x / float(c.width) - 1.0) * tanHalfFov * aspect;
+  float sy = (1.0 - 2.0 * filmPosition.y / float(c.height)) * tanHalfFov;
+  return normalize(c.camera.forward + sx * c.camera.right + sy * c.camera.up);
 }
 
 // Stratified jittered position of sample `index` of `count` in one frame: the
@@ -29,10 +29,10 @@ float2 jitteredPixelSample(uint index, uint count, float u0, float u1) {
 }
 
 // The random stream of the pixel's sample `sampleIndex` (counted over the
-// whole accumulation), from the sampler FrameConstants.sampling.w names.
+// whole accumulation), from the sampler FrameConstants.flags names.
 Rng sampleRng(FrameConstants c, uint2 pixel, uint sampleIndex) {
-  uint kind = (c.sampling.w & PT_FLAG_SOBOL) != 0u ? RNG_SAMPLER_SOBOL : RNG_SAMPLER_RANDOM;
-  return rngCreate(pixel, sampleIndex, c.sampling.x, kind);
+  uint kind = (c.flags & PT_FLAG_SOBOL) != 0u ? RNG_SAMPLER_SOBOL : RNG_SAMPLER_RANDOM;
+  return rngCreate(pixel, sampleIndex, c.seed, kind);
 }
 
 // Position in the pixel of sample `index` of the `count` this frame takes:
@@ -60,23 +60,23 @@ float2 samplePolygon(uint sides, float u0, float u1) {
 }
 
 // The camera ray through `filmPosition`: the pinhole's, or with a thin lens
-// (cameraUp.w > 0) from a point of the aperture (a disk, or a polygon of
-// FrameConstants.lights.w's blade count) towards where the
+// (camera.apertureRadius > 0) from a point of the aperture (a disk, or a polygon of
+// FrameConstants.sceneFlags' blade count) towards where the
 // pinhole ray meets the plane in focus, so that plane stays sharp and
 // everything nearer or farther blurs by its circle of confusion. A pinhole
 // draws no random numbers, so its images do not change with the lens code.
 void cameraRay(FrameConstants c, float2 filmPosition, inout Rng rng, out float3 origin,
                out float3 direction) {
-  origin = c.cameraPosition.xyz;
+  origin = c.camera.position;
   direction = cameraRayDirection(c, filmPosition);
-  float lensRadius = c.cameraUp.w;
+  float lensRadius = c.camera.apertureRadius;
   if (lensRadius > 0.0) {
-    float3 inFocus = origin + direction * (c.cameraForward.w / dot(direction, c.cameraForward.xyz));
+    float3 inFocus = origin + direction * (c.camera.focusDistance / dot(direction, c.camera.forward));
     float u0 = rngNext(rng);
     float u1 = rngNext(rng);
-    uint blades = (c.lights.w >> PT_SCENE_BLADES_SHIFT) & 255u;
+    uint blades = (c.sceneFlags >> PT_SCENE_BLADES_SHIFT) & 255u;
     float2 lens = (blades >= 3u ? samplePolygon(blades, u0, u1) : sampleConcentricDisk(u0, u1)) * lensRadius;
-    origin += lens.x * c.cameraRight.xyz + lens.y * c.cameraUp.xyz;
+    origin += lens.x * c.camera.right + lens.y * c.camera.up;
     direction = normalize(inFocus - origin);
   }
 }

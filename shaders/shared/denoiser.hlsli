@@ -23,17 +23,17 @@
 #define PENUMBRA_DENOISER_HLSLI
 #include "math.hlsli"
 
-bool insideImage(DenoiseFrame f, int2 p) { return p.x >= 0 && p.y >= 0 && p.x < int(f.image.x) && p.y < int(f.image.y); }
+bool insideImage(DenoiseFrame f, int2 p) { return p.x >= 0 && p.y >= 0 && p.x < int(f.width) && p.y < int(f.height); }
 
 // The albedo divided out, floored so black surfaces neither divide by zero
 // nor lose what they reflect.
-float3 demodulationAlbedo(DenoiseFrame f, float3 albedo) { return max(albedo, splat3(f.weights.w)); }
+float3 demodulationAlbedo(DenoiseFrame f, float3 albedo) { return max(albedo, splat3(f.albedoFloor)); }
 
 // Whether pixel p has illumination to filter: it saw a surface, and one
 // that reflects (a black surface, e.g. an emitter's, shows its emission alone,
 // and an illumination of 0 there would darken its neighbours).
 bool filterableAlbedo(DenoiseFrame f, int2 p, float3 albedo) {
-  return loadNormalDepth(p).w > 0.0 && luminance(albedo) > f.weights.w;
+  return loadNormalDepth(p).w > 0.0 && luminance(albedo) > f.albedoFloor;
 }
 // By this frame's guides (the temporal pass) or the integrated ones (after).
 bool filterableNow(DenoiseFrame f, int2 p) { return filterableAlbedo(f, p, loadAlbedo(p).xyz); }
@@ -64,22 +64,22 @@ float3 clampFirefly(DenoiseFrame f, int2 p, float3 illumination) {
 // Where the surface seen through pixel p lies (its unfolded, "virtual"
 // position for reflections), from the linear view depth.
 float3 virtualPosition(DenoiseFrame f, int2 p, float depth) {
-  float2 ndc = (float2(p) + float2(0.5, 0.5)) / float2(f.image.xy) * 2.0 - float2(1.0, 1.0);
-  float tanHalfFov = f.cameraPosition.w;
-  float3 d = f.cameraForward.xyz + ndc.x * tanHalfFov * f.cameraRight.w * f.cameraRight.xyz -
-             ndc.y * tanHalfFov * f.cameraUp.xyz;
-  return f.cameraPosition.xyz + d * depth;  // d's forward component is 1
+  float2 ndc = (float2(p) + float2(0.5, 0.5)) / float2(float(f.width), float(f.height)) * 2.0 - float2(1.0, 1.0);
+  float tanHalfFov = f.camera.tanHalfFovY;
+  float3 d = f.camera.forward + ndc.x * tanHalfFov * f.camera.aspectRatio * f.camera.right -
+             ndc.y * tanHalfFov * f.camera.up;
+  return f.camera.position + d * depth;  // d's forward component is 1
 }
 
 // The previous camera's film position (pixels) of a world point, and its
 // linear view depth there (z; <= 0 behind that camera).
 float3 projectToPrevious(DenoiseFrame f, float3 world) {
-  float3 v = world - f.previousPosition.xyz;
-  float z = dot(v, f.previousForward.xyz);
-  float tanHalfFov = f.cameraPosition.w;  // the field of view does not change between frames
-  float sx = dot(v, f.previousRight.xyz) / (z * tanHalfFov * f.cameraRight.w);
-  float sy = dot(v, f.previousUp.xyz) / (z * tanHalfFov);
-  return float3((sx + 1.0) * 0.5 * float(f.image.x), (1.0 - sy) * 0.5 * float(f.image.y), z);
+  float3 v = world - f.previousCamera.position;
+  float z = dot(v, f.previousCamera.forward);
+  float tanHalfFov = f.camera.tanHalfFovY;  // the field of view does not change between frames
+  float sx = dot(v, f.previousCamera.right) / (z * tanHalfFov * f.camera.aspectRatio);
+  float sy = dot(v, f.previousCamera.up) / (z * tanHalfFov);
+  return float3((sx + 1.0) * 0.5 * float(f.width), (1.0 - sy) * 0.5 * float(f.height), z);
 }
 
 float3 unitOrZero(float3 v) {
@@ -99,7 +99,7 @@ void denoiseTemporal(int2 p, uint flags) {
   // albedo's luminance: the guide holds those of radiance - emission).
   float inverseAlbedo = 1.0 / luminance(albedo);
   float2 sampleMoments = loadSampleMoments(p).xy * float2(inverseAlbedo, inverseAlbedo * inverseAlbedo);
-  float samples = float(f.image.z);
+  float samples = float(f.samplesPerPixel);
 
   float3 integrated = illumination;
   float3 currentAlbedo = loadAlbedo(p).xyz;
@@ -174,7 +174,7 @@ void denoiseTemporal(int2 p, uint flags) {
       }
       if (sumWeight > 1e-4) {
         float3 historyMoments = sumMoments / sumWeight;
-        historyLength = min(historyMoments.z + 1.0, float(f.image.w));
+        historyLength = min(historyMoments.z + 1.0, float(f.maxHistory));
         // A running mean until the history is full, then an exponential one.
         float alpha = 1.0 / historyLength;
         integrated = lerp(sumIllumination / sumWeight, illumination, alpha);
@@ -202,14 +202,14 @@ void denoiseTemporal(int2 p, uint flags) {
 float edgeWeight(DenoiseFrame f, float depthP, float2 gradient, float3 normalP, float luminanceP,
                  float sigmaLuminance, float4 ndQ, float luminanceQ, float2 offset) {
   float w = 1.0;
-  if (f.weights.x > 0.0)
-    w *= exp(-abs(ndQ.w - depthP) / (f.weights.x * abs(dot(gradient, offset)) + 1e-3 * depthP + 1e-8));
+  if (f.depthSigma > 0.0)
+    w *= exp(-abs(ndQ.w - depthP) / (f.depthSigma * abs(dot(gradient, offset)) + 1e-3 * depthP + 1e-8));
   // A pixel whose samples' normals cancel (both sides of a thin surface) has
   // no normal to compare.
   float3 normalQ = unitOrZero(ndQ.xyz);
-  if (f.weights.y > 0.0 && dot(normalP, normalP) > 0.0 && dot(normalQ, normalQ) > 0.0)
-    w *= pow(max(0.0, dot(normalP, normalQ)), f.weights.y);
-  if (f.weights.z > 0.0) w *= exp(-abs(luminanceP - luminanceQ) / sigmaLuminance);
+  if (f.normalExponent > 0.0 && dot(normalP, normalP) > 0.0 && dot(normalQ, normalQ) > 0.0)
+    w *= pow(max(0.0, dot(normalP, normalQ)), f.normalExponent);
+  if (f.luminanceSigma > 0.0) w *= exp(-abs(luminanceP - luminanceQ) / sigmaLuminance);
   return w;
 }
 
@@ -281,7 +281,7 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
       blurredVariance += w * loadIllumination(q).w;
       blurWeight += w;
     }
-  float sigmaLuminance = f.weights.z * sqrt(max(blurredVariance / blurWeight, 0.0)) + 1e-10;
+  float sigmaLuminance = f.luminanceSigma * sqrt(max(blurredVariance / blurWeight, 0.0)) + 1e-10;
   float3 normal = unitOrZero(nd.xyz);
   float2 gradient = depthGradient(f, p, nd.w);
   float luminanceP = luminance(centre.xyz);

@@ -1,10 +1,14 @@
-// Host/shader interface of the denoiser (engine/render/denoiser.h): one
+// Host/shader interface of the denoiser (engine/penumbra/render/denoiser.h): one
 // compute shader (denoise.comp) whose push constant selects the pass, the
 // images it reads and writes, and the per-frame constants.
 #ifndef PENUMBRA_DENOISER_SHARED_H
 #define PENUMBRA_DENOISER_SHARED_H
 
+#include "camera_shared.h"  // its own namespace: before this file's
+
 #ifdef __cplusplus
+#include <cstddef>  // offsetof
+
 #include "shader_types.h"
 namespace penumbra::gpu {
 #endif
@@ -56,21 +60,21 @@ struct DenoisePush {
 
 // A camera as FrameConstants holds it (path tracer's recordFrame).
 struct DenoiseFrame {
-  float4 cameraPosition;  // xyz; w tan(vertical fov / 2)
-  float4 cameraRight;     // w aspect
-  float4 cameraUp;
-  float4 cameraForward;
-  float4 previousPosition;  // the camera of the history
-  float4 previousRight;
-  float4 previousUp;
-  float4 previousForward;
-  uint4 image;            // x width, y height, z samples per pixel in the inputs, w maximum history length
-  float4 weights;         // x depth sigma, y normal exponent, z luminance sigma, w albedo floor
+  CameraData camera;
+  CameraData previousCamera;  // the camera of the history
+  uint width;
+  uint height;
+  uint samplesPerPixel;  // in the inputs
+  uint maxHistory;       // frames of history at most
+  float depthSigma;      // scale on the depth gradient (SVGF's sigma_z); 0: off
+  float normalExponent;  // (n . n_q)^exponent (SVGF's sigma_n); 0: off
+  float luminanceSigma;  // luminance difference in standard deviations (SVGF's sigma_l); 0: off
+  float albedoFloor;     // demodulation never divides by less
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DenoisePush) == 16);
-static_assert(sizeof(DenoiseFrame) == 160);
+static_assert(sizeof(DenoiseFrame) == 160 && offsetof(DenoiseFrame, width) == 128);
 }  // namespace penumbra::gpu
 #endif
 #endif

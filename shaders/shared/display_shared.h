@@ -1,5 +1,5 @@
-// Host/shader interface of the two tone-mapping passes (engine/render/
-// tonemapper.h: RGBA8 pixels for PNG files; engine/render/display_pass.h: the
+// Host/shader interface of the two tone-mapping passes (engine/penumbra/render/
+// tonemapper.h: RGBA8 pixels for PNG files; engine/penumbra/render/display_pass.h: the
 // viewer's window image): their registers and push-constant blocks, read by
 // the C++ and by shaders/stages/tonemap.comp and display.comp.
 #ifndef PENUMBRA_DISPLAY_SHARED_H

@@ -4,7 +4,7 @@
 // its pipeline at all. Without PT_EFFECTS a shader holds every effect.
 //
 // Plain integers, not 1u: preprocessor #if expressions use them too, in GLSL,
-// HLSL and C++. The host derives the set in engine/render/effect_set.cpp; a bit
+// HLSL and C++. The host derives the set in engine/penumbra/render/effect_set.cpp; a bit
 // may be off only if no material or light of the scene could use the code.
 #ifndef PENUMBRA_EFFECTS_H
 #define PENUMBRA_EFFECTS_H

@@ -25,7 +25,7 @@
 // none of the environment's code is in a scene's pipeline that has none.
 bool environmentPresent(FrameConstants c) {
 #if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
-  return (c.lights.w & PT_SCENE_ENVIRONMENT) != 0u;
+  return (c.sceneFlags & PT_SCENE_ENVIRONMENT) != 0u;
 #else
   return false;
 #endif

@@ -1,4 +1,4 @@
-// Implicit surfaces (engine/scene/implicit_object.h) on the GPU: the world
+// Implicit surfaces (engine/penumbra/scene/implicit_object.h) on the GPU: the world
 // ray moved into an object's space, analytic intersections (sphere, plane,
 // box) and the SurfaceHit a closest-hit shader reports. Sphere tracing of the
 // SDF kinds is in sphere_tracing.hlsli.

@@ -19,7 +19,7 @@ LightSample sampleEmissiveTriangles(uint count, float u0, float u1, float u2) {
   uint hi = count - 1u;
   while (lo < hi) {
     uint mid = (lo + hi) / 2u;
-    if (loadEmissiveTriangle(mid).radiance.w > u0)
+    if (loadEmissiveTriangle(mid).cumulativeProbability > u0)
       hi = mid;
     else
       lo = mid + 1u;
@@ -27,24 +27,24 @@ LightSample sampleEmissiveTriangles(uint count, float u0, float u1, float u2) {
   EmissiveTriangle tri = loadEmissiveTriangle(lo);
   float2 b = sampleUniformTriangle(u1, u2);
   LightSample s;
-  s.position = barycentricInterpolate(tri.p0.xyz, tri.p1.xyz, tri.p2.xyz, b);
-  s.normal = normalize(cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz));
-  s.radiance = tri.radiance.xyz;
+  s.position = barycentricInterpolate(tri.p0, tri.p1, tri.p2, b);
+  s.normal = normalize(cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+  s.radiance = tri.radiance;
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
-  uint emissionTexture = asuint(tri.p2.w);
+  uint emissionTexture = tri.emissionTexture;
   if (emissionTexture != PT_NO_TEXTURE) {
-    float2 uv = barycentricInterpolate2(tri.uv01.xy, tri.uv01.zw, tri.uv2.xy, b);
+    float2 uv = barycentricInterpolate2(tri.uv0, tri.uv1, tri.uv2, b);
     s.radiance *= sampleTextureRef(emissionTexture, float4(uv, uv)).xyz;
   }
 #endif
-  s.pdfArea = tri.p0.w / tri.p1.w;
+  s.pdfArea = tri.probability / tri.area;
   return s;
 }
 
 // Area density with which sampleEmissiveTriangles picks a point on triangle `index`.
 float emissiveTrianglePdfArea(uint index) {
   EmissiveTriangle tri = loadEmissiveTriangle(index);
-  return tri.p0.w / tri.p1.w;
+  return tri.probability / tri.area;
 }
 
 // spot.w holds a spot's cos(outer angle) in [-1, 1], or a marker below it.

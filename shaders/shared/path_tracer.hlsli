@@ -135,7 +135,7 @@ struct ScatterDirection {
 bool scatterNeedsEval(ScatterDirection d) { return d.bsdf.lobe != BSDF_LOBE_NONE && !d.bsdf.isDelta; }
 
 ScatterDirection scatterDirection(FrameConstants c, DisneyMaterial material, float3 wo, inout Rng rng) {
-  uint directions = (c.sampling.w >> PT_DIRECTIONS_SHIFT) & 3u;
+  uint directions = (c.flags >> PT_DIRECTIONS_SHIFT) & 3u;
   float u0 = rngNext(rng);
   float u1 = rngNext(rng);
   float u2 = rngNext(rng);
@@ -174,7 +174,7 @@ ScatterDirection scatterDirection(FrameConstants c, DisneyMaterial material, flo
 bool scatter(FrameConstants c, ScatterDirection d, BsdfEval e, Frame frame, float3 ng, float3 direction,
              float3 wo, uint depth, inout Rng rng, inout float3 throughput, inout float previousPdf,
              inout bool previousDelta, out float3 wiWorld) {
-  uint flags = c.sampling.w;
+  uint flags = c.flags;
   wiWorld = direction;
   BsdfSample s = d.bsdf;
   if (scatterNeedsEval(d)) {
@@ -191,7 +191,7 @@ bool scatter(FrameConstants c, ScatterDirection d, BsdfEval e, Frame frame, floa
   if (!isFiniteColor(throughput)) return false;
   previousPdf = s.pdf;
   previousDelta = s.isDelta;
-  if ((flags & PT_FLAG_RUSSIAN_ROULETTE) != 0u && depth + 1u >= c.sampling.z) {
+  if ((flags & PT_FLAG_RUSSIAN_ROULETTE) != 0u && depth + 1u >= c.rouletteStartDepth) {
     float survive = min(maxComponent(throughput), 0.95);
     if (rngNext(rng) >= survive) return false;
     throughput /= survive;
@@ -311,7 +311,7 @@ VertexGuides closeGuides(inout PathState p, float3 albedo, float3 normal) {
 // else half (a power estimate would need the scene's extent).
 float environmentChoice(FrameConstants c) {
   if (!environmentPresent(c)) return 0.0;  // a constant 0 in variants without the environment
-  return c.lights.x > 0u ? 0.5 : 1.0;
+  return c.emissiveTriangleCount > 0u ? 0.5 : 1.0;
 }
 
 #if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
@@ -320,18 +320,18 @@ float environmentChoice(FrameConstants c) {
 // (which already counted it without MIS); a camera ray sees it only as a
 // visible background.
 float3 environmentSeen(FrameConstants c, PathState p, float3 direction) {
-  uint flags = c.sampling.w;
+  uint flags = c.flags;
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
   float weight = 1.0;
   if (p.depth == 0u) {
-    weight = (c.lights.w & PT_SCENE_BACKGROUND) != 0u ? 1.0 : 0.0;
+    weight = (c.sceneFlags & PT_SCENE_BACKGROUND) != 0u ? 1.0 : 0.0;
   } else if (!p.previousDelta && useNee) {
     weight = (flags & PT_FLAG_MIS) != 0u
                  ? misWeight(flags, p.previousPdf, environmentPdf(direction) * environmentChoice(c))
                  : 0.0;
   }
   if (weight <= 0.0) return zero3();
-  return clampContribution(p.throughput * environmentRadiance(direction) * weight, c.shading.w);
+  return clampContribution(p.throughput * environmentRadiance(direction) * weight, c.radianceClamp);
 }
 #endif
 
@@ -352,10 +352,10 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   SurfaceHit hit = surfaceFromRecord(ray.origin, ray.direction, record);
   float3 direction = ray.direction;
   // Locals are not `const`: GLSL allows const only for constant expressions.
-  uint flags = c.sampling.w;
+  uint flags = c.flags;
   bool useNee = (flags & PT_FLAG_NEE) != 0u;
   bool useMis = useNee && (flags & PT_FLAG_MIS) != 0u;
-  float clampLimit = c.shading.w;
+  float clampLimit = c.radianceClamp;
   if (hit.hitT < 0.0) {
 #if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
     if (environmentPresent(c)) p.radiance += environmentSeen(c, p, direction);
@@ -381,7 +381,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     // An emitter NEE never samples has light pdf 0: BSDF sampling is the
     // only strategy that finds it, so its MIS weight is 1.
     bool neeSamples = instance.firstEmissiveTriangle != PT_EMISSION_NOT_SAMPLED;
-    if (p.depth == 0u || p.previousDelta || !useNee || c.lights.x == 0u || !neeSamples) {
+    if (p.depth == 0u || p.previousDelta || !useNee || c.emissiveTriangleCount == 0u || !neeSamples) {
       p.radiance += clampContribution(emitted, clampLimit);
     } else if (useMis) {
       float lightPdf = areaToSolidAnglePdf(
@@ -411,7 +411,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction), material);
   float3 wo = frameToLocal(frame, -direction);
   // At the maximum depth, or exactly grazing (no side to scatter into).
-  if (p.depth >= c.sampling.y || wo.z == 0.0 || dot(direction, ng) == 0.0) {
+  if (p.depth >= c.maxDepth || wo.z == 0.0 || dot(direction, ng) == 0.0) {
     if (p.guidesOpen) guides = closeGuides(p, guideAlbedo, guideNormal);
     return false;
   }
@@ -432,7 +432,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   light.radiance = zero3();
   light.pdfArea = 0.0;
   bool environmentOn = environmentPresent(c);
-  if (useNee && (c.lights.x > 0u || environmentOn)) {
+  if (useNee && (c.emissiveTriangleCount > 0u || environmentOn)) {
     float u0 = rngNext(p.rng);
     float u1 = rngNext(p.rng);
     float u2 = rngNext(p.rng);
@@ -456,7 +456,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     {
       // The rest of u0 picks the triangle (u0 itself without an environment).
       float triangleU = choice > 0.0 ? min((u0 - choice) / (1.0 - choice), 0.99999994) : u0;
-      light = sampleEmissiveTriangles(c.lights.x, triangleU, u1, u2);
+      light = sampleEmissiveTriangles(c.emissiveTriangleCount, triangleU, u1, u2);
       float3 toLight = light.position - hit.position;
       float lightDistance = length(toLight);
       lightWi = toLight / max(lightDistance, 1e-30);
@@ -507,7 +507,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   pointLights.record = record;
   pointLights.ray = ray;
   pointLights.throughput = p.throughput;
-  pointLights.lights = useNee ? c.lights.y : 0u;
+  pointLights.lights = useNee ? c.pointLightCount : 0u;
 #endif
 
   float3 wiWorld;
@@ -539,7 +539,7 @@ bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, inout R
       u.y = rngNext(rng);
     }
     shadow = pointLightShadowRay(light, u, material, frame, hit.position, hit.geometricNormal, v.ray.direction, wo,
-                                 v.throughput, c.shading.w);
+                                 v.throughput, c.radianceClamp);
     v.nextLight += 1u;
     if (shadow.tMax > 0.0) return true;
   }
@@ -550,13 +550,13 @@ bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, inout R
 // Sample `s` of this frame at launchPixel(): its random stream (numbered
 // over the whole accumulation), its camera ray and its fresh path.
 PathState startSample(FrameConstants c, uint s, out float3 origin, out float3 direction) {
-  Rng rng = sampleRng(c, launchPixel(), c.lights.z + c.image.w + s);
-  float2 jitter = pixelSample(rng, s, c.image.z);
+  Rng rng = sampleRng(c, launchPixel(), c.firstSample + c.samplesBefore + s);
+  float2 jitter = pixelSample(rng, s, c.samplesThisFrame);
   cameraRay(c, float2(launchPixel()) + jitter, rng, origin, direction);
-  return startPath(rng, dot(direction, c.cameraForward.xyz));
+  return startPath(rng, dot(direction, c.camera.forward));
 }
 
-// The sum of this frame's path samples (FrameConstants.image.z of them,
+// The sum of this frame's path samples (FrameConstants.samplesThisFrame of them,
 // continuing the pixel's sample sequence) through launchPixel(), and the
 // first two moments of their filtered luminance; with PT_OUTPUT_GUIDES,
 // their guides go to the guide buffers as they close.
@@ -591,7 +591,7 @@ float3 tracePixel(out float2 moments) {
                                 tracingShadow ? shadow.direction : ray.direction,
                                 tracingShadow ? shadow.tMax : 1e30, tracingShadow);
     c = frameConstants();
-    uint before = c.image.w;  // samples of the running means before this frame
+    uint before = c.samplesBefore;  // samples of the running means before this frame
     if (tracingShadow) {
       if (record.hitT < 0.0) p.radiance += shadow.contribution;
       shadow = noShadowRay();
@@ -618,7 +618,7 @@ float3 tracePixel(out float2 moments) {
     float l = p.guidesOpen ? 0.0 : luminance(p.radiance - p.chainEmission);
     moments += float2(l, l * l);
     s += 1u;
-    if (s >= c.image.z) break;
+    if (s >= c.samplesThisFrame) break;
     p = startSample(c, s, ray.origin, ray.direction);
     continues = true;
   }

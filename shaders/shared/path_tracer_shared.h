@@ -4,6 +4,8 @@
 #ifndef PENUMBRA_PATH_TRACER_SHARED_H
 #define PENUMBRA_PATH_TRACER_SHARED_H
 
+#include "camera_shared.h"  // its own namespace: before this file's
+
 #ifdef __cplusplus
 #include <cstddef>  // offsetof
 
@@ -80,14 +82,14 @@ namespace penumbra::gpu {
 // them apart by geometry index.
 #define PT_GEOMETRY_HIT_GROUP_STRIDE 0
 
-// FrameConstants.sampling.w bits.
+// FrameConstants.flags bits.
 #define PT_FLAG_NEE 1u               // next-event estimation on emissive triangles and point lights
 #define PT_FLAG_MIS 2u               // MIS between NEE and BSDF sampling (area lights only)
 #define PT_FLAG_RUSSIAN_ROULETTE 4u
 #define PT_FLAG_BALANCE_HEURISTIC 8u // balance instead of power heuristic
 #define PT_FLAG_SOBOL 16u            // Owen-scrambled Sobol samples instead of hashed random ones
 
-// FrameConstants.lights.w: bits 0-7 flags, bits 8-15 the thin lens's
+// FrameConstants.sceneFlags: bits 0-7 flags, bits 8-15 the thin lens's
 // aperture blades (0: round).
 #define PT_SCENE_ENVIRONMENT 1u      // rays that leave the scene see the environment, NEE samples it
 #define PT_SCENE_BACKGROUND 2u       // camera rays that miss see it too (else black)
@@ -134,18 +136,23 @@ namespace penumbra::gpu {
 
 // Push constants (D3D12 root constants), 128 bytes: the most Vulkan guarantees.
 struct FrameConstants {
-  float4 cameraPosition;  // xyz; w = tan(vertical fov / 2)
-  float4 cameraRight;     // xyz unit vector; w = aspect ratio (width / height)
-  float4 cameraUp;        // xyz unit vector; w thin-lens aperture radius (0: pinhole)
-  float4 cameraForward;   // xyz unit vector; w focus distance along it
-  uint4 image;            // x width, y height, z samples this frame, w samples accumulated before
-  uint4 sampling;         // x seed, y max depth (bounces), z Russian roulette start depth, w flags
-  // x emissive triangle count, y point light count; z the sample index the
-  // mean started at (image.w counts the samples in the mean, z + image.w is
-  // the next sample's index: PathTracer::startNewMean); w PT_SCENE_* bits
-  // and the lens's blade count
-  uint4 lights;
-  float4 shading;         // xyz Whitted ambient radiance; w radiance clamp per sample (0 = off)
+  CameraData camera;
+  uint width;
+  uint height;
+  uint samplesThisFrame;  // samples per pixel this frame adds (1..16)
+  uint samplesBefore;     // samples per pixel already in the running mean
+  uint seed;
+  uint maxDepth;            // bounces after the camera ray (Whitted: recursion depth)
+  uint rouletteStartDepth;  // Russian roulette from this bounce on
+  uint flags;               // PT_FLAG_* bits and PT_DIRECTIONS_* << PT_DIRECTIONS_SHIFT
+  uint emissiveTriangleCount;
+  uint pointLightCount;
+  // The sample index the mean started at: sample s of this frame is sample
+  // firstSample + samplesBefore + s of the sequence (PathTracer::startNewMean).
+  uint firstSample;
+  uint sceneFlags;      // PT_SCENE_* bits and the lens's blade count
+  float3 ambient;       // Whitted ambient radiance
+  float radianceClamp;  // largest channel of one sample's contribution; 0 = off
 };
 
 // One per top-level instance: where its mesh lies in the shared vertex and
@@ -225,12 +232,18 @@ struct EnvironmentData {
 // emitter's radiance is the material's factor; the shader multiplies in the
 // texture at the sampled point, interpolating the corners' coordinates.
 struct EmissiveTriangle {
-  float4 p0;        // w: probability of choosing this triangle
-  float4 p1;        // w: area
-  float4 p2;        // w: the emission TextureRefData index (bits; PT_NO_TEXTURE: untextured)
-  float4 radiance;  // rgb; w: cumulative probability up to and including this one
-  float4 uv01;      // xy p0's, zw p1's texture coordinates (the set the emission texture reads)
-  float4 uv2;       // xy p2's
+  float3 p0;          // corners, render space, counter-clockwise seen from the front
+  float probability;  // of choosing this triangle
+  float3 p1;
+  float area;
+  float3 p2;
+  uint emissionTexture;  // TextureRefData index; PT_NO_TEXTURE: untextured
+  float3 radiance;
+  float cumulativeProbability;  // up to and including this triangle
+  float2 uv0;  // the corners' texture coordinates (the set the emission texture reads)
+  float2 uv1;
+  float2 uv2;
+  float2 unused;
 };
 
 // An implicit surface (scene::ImplicitObject): its kind's parameters in its
@@ -274,12 +287,19 @@ static_assert(offsetof(ImplicitData, blendOffsets) == 128);
 static_assert(offsetof(ImplicitData, blendShapes) == 192);
 static_assert(sizeof(ProbeRay) == 32);
 static_assert(sizeof(ProbeHit) == 48);
+// The offsets std430 and HLSL packing give (each float3 opens a 16-byte row).
 static_assert(sizeof(FrameConstants) == 128);
+static_assert(offsetof(FrameConstants, width) == 64 && offsetof(FrameConstants, seed) == 80 &&
+              offsetof(FrameConstants, emissiveTriangleCount) == 96 &&
+              offsetof(FrameConstants, ambient) == 112 &&
+              offsetof(FrameConstants, radianceClamp) == 124);
 static_assert(sizeof(PointLight) == 48);
 static_assert(sizeof(InstanceData) == 128);
 static_assert(sizeof(MaterialData) == 176);
 static_assert(sizeof(TextureRefData) == 48);
-static_assert(sizeof(EmissiveTriangle) == 96);
+static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&
+              offsetof(EmissiveTriangle, emissionTexture) == 44 &&
+              offsetof(EmissiveTriangle, uv0) == 64 && offsetof(EmissiveTriangle, uv2) == 80);
 static_assert(sizeof(EnvironmentData) == 32);
 }  // namespace penumbra::gpu
 #endif

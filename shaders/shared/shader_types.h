@@ -1,6 +1,7 @@
 // Host-side spellings of the shading language's vector types, so *_shared.h
-// headers compile unchanged as C++ and as HLSL/GLSL. Only 4-component vectors
-// cross the boundary (16-byte aligned in std430 and in C++ alike).
+// headers compile unchanged as C++ and as HLSL/GLSL. Vectors cross the
+// boundary as float4/uint4 rows, or as a float3 followed by a float in one
+// 16-byte row (camera_shared.h), which std430, HLSL and C++ lay out alike.
 #pragma once
 #include <cstdint>
 
@@ -12,10 +13,14 @@ struct float4 {
 struct uint4 {
   uint x = 0, y = 0, z = 0, w = 0;
 };
-// Only in what never sits in a buffer (payloads_shared.h): a ray payload's
-// and a hit's attributes are packed, not std430.
+// In a buffer only as a float3 + float row (camera_shared.h, FrameConstants);
+// ray payloads and hit attributes (payloads_shared.h) are packed, not std430.
 struct float3 {
   float x = 0, y = 0, z = 0;
 };
-static_assert(sizeof(float4) == 16 && sizeof(uint4) == 16 && sizeof(float3) == 12);
+struct float2 {
+  float x = 0, y = 0;
+};
+static_assert(sizeof(float4) == 16 && sizeof(uint4) == 16 && sizeof(float3) == 12 &&
+              sizeof(float2) == 8);
 }  // namespace penumbra::gpu

@@ -53,7 +53,7 @@ uint tonemapToRgba8(float3 linearRgb, float exposure, uint toneOperator) {
 }
 
 // What the display pass shows of a texel (DisplayChannels in
-// engine/render/display_pass.h): 0 its colour, 1 signed xyz as 0.5 + 0.5 v
+// engine/penumbra/render/display_pass.h): 0 its colour, 1 signed xyz as 0.5 + 0.5 v
 // (normals, motion), 2 its alpha channel as grey (depth).
 float3 displayChannels(float4 texel, uint channels) {
   if (channels == 1u) return float3(0.5, 0.5, 0.5) + 0.5 * texel.xyz;

@@ -59,7 +59,7 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
 #if PT_HAS_EFFECT(PT_EFFECT_ENVIRONMENT)
       // Mirror and refraction rays that escape see the environment; camera
       // rays only as a visible background.
-      bool seen = ray.depth > 0u || (c.lights.w & PT_SCENE_BACKGROUND) != 0u;
+      bool seen = ray.depth > 0u || (c.sceneFlags & PT_SCENE_BACKGROUND) != 0u;
       if (environmentPresent(c) && seen) radiance += ray.weight * environmentRadiance(ray.direction);
 #endif
       continue;
@@ -89,8 +89,8 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     float opaque = max(0.0, 1.0 - p.reflectivity - p.transparency);
     // The occlusion texture darkens only the ambient term: it stands for the
     // ambient light the surroundings block, which point lights do not need.
-    float3 local = c.shading.xyz * p.kd * occlusion;
-    for (uint l = 0u; l < c.lights.y; l += 1u) {
+    float3 local = c.ambient * p.kd * occlusion;
+    for (uint l = 0u; l < c.pointLightCount; l += 1u) {
       PointLight light = loadPointLight(l);
       float3 toLight;
       float distance;
@@ -105,7 +105,7 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     }
     radiance += ray.weight * opaque * local;
 
-    if (ray.depth >= c.sampling.y) continue;
+    if (ray.depth >= c.maxDepth) continue;
     float3 mirror = normalize(ray.direction + 2.0 * abs(cosIn) * n);
     // A shading normal can bend the mirror ray into the surface; reflect about ng then.
     if (dot(mirror, ng) <= 0.0) mirror = normalize(reflect(ray.direction, ng));

@@ -1,4 +1,4 @@
-// Every pass of the denoiser (engine/render/denoiser.h); the push constant
+// Every pass of the denoiser (engine/penumbra/render/denoiser.h); the push constant
 // picks one. The kernels are in shaders/shared/denoiser.hlsli.
 #include "denoiser_shared.h"
 

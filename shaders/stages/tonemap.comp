@@ -1,4 +1,4 @@
-// Tone mapping to RGBA8 pixels for PNG files (engine/render/tonemapper.h).
+// Tone mapping to RGBA8 pixels for PNG files (engine/penumbra/render/tonemapper.h).
 #include "display_shared.h"
 #include "tonemap.hlsli"
 

@@ -3,9 +3,9 @@
 // stb accepts, under the texture limits), 1 an environment map in Radiance
 // .hdr, 2 one in OpenEXR (tinyexr).
 #include "fuzz_support.h"
-#include "scene/environment.h"
-#include "scene/gltf_textures.h"
-#include "scene/tinygltf.h"
+#include "penumbra/scene/environment.h"
+#include "penumbra/scene/gltf_textures.h"
+#include "penumbra/scene/tinygltf.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace penumbra;

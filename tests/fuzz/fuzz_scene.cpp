@@ -2,7 +2,7 @@
 #include <string_view>
 
 #include "fuzz_support.h"
-#include "scene/scene_loader.h"
+#include "penumbra/scene/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace penumbra;

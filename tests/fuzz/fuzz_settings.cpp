@@ -1,6 +1,6 @@
 // libFuzzer target: render settings and records (`penumbra render --settings`).
 #include "fuzz_support.h"
-#include "render/render_job.h"
+#include "penumbra/batch/render_job.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace penumbra;

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "util/error.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::fuzz {
 

@@ -3,7 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 
-#include "image/image.h"
+#include "penumbra/image/image.h"
 
 using namespace penumbra;
 

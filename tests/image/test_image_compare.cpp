@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "image/image_compare.h"
-#include "util/error.h"
+#include "penumbra/image/image_compare.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

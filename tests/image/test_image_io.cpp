@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "image/image_io.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/util/error.h"
 #include "test_data.h"
-#include "util/error.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "render/path_tracer.h"
-#include "scene/scene.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/scene.h"
 
 namespace penumbra::test {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene/scene.h"
+#include "penumbra/scene/scene.h"
 
 namespace penumbra::test {
 

@@ -5,9 +5,9 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "image/image.h"
-#include "render/camera_model.h"
-#include "render/path_tracer.h"
+#include "penumbra/image/image.h"
+#include "penumbra/render/camera_model.h"
+#include "penumbra/render/path_tracer.h"
 #include "test_device.h"
 
 namespace penumbra::test {

@@ -1,4 +1,4 @@
-// The camera model (engine/render/camera_model.h): the field of view a scene
+// The camera model (engine/penumbra/render/camera_model.h): the field of view a scene
 // camera keeps at image aspects other than the one it was set up for.
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
-#include "render/camera_model.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/render/camera_model.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

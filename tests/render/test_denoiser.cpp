@@ -1,4 +1,4 @@
-// The denoiser (engine/render/denoiser.h) against converged references
+// The denoiser (engine/penumbra/render/denoiser.h) against converged references
 // rendered with independent seeds, the guide buffers against analytic
 // values, and the temporal reprojection against a known camera move.
 #include <catch2/catch_test_macros.hpp>
@@ -6,13 +6,13 @@
 #include <glm/glm.hpp>
 #include <memory>
 
-#include "image/image_compare.h"
-#include "render/denoiser.h"
-#include "render/path_tracer.h"
+#include "penumbra/image/image_compare.h"
+#include "penumbra/render/denoiser.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/mesh_builders.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
 
 using namespace penumbra;
 

@@ -5,8 +5,8 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
 
+#include "penumbra/util/error.h"
 #include "render_test_utils.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using Catch::Matchers::ContainsSubstring;

@@ -1,16 +1,16 @@
-// The effect-specialized pipeline (engine/render/effect_set.h): the effect set
+// The effect-specialized pipeline (engine/penumbra/render/effect_set.h): the effect set
 // a scene calls for, and images identical to the full pipeline's.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <glm/glm.hpp>
 
 #include "effects.h"
-#include "image/image_compare.h"
+#include "penumbra/image/image_compare.h"
+#include "penumbra/render/effect_set.h"
+#include "penumbra/scene/mesh_builders.h"
+#include "penumbra/scene/scene_loader.h"
 #include "penumbra_shaders.h"
-#include "render/effect_set.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
-#include "scene/scene_loader.h"
 
 using namespace penumbra;
 

@@ -1,12 +1,11 @@
-// The NEE emitter table (engine/render/emitter_table.h) on the CPU, against
+// The NEE emitter table (engine/penumbra/render/emitter_table.h) on the CPU, against
 // values worked out by hand: areas, luminances, choice probabilities and
 // their running sums, placement in render space, winding under mirroring.
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
-#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/emitter_table.h"
+#include "penumbra/render/emitter_table.h"
 
 using namespace penumbra;
 using namespace penumbra::render;
@@ -27,7 +26,7 @@ EmitterSource source(glm::dmat4 objectToWorld, glm::vec3 emission,
   return s;
 }
 
-glm::vec3 xyz(const gpu::float4& v) {
+glm::vec3 xyz(const gpu::float3& v) {
   return {v.x, v.y, v.z};
 }
 
@@ -48,18 +47,18 @@ TEST_CASE("emitter table: triangles are chosen in proportion to area x luminance
   REQUIRE(table.sampledCount == 3);
   const auto& t = table.triangles;
   const double total = 0.5 + 0.8504;
-  CHECK(t[0].p1.w == Approx(0.5));
-  CHECK(t[1].p1.w == Approx(2.0));
-  CHECK(t[2].p1.w == 0.0f);
-  CHECK(t[0].p0.w == Approx(0.5 / total).epsilon(1e-6));     // 0.370261
-  CHECK(t[1].p0.w == Approx(0.8504 / total).epsilon(1e-6));  // 0.629739
-  CHECK(t[2].p0.w == 0.0f);                                  // never chosen
-  CHECK(t[0].radiance.w == Approx(0.5 / total).epsilon(1e-6));
+  CHECK(t[0].area == Approx(0.5));
+  CHECK(t[1].area == Approx(2.0));
+  CHECK(t[2].area == 0.0f);
+  CHECK(t[0].probability == Approx(0.5 / total).epsilon(1e-6));     // 0.370261
+  CHECK(t[1].probability == Approx(0.8504 / total).epsilon(1e-6));  // 0.629739
+  CHECK(t[2].probability == 0.0f);                                  // never chosen
+  CHECK(t[0].cumulativeProbability == Approx(0.5 / total).epsilon(1e-6));
   // The last triangle with power ends the running sum at exactly 1, and so
   // does every one after it: a uniform number in [0, 1) always lands on a
   // triangle that can be chosen.
-  CHECK(t[1].radiance.w == 1.0f);
-  CHECK(t[2].radiance.w == 1.0f);
+  CHECK(t[1].cumulativeProbability == 1.0f);
+  CHECK(t[2].cumulativeProbability == 1.0f);
   CHECK(xyz(t[1].radiance) == glm::vec3(2, 0, 0));  // the emission itself, not its luminance
 }
 
@@ -72,7 +71,7 @@ TEST_CASE("emitter table: triangles are placed in render space", "[render][emitt
   CHECK(xyz(table.triangles[0].p0) == glm::vec3(0, 0, 5));
   CHECK(xyz(table.triangles[0].p1) == glm::vec3(1, 0, 5));
   CHECK(xyz(table.triangles[0].p2) == glm::vec3(0, 1, 5));
-  CHECK(table.triangles[0].p0.w == 1.0f);
+  CHECK(table.triangles[0].probability == 1.0f);
 }
 
 TEST_CASE("emitter table: a mirroring transform keeps the emitting side the front",
@@ -85,7 +84,7 @@ TEST_CASE("emitter table: a mirroring transform keeps the emitting side the fron
   const auto& t = table.triangles[0];
   const glm::vec3 normal = glm::cross(xyz(t.p1) - xyz(t.p0), xyz(t.p2) - xyz(t.p0));
   CHECK(normal == glm::vec3(0, 0, 1));
-  CHECK(t.p1.w == Approx(0.5));
+  CHECK(t.area == Approx(0.5));
 }
 
 TEST_CASE("emitter table: without power NEE samples no triangle", "[render][emitters]") {
@@ -97,7 +96,7 @@ TEST_CASE("emitter table: without power NEE samples no triangle", "[render][emit
       {source(glm::dmat4(1.0), {1, 1, 1}, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}})}, glm::dmat4(1.0));
   REQUIRE(flat.triangles.size() == 1);
   CHECK(flat.sampledCount == 0);
-  CHECK(flat.triangles[0].p0.w == 0.0f);
+  CHECK(flat.triangles[0].probability == 0.0f);
 }
 
 TEST_CASE("emitter table: a scene instance's source follows its mesh's indices",
@@ -119,7 +118,5 @@ TEST_CASE("emitter table: a scene instance's source follows its mesh's indices",
   CHECK(s.uvs[5] == glm::vec2(0, 1));
   CHECK(s.emission == glm::vec3(1, 2, 3));
   CHECK(s.luminance == Approx(0.2126 + 2 * 0.7152 + 3 * 0.0722));  // 1.8596
-  uint32_t texture = 0;
-  std::memcpy(&texture, &s.emissionTextureBits, sizeof(texture));
-  CHECK(texture == PT_NO_TEXTURE);
+  CHECK(s.emissionTexture == PT_NO_TEXTURE);
 }

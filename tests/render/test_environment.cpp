@@ -10,14 +10,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "image/image_io.h"
-#include "render/render_job.h"
+#include "penumbra/batch/render_job.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/scene/gltf_loader.h"
+#include "penumbra/scene/mesh_builders.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 #include "render_test_utils.h"
-#include "scene/gltf_loader.h"
-#include "scene/mesh_builders.h"
-#include "scene/scene_loader.h"
 #include "test_data.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using Catch::Matchers::ContainsSubstring;

@@ -5,8 +5,8 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 
+#include "penumbra/scene/mesh_builders.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
 
 using namespace penumbra;
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "penumbra/scene/mesh_builders.h"
 #include "ray_geometry.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
 
 using namespace penumbra;
 

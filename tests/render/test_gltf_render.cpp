@@ -6,9 +6,9 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 
+#include "penumbra/scene/gltf_loader.h"
+#include "penumbra/scene/scene_loader.h"
 #include "render_test_utils.h"
-#include "scene/gltf_loader.h"
-#include "scene/scene_loader.h"
 #include "test_data.h"
 
 using namespace penumbra;

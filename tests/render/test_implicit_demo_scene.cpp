@@ -2,8 +2,8 @@
 // an area light) renders with both integrators.
 #include <catch2/catch_test_macros.hpp>
 
+#include "penumbra/scene/scene_loader.h"
 #include "render_test_utils.h"
-#include "scene/scene_loader.h"
 
 using namespace penumbra;
 

@@ -5,8 +5,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "implicit_test_support.h"
+#include "penumbra/scene/mesh_builders.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
 
 using namespace penumbra;
 

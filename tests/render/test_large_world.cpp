@@ -10,9 +10,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
+#include "penumbra/scene/mesh_builders.h"
+#include "penumbra/scene/scene_loader.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
-#include "scene/scene_loader.h"
 #include "test_data.h"
 
 using namespace penumbra;

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <glm/glm.hpp>
 
+#include "penumbra/scene/scene_loader.h"
 #include "render_test_utils.h"
-#include "scene/scene_loader.h"
 
 using namespace penumbra;
 

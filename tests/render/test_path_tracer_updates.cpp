@@ -11,9 +11,9 @@
 #include <string>
 
 #include "effects.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 #include "render_test_utils.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
 
 using namespace penumbra;
 

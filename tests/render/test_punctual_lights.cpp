@@ -7,10 +7,10 @@
 #include <cmath>
 #include <functional>
 
+#include "penumbra/scene/gltf_loader.h"
+#include "penumbra/util/error.h"
 #include "render_test_utils.h"
-#include "scene/gltf_loader.h"
 #include "test_data.h"
-#include "util/error.h"
 
 using namespace penumbra;
 

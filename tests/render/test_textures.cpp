@@ -10,9 +10,9 @@
 #include <optional>
 
 #include "effects.h"
+#include "penumbra/scene/gltf_loader.h"
+#include "penumbra/scene/mesh_builders.h"
 #include "render_test_utils.h"
-#include "scene/gltf_loader.h"
-#include "scene/mesh_builders.h"
 #include "test_data.h"
 
 using namespace penumbra;

@@ -1,12 +1,13 @@
 // The tone curves of PNG output and the viewer's display (shaders/shared/tonemap.hlsli)
 // against their published formulas, evaluated here on the CPU.
-#include <catch2/catch_test_macros.hpp>
 #include <algorithm>
+#include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "render/display_pass.h"
-#include "render/tonemapper.h"
+#include "penumbra/batch/render_settings.h"
+#include "penumbra/render/display_pass.h"
+#include "penumbra/render/tonemapper.h"
 #include "test_device.h"
 
 using namespace penumbra;

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "image/image_compare.h"
+#include "penumbra/image/image_compare.h"
+#include "penumbra/scene/scene_loader.h"
 #include "render_test_utils.h"
-#include "scene/scene_loader.h"
 
 using namespace penumbra;
 

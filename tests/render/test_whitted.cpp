@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
+#include "penumbra/scene/mesh_builders.h"
 #include "ray_geometry.h"
 #include "render_test_utils.h"
-#include "scene/mesh_builders.h"
 
 using namespace penumbra;
 

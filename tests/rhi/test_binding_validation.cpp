@@ -1,11 +1,11 @@
-// Binding-set validation of texture and sampler arrays (engine/rhi/
+// Binding-set validation of texture and sampler arrays (engine/penumbra/rhi/
 // binding_layout.h), fixed and unbounded, on hand-written layouts: no GPU.
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
-#include "rhi/binding_layout.h"
-#include "rhi/register_shifts.h"
-#include "util/error.h"
+#include "penumbra/rhi/binding_layout.h"
+#include "penumbra/rhi/register_shifts.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

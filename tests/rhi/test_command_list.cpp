@@ -1,5 +1,5 @@
 // Command lists and the device's bookkeeping of what they hold
-// (engine/rhi/command_list.h, IDevice::submit / waitForIdle).
+// (engine/penumbra/rhi/command_list.h, IDevice::submit / waitForIdle).
 #include <catch2/catch_test_macros.hpp>
 #include <cstring>
 #include <numeric>

@@ -3,7 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
-#include "rhi/fault_injection.h"
+#include "penumbra/rhi/fault_injection.h"
 #include "test_device.h"
 
 using namespace penumbra;

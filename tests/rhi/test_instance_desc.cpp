@@ -2,7 +2,7 @@
 #include <cstddef>
 #include <cstring>
 
-#include "rhi/resources.h"
+#include "penumbra/rhi/resources.h"
 
 using penumbra::rhi::rt::InstanceDesc;
 

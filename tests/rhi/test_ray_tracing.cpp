@@ -5,9 +5,9 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cstring>
 
+#include "penumbra/util/error.h"
 #include "penumbra_test_shaders.h"
 #include "test_device.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

@@ -1,4 +1,4 @@
-// The binding-layout -> D3D12 root signature mapping (engine/rhi/
+// The binding-layout -> D3D12 root signature mapping (engine/penumbra/rhi/
 // root_signature_layout.h), which the D3D12 backend turns into
 // D3D12_ROOT_PARAMETER1s. Runs anywhere: no D3D12 needed.
 #include <fmt/format.h>
@@ -7,12 +7,12 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 
 #include "path_tracer_shared.h"
+#include "penumbra/rhi/binding_layout.h"
+#include "penumbra/rhi/register_shifts.h"
+#include "penumbra/rhi/root_signature_layout.h"
+#include "penumbra/util/error.h"
 #include "penumbra_shaders.h"
 #include "penumbra_test_shaders.h"
-#include "rhi/binding_layout.h"
-#include "rhi/register_shifts.h"
-#include "rhi/root_signature_layout.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

@@ -4,10 +4,10 @@
 #include <vector>
 
 #include "path_tracer_shared.h"
+#include "penumbra/rhi/shader_reflection.h"
+#include "penumbra/util/error.h"
 #include "penumbra_shaders.h"
 #include "penumbra_test_shaders.h"
-#include "rhi/shader_reflection.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

@@ -1,7 +1,7 @@
 #include <catch2/catch_test_macros.hpp>
 
-#include "rhi/shader_table_layout.h"
-#include "util/error.h"
+#include "penumbra/rhi/shader_table_layout.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

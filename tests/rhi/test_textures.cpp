@@ -14,10 +14,10 @@
 #include <cstring>
 #include <random>
 
+#include "penumbra/rhi/register_shifts.h"
+#include "penumbra/util/error.h"
 #include "penumbra_test_shaders.h"
-#include "rhi/register_shifts.h"
 #include "test_device.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

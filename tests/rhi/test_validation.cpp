@@ -1,4 +1,4 @@
-// The RHI validation layer (engine/rhi/validation.h): one test per rule, on
+// The RHI validation layer (engine/penumbra/rhi/validation.h): one test per rule, on
 // the Vulkan backend. Each wrong call must throw before the backend records
 // anything -- so the Khronos validation layer sees nothing -- with an error
 // that names the call and the objects. The rules are the layer's, so they hold
@@ -7,10 +7,10 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 
 #include "display_shared.h"
+#include "penumbra/util/error.h"
 #include "penumbra_shaders.h"
 #include "penumbra_test_shaders.h"
 #include "test_device.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using namespace penumbra::rhi;

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <string>
 
-#include "scene/gltf_loader.h"
-#include "util/error.h"
+#include "penumbra/scene/gltf_loader.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::test {
 

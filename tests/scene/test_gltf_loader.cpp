@@ -14,10 +14,10 @@
 #include <sstream>
 
 #include "gltf_test_files.h"
-#include "scene/gltf_loader.h"
-#include "scene/input_limits.h"
+#include "penumbra/scene/gltf_loader.h"
+#include "penumbra/scene/input_limits.h"
+#include "penumbra/util/error.h"
 #include "test_data.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

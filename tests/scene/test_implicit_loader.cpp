@@ -1,5 +1,5 @@
-// The "implicits" array of scene files (engine/scene/implicit_json.cpp) and
-// validation of implicit objects (engine/scene/implicit_object.cpp).
+// The "implicits" array of scene files (engine/penumbra/scene/implicit_json.cpp) and
+// validation of implicit objects (engine/penumbra/scene/implicit_object.cpp).
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
@@ -7,8 +7,8 @@
 #include <set>
 #include <string>
 
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

@@ -1,11 +1,11 @@
-// The material-test row (engine/scene/material_row.h).
+// The material-test row (engine/penumbra/scene/material_row.h).
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
-#include "scene/material_row.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/scene/material_row.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

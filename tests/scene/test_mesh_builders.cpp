@@ -6,7 +6,7 @@
 #include <map>
 #include <utility>
 
-#include "scene/mesh_builders.h"
+#include "penumbra/scene/mesh_builders.h"
 
 using namespace penumbra;
 using Catch::Approx;

@@ -1,13 +1,13 @@
-// Procedural content in scene files (engine/scene/scene_generators.h) and the
+// Procedural content in scene files (engine/penumbra/scene/scene_generators.h) and the
 // performance scene built from it.
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <string>
 #include <vector>
 
-#include "scene/input_limits.h"
-#include "scene/scene_loader.h"
-#include "util/error.h"
+#include "penumbra/scene/input_limits.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using Catch::Matchers::ContainsSubstring;

@@ -12,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "image/image_io.h"
-#include "scene/input_limits.h"
-#include "scene/mesh_builders.h"
-#include "scene/scene_loader.h"
+#include "penumbra/image/image_io.h"
+#include "penumbra/scene/input_limits.h"
+#include "penumbra/scene/mesh_builders.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/json_nesting.h"
 #include "test_data.h"
-#include "util/error.h"
-#include "util/json_nesting.h"
 
 using namespace penumbra;
 using Catch::Approx;

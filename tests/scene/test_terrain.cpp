@@ -1,9 +1,9 @@
-// The procedural terrain of the performance scene (engine/scene/terrain.h).
+// The procedural terrain of the performance scene (engine/penumbra/scene/terrain.h).
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 
-#include "scene/terrain.h"
-#include "util/error.h"
+#include "penumbra/scene/terrain.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "render/path_tracer.h"
-#include "util/error.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/util/error.h"
 
 namespace penumbra::test {
 

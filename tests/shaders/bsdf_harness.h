@@ -6,8 +6,8 @@
 
 #include "compute_harness.h"
 #include "path_tracer_shared.h"
-#include "rhi/rhi.h"
-#include "scene/scene.h"
+#include "penumbra/rhi/rhi.h"
+#include "penumbra/scene/scene.h"
 
 namespace penumbra::test {
 

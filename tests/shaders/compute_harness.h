@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rhi/rhi.h"
+#include "penumbra/rhi/rhi.h"
 
 namespace penumbra::test {
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "compute_harness.h"
-#include "render/environment_map.h"
+#include "penumbra/render/environment_map.h"
 #include "test_device.h"
 
 using namespace penumbra;

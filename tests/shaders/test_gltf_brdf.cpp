@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "bsdf_harness.h"
-#include "scene/gltf_materials.h"
+#include "penumbra/scene/gltf_materials.h"
 #include "test_device.h"
 
 using namespace penumbra;

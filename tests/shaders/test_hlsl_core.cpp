@@ -42,14 +42,20 @@ std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t max
                rhi::BindingSetItem::storageBuffer(PENUMBRA_U(0), output)};
   auto bindings = device.createBindingSet(set, *pipeline);
 
-  gpu::FrameConstants push;
-  push.cameraPosition = {0, 0, 0, 1.0f};  // tan(45 deg)
-  push.cameraRight = {-1, 0, 0, 1.0f};
-  push.cameraUp = {0, 1, 0, 0};
-  push.cameraForward = {0, 0, 1, 0};
-  push.image = {kSide, kSide, spp, 0};
-  push.sampling = {3, maxDepth, 1, flags};
-  push.lights = {0, 0, 0, 0};
+  gpu::FrameConstants push{};
+  push.camera.position = {0, 0, 0};
+  push.camera.tanHalfFovY = 1.0f;  // tan(45 deg)
+  push.camera.right = {-1, 0, 0};
+  push.camera.aspectRatio = 1.0f;
+  push.camera.up = {0, 1, 0};
+  push.camera.forward = {0, 0, 1};
+  push.width = kSide;
+  push.height = kSide;
+  push.samplesThisFrame = spp;
+  push.seed = 3;
+  push.maxDepth = maxDepth;
+  push.rouletteStartDepth = 1;
+  push.flags = flags;
 
   auto cmd = device.createCommandList();
   cmd->open();

@@ -5,10 +5,10 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 
-#include "study/study_analysis.h"
-#include "study/study_plan.h"
-#include "study/study_results.h"
-#include "util/error.h"
+#include "penumbra/study/study_analysis.h"
+#include "penumbra/study/study_plan.h"
+#include "penumbra/study/study_results.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

@@ -2,8 +2,8 @@
 // collapsed, bad lists refused.
 #include <catch2/catch_test_macros.hpp>
 
-#include "study/study_plan.h"
-#include "util/error.h"
+#include "penumbra/study/study_plan.h"
+#include "penumbra/util/error.h"
 
 using namespace penumbra;
 using render::DenoiseMode;

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <map>
 
-#include "scene/scene_loader.h"
-#include "study/study_analysis.h"
-#include "study/study_results.h"
-#include "study/study_runner.h"
+#include "penumbra/scene/scene_loader.h"
+#include "penumbra/study/study_analysis.h"
+#include "penumbra/study/study_results.h"
+#include "penumbra/study/study_runner.h"
+#include "penumbra/util/error.h"
 #include "test_device.h"
-#include "util/error.h"
 
 using namespace penumbra;
 using Catch::Approx;

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "path_tracer_shared.h"
+#include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/scene_loader.h"
 #include "picking.h"
-#include "render/path_tracer.h"
-#include "scene/scene_loader.h"
 #include "shaders/compute_harness.h"
 #include "test_device.h"
 
@@ -30,13 +30,11 @@ TEST_CASE("picking: the camera ray is the one the shading core traces",
   // What the ray generation shaders compute from the frame constants the path
   // tracer makes of this camera (shaders/shared/camera.hlsli).
   auto device = test::makeTestDevice();
-  const render::CameraFrame frame = render::cameraFrame(camera, width, height, camera.position);
   gpu::FrameConstants constants{};
-  constants.cameraPosition = frame.position;
-  constants.cameraRight = frame.right;
-  constants.cameraUp = frame.up;
-  constants.cameraForward = frame.forward;
-  constants.image = {width, height, 1, 0};
+  constants.camera = render::cameraData(camera, width, height, camera.position);
+  constants.width = width;
+  constants.height = height;
+  constants.samplesThisFrame = 1;
   test::ComputeHarness harness(*device, "camera_harness.comp");
   const uint32_t count = uint32_t(film.size());
   const auto bytes =

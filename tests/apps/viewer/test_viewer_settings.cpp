@@ -3,9 +3,9 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
+#include "penumbra/util/error.h"
 #include "render_scale.h"
 #include "script.h"
-#include "util/error.h"
 #include "viewer_settings.h"
 
 using namespace penumbra;

@@ -5,13 +5,16 @@
 #include <string>
 #include <vector>
 
-#include "backend_factory.h"
-#include "image/image_compare.h"
-#include "penumbra_shaders.h"
-#include "render/effect_set.h"
-#include "rhi/register_shifts.h"
-#include "scene/scene_loader.h"
-#include "study/study_plan.h"
+// The installed headers by the project's prefix, as a user includes them.
+#include <penumbra/backend_factory.h>
+#include <penumbra/batch/render_settings.h>
+#include <penumbra/image/image_compare.h>
+#include <penumbra/render/effect_set.h>
+#include <penumbra/rhi/device.h>
+#include <penumbra/rhi/register_shifts.h>
+#include <penumbra/scene/scene_loader.h>
+#include <penumbra/shaders/penumbra_shaders.h>
+#include <penumbra/study/study_plan.h>
 
 namespace {
 
@@ -53,6 +56,9 @@ int main() {
   b.rgba = a.rgba;
   check(image::compareImages(a, b, 1e-3).pixelsBeyondTolerance == 0,
         "penumbra::image compares two images");
+
+  check(render::findSetting("max-depth") != nullptr,
+        "penumbra::batch describes the settings (max-depth)");
 
   const study::StudySpec spec;  // 4 sample counts x 3 seeds of one technique
   check(study::expandStudy(spec).size() == spec.spp.size() * spec.seeds,

@@ -90,15 +90,21 @@ PointLight loadPointLight(uint index) {
   return p;
 }
 
-// No triangle lights in this harness (lights.x = 0 keeps NEE from calling it).
+// No triangle lights in this harness (emissiveTriangleCount 0 keeps NEE from calling it).
 EmissiveTriangle loadEmissiveTriangle(uint index) {
   EmissiveTriangle t;
-  t.p0 = float4(0.0, 0.0, 0.0, 0.0);
-  t.p1 = float4(0.0, 0.0, 0.0, 1.0);
-  t.p2 = float4(0.0, 0.0, 0.0, 0.0);
-  t.radiance = float4(0.0, 0.0, 0.0, 1.0);
-  t.uv01 = float4(0.0, 0.0, 0.0, 0.0);
-  t.uv2 = float4(0.0, 0.0, 0.0, 0.0);
+  t.p0 = float3(0.0, 0.0, 0.0);
+  t.probability = 0.0;
+  t.p1 = float3(0.0, 0.0, 0.0);
+  t.area = 1.0;
+  t.p2 = float3(0.0, 0.0, 0.0);
+  t.emissionTexture = PT_NO_TEXTURE;
+  t.radiance = float3(0.0, 0.0, 0.0);
+  t.cumulativeProbability = 1.0;
+  t.uv0 = float2(0.0, 0.0);
+  t.uv1 = float2(0.0, 0.0);
+  t.uv2 = float2(0.0, 0.0);
+  t.unused = float2(0.0, 0.0);
   return t;
 }
 
@@ -156,10 +162,10 @@ void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 norma
 void main(uint3 id : SV_DispatchThreadID) {
   FrameConstants c = gPush.frame;
   uint pixelIndex = id.x;
-  uint2 pixel = uint2(pixelIndex % c.image.x, pixelIndex / c.image.x);
-  if (pixel.y >= c.image.y) return;
+  uint2 pixel = uint2(pixelIndex % c.width, pixelIndex / c.width);
+  if (pixel.y >= c.height) return;
   gPixel = pixel;
   float2 moments;
   float3 sum = tracePixel(moments);
-  gOutput[pixelIndex] = float4(sum / float(c.image.z), 1.0);
+  gOutput[pixelIndex] = float4(sum / float(c.samplesThisFrame), 1.0);
 }

@@ -1,0 +1,146 @@
+#include "penumbra/render/effect_set.h"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cmath>
+#include <iterator>
+
+#include "effects.h"
+#include "penumbra/util/error.h"
+#include "penumbra/util/log.h"
+#include "penumbra_shaders.h"
+
+namespace penumbra::render {
+namespace {
+
+uint32_t materialEffectsOf(const scene::Material& m) {
+  uint32_t effects = 0;
+  // Whitted reads the Phong fields of every material; the path tracer maps a
+  // Phong material onto Disney (shaders/shared/material.hlsli: reflectivity ->
+  // metallic, ks -> specular, transparency -> specTrans).
+  if (m.reflectivity > 0.0f || m.ks > 0.0f) effects |= PT_EFFECT_SPECULAR;
+  if (m.transparency > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
+  const bool textured = m.baseColorTexture != scene::Material::kNoTexture ||
+                        m.metallicRoughnessTexture != scene::Material::kNoTexture ||
+                        m.normalTexture != scene::Material::kNoTexture ||
+                        m.emissiveTexture != scene::Material::kNoTexture ||
+                        m.occlusionTexture != scene::Material::kNoTexture;
+  if (textured) effects |= PT_EFFECT_TEXTURES;
+  if (alphaMasked(m)) effects |= PT_EFFECT_ALPHA_MASK;
+  if (m.model == scene::MaterialModel::Phong) return effects;
+  if (m.metallic > 0.0f || m.specular > 0.0f) effects |= PT_EFFECT_SPECULAR;
+  if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
+  if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
+  if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN;
+  return effects;
+}
+
+struct EntryPointBits {
+  std::string_view shader;
+  uint32_t bits;
+};
+constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFFECT_BITS},
+                                           {"whitted.rgen", PT_WHITTED_EFFECT_BITS}};
+
+}  // namespace
+
+bool alphaMasked(const scene::Material& m) {
+  const bool textured = m.baseColorTexture != scene::Material::kNoTexture;
+  if (m.alphaMode == scene::AlphaMode::Mask) return textured;
+  return m.alphaMode == scene::AlphaMode::Blend && (textured || m.alpha < 1.0f);
+}
+
+uint32_t deriveMaterialEffects(const scene::Material& material) {
+  return materialEffectsOf(material);
+}
+
+uint32_t deriveEffects(const scene::Scene& scene) {
+  uint32_t effects = 0;
+  if (!scene.pointLights.empty()) effects |= PT_EFFECT_DELTA_LIGHTS;
+  if (scene.environment.present()) effects |= PT_EFFECT_ENVIRONMENT;
+  // Materials of meshes that are drawn, not every material the file lists.
+  auto use = [&](uint32_t materialIndex) {
+    const auto& material = scene.materials.at(materialIndex);
+    effects |= materialEffectsOf(material);
+    if (material.isEmissive()) effects |= PT_EFFECT_AREA_LIGHTS;
+  };
+  for (const auto& instance : scene.instances) use(scene.meshes.at(instance.mesh).material);
+  for (const auto& object : scene.implicits) use(object.material);
+  return effects;
+}
+
+std::vector<std::string> effectNames(uint32_t effects) {
+  static const std::pair<uint32_t, const char*> kNames[] = {
+      {PT_EFFECT_AREA_LIGHTS, "area-lights"}, {PT_EFFECT_DELTA_LIGHTS, "delta-lights"},
+      {PT_EFFECT_SPECULAR, "specular"},       {PT_EFFECT_TRANSMISSION, "transmission"},
+      {PT_EFFECT_CLEARCOAT, "clearcoat"},     {PT_EFFECT_SHEEN, "sheen"},
+      {PT_EFFECT_TEXTURES, "textures"},       {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
+      {PT_EFFECT_ENVIRONMENT, "environment"}};
+  std::vector<std::string> names;
+  for (const auto& [bit, name] : kNames)
+    if (effects & bit) names.emplace_back(name);
+  return names;
+}
+
+uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera) {
+  uint32_t features = 0;
+  for (const auto& light : scene.pointLights) {
+    if (light.type == scene::LightType::Directional) features |= kFeatureDirectionalLights;
+    if (light.type == scene::LightType::Directional && light.angularRadiusDegrees > 0.0f)
+      features |= kFeatureSoftSun;
+    if (light.type == scene::LightType::Spot) features |= kFeatureSpotLights;
+  }
+  const scene::Camera& view = camera ? *camera : scene.camera;
+  if (view.apertureRadius > 0.0f) features |= kFeatureThinLens;
+  if (view.apertureRadius > 0.0f && view.apertureBlades >= 3) features |= kFeatureLensBlades;
+  auto absorbs = [&](uint32_t materialIndex) {
+    const auto& m = scene.materials.at(materialIndex);
+    const bool transmits = m.specTrans > 0.0f || m.transparency > 0.0f;
+    return transmits && !m.thin && std::isfinite(m.attenuationDistance);
+  };
+  for (const auto& instance : scene.instances)
+    if (absorbs(scene.meshes.at(instance.mesh).material)) features |= kFeatureAbsorption;
+  for (const auto& object : scene.implicits)
+    if (absorbs(object.material)) features |= kFeatureAbsorption;
+  return features;
+}
+
+std::vector<std::string> featureNames(uint32_t features) {
+  static const char* const kNames[] = {"directional-lights", "soft-sun",    "spot-lights",
+                                       "thin-lens",          "lens-blades", "absorption"};
+  std::vector<std::string> names;
+  for (int bit = 0; bit < int(std::size(kNames)); ++bit)
+    if (features & (1u << bit)) names.emplace_back(kNames[bit]);
+  return names;
+}
+
+std::string effectVariant(std::string_view shader, uint32_t effects) {
+  for (const auto& entry : kVariantBits) {
+    if (entry.shader != shader) continue;
+    const uint32_t wanted = effects & entry.bits;
+    const auto dot = shader.find('.');
+    auto name = [&](uint32_t mask) {
+      if (mask == entry.bits) return std::string(shader);
+      return fmt::format("{}.e{}{}", shader.substr(0, dot), mask, shader.substr(dot));
+    };
+    // Only some subsets are built (shaders/effect_variants.cmake). Otherwise
+    // the smallest built superset: every effect the scene needs, and the
+    // fewest it does not. The full variant always exists.
+    const uint32_t optional = entry.bits & ~wanted;
+    uint32_t best = entry.bits;
+    // Every subset of the optional bits, in increasing order: (x - m) & m.
+    for (uint32_t extra = 0;; extra = (extra - optional) & optional) {
+      const uint32_t mask = wanted | extra;
+      if (std::popcount(mask) < std::popcount(best) && !shaders::find(name(mask)).empty())
+        best = mask;
+      if (extra == optional) break;
+    }
+    if (best != wanted)
+      log::info("no {} variant is built for effects {:#x}; using {:#x}", shader, wanted, best);
+    return name(best);
+  }
+  throw Error(fmt::format("no effect variants are built for shader '{}'", shader));
+}
+
+}  // namespace penumbra::render

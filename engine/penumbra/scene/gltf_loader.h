@@ -1,0 +1,61 @@
+#pragma once
+// glTF 2.0 files (.gltf with external or data-URI buffers, .glb) as scenes,
+// read with tinygltf.
+//
+// - The default scene (or the first; without scenes, every root node) is
+//   flattened: node TRS or matrices compose into world transforms.
+// - Each triangle primitive of a glTF mesh becomes one scene Mesh (one BLAS),
+//   and every node that references the glTF mesh adds one Instance of each of
+//   its primitives' Meshes, so a mesh used by many nodes is stored once.
+// - TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN are read (strips and fans as
+//   triangle lists); points and lines are skipped with a warning.
+// - Without NORMAL a primitive gets flat normals (its vertices are unshared);
+//   without TANGENT, tangents are generated from TEXCOORD_0
+//   (scene/mesh_attributes.h).
+// - Perspective cameras become Scene::cameras; the scene's view is the
+//   camera of the lowest-numbered node in the scene, or, without one, a view
+//   down -z that frames the scene's bounds.
+// - Materials map onto the Disney parameters with the Lambert diffuse
+//   (scene/gltf_materials.h, docs/materials.md); emissive primitives are
+//   area lights.
+// - An extension in extensionsRequired that is not supported is an error; an
+//   unsupported one that is only used gives a warning naming it.
+// Every failure on bad input is one penumbra::Error line naming the file and
+// the part of it at fault.
+#include <string>
+#include <vector>
+
+#include "penumbra/scene/input_limits.h"
+#include "penumbra/scene/scene.h"
+
+namespace penumbra::scene {
+
+// Which files a glTF file may read besides itself (its buffers' and images'
+// URIs). By default only files inside the glTF file's own folder (and its
+// subfolders), after resolving "..", links and absolute paths, so a scene
+// someone else made cannot read other files of the user's; data: URIs and
+// .glb chunks are always fine.
+struct FileAccess {
+  bool allowOutsideFolder = false;  // --allow-external-files
+};
+
+struct GltfImport {
+  Scene scene;
+  std::vector<std::string> warnings;  // one line each, already naming the file
+};
+
+// Reads a .gltf or .glb file; returns warnings instead of printing them.
+// `limits` bound what the file may make it allocate (input_limits.h): JSON
+// nesting, accessor element counts, decoded bytes, triangles, instances,
+// node visits and image sizes (read from each image's header first).
+GltfImport importGltf(const std::string& path, const FileAccess& access = {},
+                      const InputLimits& limits = {});
+
+// importGltf, with its warnings written to the log.
+Scene loadGltf(const std::string& path, const FileAccess& access = {},
+               const InputLimits& limits = {});
+
+// Whether `path` names a glTF file by its extension (.gltf, .glb; any case).
+bool isGltfPath(const std::string& path);
+
+}  // namespace penumbra::scene

@@ -1,0 +1,207 @@
+#include "penumbra/scene/gltf_materials.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/scene/tinygltf.h"
+#include "penumbra/util/error.h"
+
+namespace penumbra::scene::gltf {
+namespace {
+
+float clamp01(double v) {
+  return std::isfinite(v) ? float(std::clamp(v, 0.0, 1.0)) : 0.0f;
+}
+
+// tinygltf's Value::Get(key) asserts an object; extensions from a file may be anything.
+const tinygltf::Value* member(const tinygltf::Value& object, const char* key) {
+  return object.Has(key) ? &object.Get(key) : nullptr;
+}
+
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+  const auto* v = member(object, key);
+  return v && v->IsNumber() ? v->GetNumberAsDouble() : fallback;
+}
+
+glm::vec3 vec3(const tinygltf::Value& object, const char* key, glm::vec3 fallback) {
+  const auto* v = member(object, key);
+  if (!v || !v->IsArray() || v->ArrayLen() != 3) return fallback;
+  glm::vec3 r;
+  for (int i = 0; i < 3; ++i) {
+    const auto& c = v->Get(i);
+    r[i] = c.IsNumber() ? float(c.GetNumberAsDouble()) : fallback[i];
+  }
+  return r;
+}
+
+const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) {
+  auto it = m.extensions.find(name);
+  return it == m.extensions.end() ? nullptr : &it->second;
+}
+
+void convertAlpha(const tinygltf::Material& src, float alpha, const std::string& where,
+                  MaterialConversion& out, std::vector<std::string>& warnings) {
+  Material& m = out.material;
+  m.alpha = alpha;
+  const bool textured = src.pbrMetallicRoughness.baseColorTexture.index >= 0;
+  if (src.alphaMode == "MASK") {
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = std::isfinite(src.alphaCutoff) ? float(std::max(0.0, src.alphaCutoff)) : 0.5f;
+    // With a texture the renderer cuts per texel (alpha factor x texel alpha).
+    out.invisible = !textured && alpha < m.alphaCutoff;
+  } else if (src.alphaMode == "BLEND") {
+    // Rendered as stochastic coverage (alpha is the chance a ray stops), so
+    // the image converges to the glTF "over" blend of surface and background.
+    m.alphaMode = AlphaMode::Blend;
+  } else if (src.alphaMode != "OPAQUE") {
+    warnings.push_back(fmt::format("{}: alphaMode '{}' is not a glTF alpha mode; OPAQUE used",
+                                   where, src.alphaMode));
+  }
+}
+
+// Material extensions may carry textures of their own (clearcoatTexture,
+// transmissionTexture, ...); only their factors are read.
+void warnExtensionTextures(const tinygltf::Material& src, const std::string& where,
+                           std::vector<std::string>& warnings) {
+  for (const auto& [name, value] : src.extensions) {
+    std::string textures;
+    for (const auto& key : value.Keys())
+      if (member(value.Get(key), "index")) textures += (textures.empty() ? "" : ", ") + key;
+    if (!textures.empty())
+      warnings.push_back(fmt::format("{}: {} textures ({}) are not supported; factors used", where,
+                                     name, textures));
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string_view>& supportedExtensions() {
+  static const std::vector<std::string_view> names{"KHR_materials_emissive_strength",
+                                                   "KHR_materials_transmission",
+                                                   "KHR_materials_ior",
+                                                   "KHR_materials_volume",
+                                                   "KHR_materials_clearcoat",
+                                                   "KHR_materials_specular",
+                                                   "KHR_materials_sheen",
+                                                   "KHR_texture_transform",
+                                                   "KHR_lights_punctual"};  // gltf_lights.h
+  return names;
+}
+
+bool isSupportedExtension(std::string_view name) {
+  const auto& names = supportedExtensions();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+float f0FromIor(float ior) {
+  const float r = (ior - 1.0f) / (ior + 1.0f);
+  return r * r;
+}
+
+float specularFromF0(float f0) {
+  return std::clamp(f0 / 0.08f, 0.0f, 1.0f);
+}
+
+float clearcoatGlossFromRoughness(float roughness) {
+  const float alpha = roughness * roughness;
+  return std::clamp((0.1f - alpha) / (0.1f - 0.001f), 0.0f, 1.0f);
+}
+
+Material defaultMaterial() {
+  Material m;
+  m.name = "glTF default";
+  m.model = MaterialModel::Lambert;
+  m.baseColor = glm::vec3(1.0f);
+  m.metallic = 1.0f;
+  m.roughness = 1.0f;
+  m.specular = specularFromF0(f0FromIor(1.5f));
+  return m;
+}
+
+MaterialConversion convertMaterial(const tinygltf::Material& src, const std::string& where,
+                                   std::vector<std::string>& warnings) {
+  MaterialConversion out;
+  Material& m = out.material;
+  m = defaultMaterial();
+  m.name = src.name;
+  const auto& pbr = src.pbrMetallicRoughness;
+  float alpha = 1.0f;
+  if (pbr.baseColorFactor.size() == 4) {
+    for (int i = 0; i < 3; ++i) m.baseColor[i] = clamp01(pbr.baseColorFactor[size_t(i)]);
+    alpha = clamp01(pbr.baseColorFactor[3]);
+  }
+  m.metallic = clamp01(pbr.metallicFactor);
+  m.roughness = clamp01(pbr.roughnessFactor);
+  if (src.emissiveFactor.size() == 3)
+    for (int i = 0; i < 3; ++i)
+      m.emission[i] = std::isfinite(src.emissiveFactor[size_t(i)])
+                          ? float(std::max(0.0, src.emissiveFactor[size_t(i)]))
+                          : 0.0f;
+
+  convertAlpha(src, alpha, where, out, warnings);
+  m.normalScale = std::isfinite(src.normalTexture.scale) ? float(src.normalTexture.scale) : 1.0f;
+  m.occlusionStrength = clamp01(src.occlusionTexture.strength);
+  warnExtensionTextures(src, where, warnings);
+
+  if (const auto* e = extension(src, "KHR_materials_emissive_strength"))
+    m.emission *= float(std::max(0.0, number(*e, "emissiveStrength", 1.0)));
+
+  float ior = 1.5f;
+  if (const auto* e = extension(src, "KHR_materials_ior")) {
+    const double value = number(*e, "ior", 1.5);
+    ior = float(std::clamp(value, 1.0, 4.0));
+    if (ior != float(value))
+      warnings.push_back(fmt::format("{}: ior {} clamped to {}", where, value, ior));
+  }
+  m.ior = ior;
+  float f0 = f0FromIor(ior);
+  if (const auto* e = extension(src, "KHR_materials_specular")) {
+    const float strength = clamp01(number(*e, "specularFactor", 1.0));
+    const glm::vec3 color =
+        glm::max(vec3(*e, "specularColorFactor", glm::vec3(1.0f)), glm::vec3(0.0f));
+    const float peak = std::max({color.x, color.y, color.z});
+    f0 = std::min(f0 * peak, 1.0f) * strength;
+    if (color.x != color.y || color.y != color.z)
+      warnings.push_back(
+          fmt::format("{}: specularColorFactor's hue is dropped (its largest "
+                      "channel scales the reflectance)",
+                      where));
+  }
+  m.specular = specularFromF0(f0);
+
+  if (const auto* e = extension(src, "KHR_materials_transmission"))
+    m.specTrans = clamp01(number(*e, "transmissionFactor", 0.0));
+  // glTF transmission is thin-walled unless a volume gives it thickness.
+  m.thin = true;
+  if (const auto* e = extension(src, "KHR_materials_volume")) {
+    m.thin = !(number(*e, "thicknessFactor", 0.0) > 0.0);
+    const double distance = number(*e, "attenuationDistance", INFINITY);
+    if (!(distance > 0.0))
+      throw Error(fmt::format("{}: KHR_materials_volume attenuationDistance must be > 0", where));
+    m.attenuationDistance = float(distance);
+    if (const tinygltf::Value& c = e->Get("attenuationColor"); c.IsArray() && c.ArrayLen() == 3)
+      for (int k = 0; k < 3; ++k) m.attenuationColor[k] = clamp01(c.Get(k).GetNumberAsDouble());
+    if (m.thin && std::isfinite(distance))
+      warnings.push_back(
+          fmt::format("{}: volume attenuation needs thicknessFactor > 0 (a thin surface has no "
+                      "inside); ignored",
+                      where));
+  }
+
+  if (const auto* e = extension(src, "KHR_materials_clearcoat")) {
+    m.clearcoat = clamp01(number(*e, "clearcoatFactor", 0.0));
+    m.clearcoatGloss =
+        clearcoatGlossFromRoughness(clamp01(number(*e, "clearcoatRoughnessFactor", 0.0)));
+  }
+
+  if (const auto* e = extension(src, "KHR_materials_sheen")) {
+    const glm::vec3 color = glm::clamp(vec3(*e, "sheenColorFactor", glm::vec3(0.0f)), 0.0f, 1.0f);
+    m.sheen = std::max({color.x, color.y, color.z});
+    m.sheenTint = 0.0f;
+  }
+  return out;
+}
+
+}  // namespace penumbra::scene::gltf

@@ -1,0 +1,36 @@
+#pragma once
+// One glTF mesh primitive as a scene Mesh (positions, indices, normals,
+// tangents, uv0, uv1), checked against the file's data.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "penumbra/scene/input_limits.h"
+#include "penumbra/scene/scene.h"
+
+namespace tinygltf {
+class Model;
+struct Primitive;
+}  // namespace tinygltf
+
+namespace penumbra::scene::gltf {
+
+// What the primitives of one file may decode, summed as they are converted.
+struct DecodeBudget {
+  InputLimits limits;
+  uint64_t decodedBytes = 0;  // accessor data read (InputLimits::maxDecodedBytes)
+  uint64_t triangles = 0;     // triangles kept (InputLimits::maxTriangles)
+};
+
+// The primitive as a triangle list, or nothing (with a warning) when it is
+// not made of triangles or has no positions. `material` is the scene
+// material index to give it; `where` names it in errors. Before reading
+// anything, the accessors it reads and the triangles its index sequence can
+// make are charged to `budget`, and a primitive that would pass its limits
+// is an error naming the accessor or the count and the limit.
+std::optional<Mesh> convertPrimitive(const tinygltf::Model& model,
+                                     const tinygltf::Primitive& primitive, uint32_t material,
+                                     const std::string& where, std::vector<std::string>& warnings,
+                                     DecodeBudget& budget);
+
+}  // namespace penumbra::scene::gltf
