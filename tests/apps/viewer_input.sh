@@ -23,7 +23,7 @@
 set -eu
 viewer=$(readlink -f "$1")
 source_dir=$(readlink -f "$2")
-for tool in xvfb-run xdotool xwd xwdtopnm python3; do
+for tool in Xvfb xdotool xwd xwdtopnm python3; do
   command -v "$tool" >/dev/null 2>&1 || { echo "viewer input test: $tool not found (scripts/setup.sh installs it)" >&2; exit 1; }
 done
 work=$(mktemp -d)
@@ -95,7 +95,11 @@ xdotool key --window "$wid" F1
 sleep 1.5
 xwd -silent -id "$wid" > "$work/hidden.xwd"
 SESSION
-xvfb-run -a -s "-screen 0 1024x768x24" bash "$work/session.sh" "$work" "$viewer"
+# A display of the test's own: -displayfd picks a free one without the lock
+# race of `xvfb-run -a` against the other window tests running beside it.
+source "$(dirname "$0")/xvfb_display.sh"
+trap 'kill "$xvfb_pid" 2>/dev/null || true; [ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+bash "$work/session.sh" "$work" "$viewer" || { cat "$work/log" 2>/dev/null; exit 1; }
 cat "$work/log"
 xwdtopnm "$work/menus.xwd" > "$work/menus.ppm" 2>/dev/null
 xwdtopnm "$work/hidden.xwd" > "$work/hidden.ppm" 2>/dev/null
