@@ -35,6 +35,14 @@ std::vector<std::string> availableBackends() {
 
 rhi::DeviceHandle createDevice(const std::string& backend, const rhi::DeviceCreateInfo& info) {
   requireKnown(backend);
+  const rhi::BindingOffsets& o = info.bindingOffsets;
+  if (!o.valid())
+    throw Error(fmt::format(
+        "device: binding offsets b{} t{} u{} s{}, root-constant spaces {} and {}: the register "
+        "classes must start in the order b < t < u < s and the spaces differ "
+        "(DeviceCreateInfo::bindingOffsets)",
+        o.constantBuffer, o.shaderResource, o.unorderedAccess, o.sampler, o.pushConstantSpace,
+        o.shaderRecordSpace));
   rhi::faults::readEnvironment();  // a malformed PENUMBRA_INJECT_FAULT fails here
 #ifdef PENUMBRA_HAVE_D3D12
   if (backend == "d3d12") return rhi::validation::wrapDevice(d3d12::createDevice(info));

@@ -32,7 +32,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/penumbra DESTINATION ${PENUMBRA_I
 install(FILES ${PROJECT_SOURCE_DIR}/backends/backend_factory.h
   DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}/penumbra)
 # The structs and registers C++ shares with the shaders (path_tracer_shared.h
-# for render/path_tracer.h, bindings.hlsli for rhi/register_shifts.h), in
+# for render/path_tracer.h, bindings.hlsli for render/shader_binding_offsets.h), in
 # their own root, as the build's include directory of shaders/shared.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/shared/ DESTINATION ${PENUMBRA_INSTALL_SHADER_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h" PATTERN "bindings.hlsli")

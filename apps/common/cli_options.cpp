@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "penumbra/render/image_size.h"
+#include "penumbra/render/shader_binding_offsets.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::app {
@@ -13,6 +14,7 @@ rhi::DeviceCreateInfo DeviceOptions::createInfo() const {
   rhi::DeviceCreateInfo info;
   info.adapterIndex = device;
   info.validation = validation;
+  info.bindingOffsets = render::kShaderBindingOffsets;
   return info;
 }
 

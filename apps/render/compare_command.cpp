@@ -11,6 +11,7 @@
 #include "penumbra/image/image_compare.h"
 #include "penumbra/image/image_io.h"
 #include "penumbra/render/path_tracer.h"
+#include "penumbra/render/shader_binding_offsets.h"
 #include "penumbra/scene/scene_loader.h"
 #include "penumbra/util/error.h"
 
@@ -87,6 +88,7 @@ image::Image renderOn(const std::string& spec, const scene::Scene& scene, uint32
   auto [backend, index] = parseDeviceSpec(spec);
   rhi::DeviceCreateInfo info;
   info.adapterIndex = index;
+  info.bindingOffsets = render::kShaderBindingOffsets;
   auto device = backends::createDevice(backend, info);
   fmt::print("{}: {} via {}\n", spec, device->adapter().name, device->backendName());
   std::fflush(stdout);

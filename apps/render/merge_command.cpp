@@ -9,6 +9,7 @@
 #include "penumbra/batch/partial_render.h"
 #include "penumbra/batch/render_output.h"
 #include "penumbra/image/image_io.h"
+#include "penumbra/render/shader_binding_offsets.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::app {
@@ -55,6 +56,7 @@ int runMerge(const MergeOptions& o) {
   if (image::formatFromPath(o.out) == image::FileFormat::Png) {
     rhi::DeviceCreateInfo info;
     info.adapterIndex = o.device;
+    info.bindingOffsets = render::kShaderBindingOffsets;
     device = backends::createDevice(o.backend, info);
   }
   render::saveRender(device.get(), merged.image, o.out, merged.toneMapping);

@@ -111,13 +111,15 @@ rhi::DeviceHandle createDevice(const rhi::DeviceCreateInfo& info) {
     if (!a.info.supportsRayTracing())
       throw Error(fmt::format("d3d12: adapter {} ({}) has no DXR (needs D3D12_RAYTRACING_TIER_1_0)",
                               info.adapterIndex, a.info.name));
-    return std::make_shared<D3D12Device>(factory, std::move(a), info.validation);
+    return std::make_shared<D3D12Device>(factory, std::move(a), info.validation,
+                                         info.bindingOffsets);
   }
   // Default: the first GPU with DXR; a software adapter (WARP) only if no GPU has it.
   for (int pass = 0; pass < 2; ++pass)
     for (auto& a : adapters)
       if (a.info.supportsRayTracing() && (pass == 1 || a.info.type != rhi::AdapterType::Cpu))
-        return std::make_shared<D3D12Device>(factory, std::move(a), info.validation);
+        return std::make_shared<D3D12Device>(factory, std::move(a), info.validation,
+                                             info.bindingOffsets);
   throw Error("d3d12: no adapter supports DXR (D3D12_RAYTRACING_TIER_1_0)");
 }
 

@@ -346,8 +346,12 @@ class D3D12CommandList final : public rhi::ICommandList {
 
 class D3D12Device final : public rhi::IDevice {
  public:
-  D3D12Device(ComPtr<IDXGIFactory4> factory, Adapter adapter, bool validation);
+  D3D12Device(ComPtr<IDXGIFactory4> factory, Adapter adapter, bool validation,
+              const rhi::BindingOffsets& bindingOffsets);
   ~D3D12Device() override;
+  // The shaders' register shifts and root-constant spaces, which root
+  // signatures map reflected bindings back through.
+  const rhi::BindingOffsets& bindingOffsets() const { return bindingOffsets_; }
   const char* backendName() const override { return "d3d12"; }
   const rhi::AdapterInfo& adapter() const override { return adapter_.info; }
   rhi::BufferHandle createBuffer(const rhi::BufferDesc& desc) override;
@@ -388,6 +392,7 @@ class D3D12Device final : public rhi::IDevice {
   void drainMessages() const;
   ComPtr<IDXGIFactory4> factory_;
   Adapter adapter_;
+  rhi::BindingOffsets bindingOffsets_;
   ComPtr<ID3D12Device5> device_;
   ComPtr<ID3D12CommandQueue> queue_;
   ComPtr<ID3D12Fence> fence_;

@@ -21,8 +21,9 @@ constexpr uint32_t kCpuDescriptors = 4096;
 constexpr uint32_t kShaderVisibleSamplers = 2048;
 }  // namespace
 
-D3D12Device::D3D12Device(ComPtr<IDXGIFactory4> factory, Adapter adapter, bool validation)
-    : factory_(std::move(factory)), adapter_(std::move(adapter)) {
+D3D12Device::D3D12Device(ComPtr<IDXGIFactory4> factory, Adapter adapter, bool validation,
+                         const rhi::BindingOffsets& bindingOffsets)
+    : factory_(std::move(factory)), adapter_(std::move(adapter)), bindingOffsets_(bindingOffsets) {
   check(library().createDevice(adapter_.adapter.Get(), D3D_FEATURE_LEVEL_11_0, IID_PPV_ARGS(&device_)),
         "D3D12CreateDevice (ID3D12Device5)");
   setName(device_.Get(), adapter_.info.name);

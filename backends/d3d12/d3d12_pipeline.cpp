@@ -69,7 +69,8 @@ ComPtr<ID3D12RootSignature> createRootSignature(D3D12Device& device, const D3D12
 // array (root_signature_layout.h).
 D3D12RootSignature::D3D12RootSignature(D3D12Device& device, rhi::PipelineBindingLayout layout,
                                        const std::string& name, D3D12_ROOT_SIGNATURE_FLAGS flags)
-    : layout_(std::move(layout)), rootLayout_(rhi::computeRootSignatureLayout(layout_)) {
+    : layout_(std::move(layout)),
+      rootLayout_(rhi::computeRootSignatureLayout(layout_, device.bindingOffsets())) {
   std::vector<D3D12_ROOT_PARAMETER1> parameters(rootLayout_.parameterCount());
   std::vector<std::vector<D3D12_DESCRIPTOR_RANGE1>> ranges;
   if (rootLayout_.pushConstants) {
@@ -279,7 +280,8 @@ class StateObjectParts {
 // A local root signature of `bytes` of shader-record constants.
 ComPtr<ID3D12RootSignature> localRootSignature(D3D12Device& device, uint32_t bytes,
                                                const std::string& pipelineName) {
-  const rhi::RootConstantsLayout constants = rhi::computeShaderRecordConstants(bytes);
+  const rhi::RootConstantsLayout constants =
+      rhi::computeShaderRecordConstants(bytes, device.bindingOffsets());
   D3D12_ROOT_PARAMETER1 parameter{};
   parameter.ParameterType = D3D12_ROOT_PARAMETER_TYPE_32BIT_CONSTANTS;
   parameter.Constants.ShaderRegister = constants.shaderRegister;

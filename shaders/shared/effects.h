@@ -18,21 +18,26 @@
 #define PT_EFFECT_TEXTURES 64      // material textures: base colour, metallic-roughness, emission, normal maps
 #define PT_EFFECT_ALPHA_MASK 128   // alphaMode MASK (textured) or BLEND: an any-hit shader cuts the surface
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
-#define PT_EFFECTS_ALL 767         // the eight bits above and the environment
+// Every effect: the eight bits above and the environment.
+#define PT_EFFECTS_ALL                                                                            \
+  (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | \
+   PT_EFFECT_CLEARCOAT | PT_EFFECT_SHEEN | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK |            \
+   PT_EFFECT_ENVIRONMENT)
 // Not a scene effect but an output: the path tracer writes the denoiser's
 // guide buffers (PathTracerSettings::writeGuides). Its code and the state it
 // keeps alive across every trace cost about a tenth of a Cornell box frame,
 // so a render nobody denoises builds without it.
 #define PT_OUTPUT_GUIDES 256
 
-// The effects each entry point is compiled in variants of (cmake/Shaders.cmake
-// builds one variant per subset of these bits). Alpha masking is no variant:
-// it adds an any-hit shader to the triangles' hit group instead.
-#define PT_PATH_TRACE_EFFECT_BITS 895  // every effect but alpha masking, and the guides
-#define PT_WHITTED_EFFECT_BITS (PT_EFFECT_SPECULAR + PT_EFFECT_TRANSMISSION + PT_EFFECT_TEXTURES + PT_EFFECT_ENVIRONMENT)
+// The effects each entry point is compiled in variants of (the subsets listed
+// in shaders/effect_variants.cmake). Alpha masking is no variant: it adds an
+// any-hit shader to the triangles' hit group instead.
+#define PT_PATH_TRACE_EFFECT_BITS ((PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) & ~PT_EFFECT_ALPHA_MASK)
+#define PT_WHITTED_EFFECT_BITS \
+  (PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | PT_EFFECT_TEXTURES | PT_EFFECT_ENVIRONMENT)
 
 #ifndef PT_EFFECTS
-#define PT_EFFECTS 1023  // PT_EFFECTS_ALL | PT_OUTPUT_GUIDES
+#define PT_EFFECTS (PT_EFFECTS_ALL | PT_OUTPUT_GUIDES)
 #endif
 #define PT_HAS_EFFECT(effect) ((PT_EFFECTS & (effect)) != 0)
 

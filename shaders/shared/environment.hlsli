@@ -33,14 +33,14 @@ bool environmentPresent(FrameConstants c) {
 
 // The map's direction for a world direction: the rotation undone.
 float3 environmentToMap(EnvironmentData e, float3 d) {
-  float c = e.transform.x;
-  float s = e.transform.y;
+  float c = e.cosRotation;
+  float s = e.sinRotation;
   return float3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
 }
 
 float3 environmentToWorld(EnvironmentData e, float3 m) {
-  float c = e.transform.x;
-  float s = e.transform.y;
+  float c = e.cosRotation;
+  float s = e.sinRotation;
   return float3(c * m.x + s * m.z, m.y, -s * m.x + c * m.z);
 }
 
@@ -53,21 +53,21 @@ float2 environmentUv(float3 m) {
 }
 
 uint environmentTexelIndex(EnvironmentData e, float2 uv) {
-  uint x = min(uint(uv.x * float(e.size.x)), e.size.x - 1u);
-  uint y = min(uint(uv.y * float(e.size.y)), e.size.y - 1u);
-  return y * e.size.x + x;
+  uint x = min(uint(uv.x * float(e.width)), e.width - 1u);
+  uint y = min(uint(uv.y * float(e.height)), e.height - 1u);
+  return y * e.width + x;
 }
 
 // dw = 2 pi^2 sin(theta) du dv.
 float environmentSolidAnglePdf(EnvironmentData e, float texelProbability, float sinTheta) {
-  return sinTheta > 0.0 ? texelProbability * float(e.size.x * e.size.y) / (2.0 * kPi * kPi * sinTheta) : 0.0;
+  return sinTheta > 0.0 ? texelProbability * float(e.width * e.height) / (2.0 * kPi * kPi * sinTheta) : 0.0;
 }
 
 // Radiance arriving along -direction, i.e. seen looking along `direction`.
 float3 environmentRadiance(float3 direction) {
   EnvironmentData e = loadEnvironment();
   float2 uv = environmentUv(environmentToMap(e, direction));
-  return loadEnvironmentTexel(environmentTexelIndex(e, uv)).xyz * e.transform.z;
+  return loadEnvironmentTexel(environmentTexelIndex(e, uv)).xyz * e.intensity;
 }
 
 // The solid-angle density with which sampleEnvironment draws `direction`.
@@ -105,8 +105,8 @@ struct EnvironmentSample {
 EnvironmentSample sampleEnvironment(float u0, float u1) {
   EnvironmentData e = loadEnvironment();
   EnvironmentSample s;
-  uint width = e.size.x;
-  uint height = e.size.y;
+  uint width = e.width;
+  uint height = e.height;
   uint row = environmentSearch(0u, height, u0);
   float rowLow = row > 0u ? loadEnvironmentCdf(row - 1u) : 0.0;
   float rowHigh = loadEnvironmentCdf(row);
@@ -135,7 +135,7 @@ EnvironmentSample sampleEnvironment(float u0, float u1) {
   // environmentPdf gives MIS for the same direction.
   float3 back = environmentToMap(e, s.direction);
   float4 texel = loadEnvironmentTexel(environmentTexelIndex(e, environmentUv(back)));
-  s.radiance = texel.xyz * e.transform.z;
+  s.radiance = texel.xyz * e.intensity;
   s.pdf = environmentSolidAnglePdf(e, texel.w, sqrt(max(0.0, 1.0 - back.y * back.y)));
   return s;
 }

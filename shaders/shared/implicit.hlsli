@@ -189,7 +189,7 @@ SurfaceHit implicitSurfaceHit(ImplicitData o, float3 worldOrigin, float3 worldDi
   h.position = worldOrigin + hitT * worldDirection;
   h.hitT = hitT;
   h.geometricNormal = objectToWorldNormal(o, objectNormal);
-  h.instanceIndex = o.info.y;
+  h.instanceIndex = o.instanceIndex;
   h.primitiveIndex = 0u;
   // No vertex attributes: the surface shades with its true normal.
   h.shadingNormal = h.geometricNormal;

@@ -47,15 +47,12 @@ float emissiveTrianglePdfArea(uint index) {
   return tri.probability / tri.area;
 }
 
-// spot.w holds a spot's cos(outer angle) in [-1, 1], or a marker below it.
-bool isDirectionalLight(PointLight light) {
-  return light.spot.w < 0.5 * (PT_LIGHT_POINT + PT_LIGHT_DIRECTIONAL);
-}
-bool isSpotLight(PointLight light) { return light.spot.w > 0.5 * (-1.0 + PT_LIGHT_POINT); }
+bool isDirectionalLight(PointLight light) { return light.type == PT_LIGHT_DIRECTIONAL; }
+bool isSpotLight(PointLight light) { return light.type == PT_LIGHT_SPOT; }
 
 // A soft sun: a directional light whose disk subtends an angular radius
-// (position.w = its cosine, below 1).
-bool isSoftSun(PointLight light) { return isDirectionalLight(light) && light.position.w < 1.0; }
+// (cosInner = its cosine, below 1).
+bool isSoftSun(PointLight light) { return isDirectionalLight(light) && light.cosInner < 1.0; }
 
 // Irradiance a delta light gives at `position` on a surface facing it: a
 // directional light's own, else intensity / distance^2 times the spot's
@@ -69,39 +66,39 @@ bool isSoftSun(PointLight light) { return isDirectionalLight(light) && light.pos
 // delta light. u.x < 0 takes the disk's centre with E (Whitted: hard shadows).
 float3 pointLightIncident(PointLight light, float3 position, float2 u, out float3 toLight, out float distance) {
   if (isDirectionalLight(light)) {
-    toLight = -light.spot.xyz;
+    toLight = -light.direction;
     distance = PT_DIRECTIONAL_SHADOW_LENGTH;
-    float cosRadius = light.position.w;
-    if (cosRadius >= 1.0 || u.x < 0.0) return light.intensity.xyz;
+    float cosRadius = light.cosInner;
+    if (cosRadius >= 1.0 || u.x < 0.0) return light.intensity;
     float cosTheta = 1.0 - u.x * (1.0 - cosRadius);
     float sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
     float phi = 2.0 * kPi * u.y;
     Frame f = frameFromNormal(toLight);
     toLight = normalize(f.tangent * (sinTheta * cos(phi)) + f.bitangent * (sinTheta * sin(phi)) + f.normal * cosTheta);
-    return light.intensity.xyz * (2.0 / (1.0 + cosRadius));
+    return light.intensity * (2.0 / (1.0 + cosRadius));
   }
-  float3 d = light.position.xyz - position;
+  float3 d = light.position - position;
   distance = length(d);
   toLight = distance > 0.0 ? d / distance : float3(0.0, 0.0, 1.0);
   if (distance <= 0.0) return zero3();
   float falloff = 1.0;
-  float cosOuter = light.spot.w;
   if (isSpotLight(light)) {
     // (cos - cos outer) / (cos inner - cos outer), squared; a hard edge
     // when the cones are equal.
-    float cosInner = light.position.w;
-    float cosAngle = dot(-toLight, light.spot.xyz);
+    float cosOuter = light.cosOuter;
+    float cosInner = light.cosInner;
+    float cosAngle = dot(-toLight, light.direction);
     float t = cosInner > cosOuter ? saturate((cosAngle - cosOuter) / (cosInner - cosOuter))
                                   : (cosAngle >= cosOuter ? 1.0 : 0.0);
     falloff = t * t;
   }
-  float range = light.intensity.w;
+  float range = light.range;
   if (range > 0.0) {
     float r = distance / range;
     float window = saturate(1.0 - r * r * r * r);
     falloff *= window * window;
   }
-  return light.intensity.xyz * (falloff / (distance * distance));
+  return light.intensity * (falloff / (distance * distance));
 }
 
 // The segment a shadow ray from `spawn` to the light must find empty;
@@ -112,7 +109,7 @@ float3 pointLightShadowSegment(PointLight light, float3 spawn, float3 toLight, o
     segmentLength = PT_DIRECTIONAL_SHADOW_LENGTH;
     return toLight;
   }
-  float3 d = light.position.xyz - spawn;
+  float3 d = light.position - spawn;
   segmentLength = length(d);
   return segmentLength > 0.0 ? d / segmentLength : float3(0.0, 0.0, 1.0);
 }

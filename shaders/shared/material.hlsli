@@ -14,12 +14,12 @@ struct PhongMaterial {
 
 PhongMaterial unpackPhong(MaterialData d) {
   PhongMaterial p;
-  p.kd = d.baseColor.xyz;
-  p.ks = d.phong.x;
-  p.exponent = d.phong.y;
-  p.reflectivity = d.phong.z;
-  p.transparency = d.phong.w;
-  p.ior = d.disney2.z;
+  p.kd = d.baseColor;
+  p.ks = d.ks;
+  p.exponent = d.phongExponent;
+  p.reflectivity = d.reflectivity;
+  p.transparency = d.transparency;
+  p.ior = d.ior;
   return p;
 }
 
@@ -29,22 +29,22 @@ PhongMaterial unpackPhong(MaterialData d) {
 // (alpha = sqrt(2 / (n + 2))), transparency -> specTrans.
 DisneyMaterial unpackDisney(MaterialData d) {
   DisneyMaterial m;
-  m.baseColor = d.baseColor.xyz;
-  m.metallic = d.disney0.x;
-  m.roughness = d.disney0.y;
-  m.anisotropic = d.disney0.z;
-  m.specular = d.disney0.w;
-  m.specularTint = d.disney1.x;
-  m.sheen = d.disney1.y;
-  m.sheenTint = d.disney1.z;
-  m.clearcoat = d.disney1.w;
-  m.clearcoatGloss = d.disney2.x;
-  m.specTrans = d.disney2.y;
-  m.ior = d.disney2.z;
-  m.subsurface = d.disney2.w;
-  m.thin = (d.flags.y & MATERIAL_FLAG_THIN) != 0u;
-  m.lambertDiffuse = (d.flags.y & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
-  if (d.flags.x == MATERIAL_MODEL_PHONG) {
+  m.baseColor = d.baseColor;
+  m.metallic = d.metallic;
+  m.roughness = d.roughness;
+  m.anisotropic = d.anisotropic;
+  m.specular = d.specular;
+  m.specularTint = d.specularTint;
+  m.sheen = d.sheen;
+  m.sheenTint = d.sheenTint;
+  m.clearcoat = d.clearcoat;
+  m.clearcoatGloss = d.clearcoatGloss;
+  m.specTrans = d.specTrans;
+  m.ior = d.ior;
+  m.subsurface = d.subsurface;
+  m.thin = (d.flags & MATERIAL_FLAG_THIN) != 0u;
+  m.lambertDiffuse = (d.flags & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
+  if (d.model == MATERIAL_MODEL_PHONG) {
     PhongMaterial p = unpackPhong(d);
     m.metallic = p.reflectivity;
     m.baseColor = p.reflectivity > 0.0 ? lerp(p.kd, splat3(1.0), p.reflectivity) : p.kd;

@@ -369,7 +369,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   // Beer-Lambert: a ray that meets a surface from behind travelled inside
   // it (closed, non-nested solids) through the medium the material holds.
   if (dot(direction, hit.geometricNormal) > 0.0)
-    p.throughput *= exp(-data.absorption.xyz * hit.hitT);
+    p.throughput *= exp(-data.absorption * hit.hitT);
 #endif
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
@@ -377,7 +377,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   // of an implicit surface).
   float cosLight = -dot(direction, hit.geometricNormal);
   if (instance.firstEmissiveTriangle != PT_NO_EMISSION && cosLight > 0.0) {
-    float3 emitted = p.throughput * data.emission.xyz;
+    float3 emitted = p.throughput * data.emission;
     // An emitter NEE never samples has light pdf 0: BSDF sampling is the
     // only strategy that finds it, so its MIS weight is 1.
     bool neeSamples = instance.firstEmissiveTriangle != PT_EMISSION_NOT_SAMPLED;

@@ -1,6 +1,7 @@
-// Data shared by the host and the path-tracing shaders. Every struct is made
-// of 16-byte vectors so std430 (Vulkan) and HLSL structured-buffer layouts
-// match the C++ layout; the C++ side static_asserts the sizes.
+// Data shared by the host and the path-tracing shaders. Every field is named;
+// rows are 16 bytes (four scalars, a float4, a float3 and a scalar, or two
+// float2s), so std430 (Vulkan) and HLSL structured-buffer layouts match the
+// C++ layout; the C++ side static_asserts sizes and row offsets.
 #ifndef PENUMBRA_PATH_TRACER_SHARED_H
 #define PENUMBRA_PATH_TRACER_SHARED_H
 
@@ -98,20 +99,20 @@ namespace penumbra::gpu {
 // Rng.sampler (shaders/shared/rng.hlsli).
 #define RNG_SAMPLER_RANDOM 0u
 #define RNG_SAMPLER_SOBOL 1u
-// Bits 8-9 of sampling.w: how non-delta directions are sampled.
+// Bits 8-9 of FrameConstants.flags: how non-delta directions are sampled.
 #define PT_DIRECTIONS_BSDF 0u        // importance-sample the BSDF
 #define PT_DIRECTIONS_UNIFORM 1u     // uniform over the hemisphere (sphere if transmissive)
 #define PT_DIRECTIONS_COSINE 2u      // cosine-weighted about the side wo is on
 #define PT_DIRECTIONS_SHIFT 8u
 
-// MaterialData.flags.x
+// MaterialData.model
 #define MATERIAL_MODEL_DISNEY 0u
 #define MATERIAL_MODEL_PHONG 1u
-// MaterialData.flags.y bits
+// MaterialData.flags bits
 #define MATERIAL_FLAG_THIN 1u
 #define MATERIAL_FLAG_LAMBERT_DIFFUSE 2u
 
-// MaterialData.textures2.y: glTF alpha modes.
+// MaterialData.alphaMode: glTF alpha modes.
 #define MATERIAL_ALPHA_OPAQUE 0u
 #define MATERIAL_ALPHA_MASK 1u
 #define MATERIAL_ALPHA_BLEND 2u  // stochastic coverage: a ray stops with probability alpha
@@ -124,7 +125,7 @@ namespace penumbra::gpu {
 // cannot sample (implicit surfaces): BSDF-sampled hits count it in full.
 #define PT_EMISSION_NOT_SAMPLED 0xfffffffeu
 
-// ImplicitData.info.x: the kind (= scene::ImplicitKind).
+// ImplicitData.kind (= scene::ImplicitKind).
 #define IMPLICIT_SPHERE 0u
 #define IMPLICIT_PLANE 1u
 #define IMPLICIT_BOX 2u
@@ -172,12 +173,15 @@ struct InstanceData {
   float4 worldToObject0;
   float4 worldToObject1;
   float4 worldToObject2;
-  // x: PT_VERTEX_* bits, the vertex attributes the mesh has (the others are
-  // zero in their buffers and not read); yzw unused.
-  uint4 vertexAttributes;
+  // PT_VERTEX_* bits: the vertex attributes the mesh has (the others are zero
+  // in their buffers and not read).
+  uint vertexAttributes;
+  uint unused0;
+  uint unused1;
+  uint unused2;
 };
 
-// InstanceData.vertexAttributes.x bits. Without normals a triangle shades
+// InstanceData.vertexAttributes bits. Without normals a triangle shades
 // with its face normal; without tangents its frame is built from the normal.
 #define PT_VERTEX_NORMALS 1u
 #define PT_VERTEX_TANGENTS 2u
@@ -185,47 +189,91 @@ struct InstanceData {
 
 // Disney parameters (docs/materials.md) and the Phong parameters of Whitted.
 struct MaterialData {
-  float4 baseColor;  // rgb; Phong: kd
-  float4 emission;   // rgb radiance, emitted from the front (counter-clockwise) face
-  float4 disney0;    // x metallic, y roughness, z anisotropic, w specular
-  float4 disney1;    // x specularTint, y sheen, z sheenTint, w clearcoat
-  float4 disney2;    // x clearcoatGloss, y specTrans, z ior, w subsurface
-  float4 phong;      // x ks, y exponent, z reflectivity, w transparency (ior: disney2.z)
-  uint4 flags;       // x MATERIAL_MODEL_*, y MATERIAL_FLAG_* bits
-  // TextureRefData indices (PT_NO_TEXTURE: none): x base colour, y
-  // metallic-roughness, z normal, w emission.
-  uint4 textures;
-  uint4 textures2;        // x occlusion texture, y MATERIAL_ALPHA_* mode
-  float4 textureParams;   // x normal scale, y occlusion strength, z base-colour alpha, w alpha cutoff
-  float4 absorption;      // rgb absorption coefficient of the medium inside (per world unit); 0: clear
+  float3 baseColor;  // Phong: kd
+  float unused0;
+  float3 emission;  // radiance, emitted from the front (counter-clockwise) face
+  float unused1;
+  float metallic;
+  float roughness;
+  float anisotropic;
+  float specular;
+  float specularTint;
+  float sheen;
+  float sheenTint;
+  float clearcoat;
+  float clearcoatGloss;
+  float specTrans;
+  float ior;  // Disney and Phong
+  float subsurface;
+  float ks;  // Phong (Whitted): specular weight
+  float phongExponent;
+  float reflectivity;  // Phong: mirror reflection
+  float transparency;  // Phong: refraction
+  uint model;          // MATERIAL_MODEL_*
+  uint flags;          // MATERIAL_FLAG_* bits
+  uint unused2;
+  uint unused3;
+  // TextureRefData indices, PT_NO_TEXTURE where there is none.
+  uint baseColorTexture;
+  uint metallicRoughnessTexture;
+  uint normalTexture;
+  uint emissionTexture;
+  uint occlusionTexture;
+  uint alphaMode;  // MATERIAL_ALPHA_*
+  uint unused4;
+  uint unused5;
+  float normalScale;
+  float occlusionStrength;
+  float alpha;        // base-colour alpha (the texture's alpha multiplies it)
+  float alphaCutoff;  // alphaMode MASK
+  float3 absorption;  // absorption coefficient of the medium inside (per world unit); 0: clear
+  float unused6;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
 // chosen texture coordinates (KHR_texture_transform), then sampled at LOD 0.
 struct TextureRefData {
-  float4 transform;  // xy column c0, zw column c1
-  float4 offset;     // xy column c2
-  uint4 ids;         // x texture (PT_T_TEXTURES index), y sampler (PT_S_SAMPLERS index), z texCoord set (0, 1)
+  float2 column0;  // c0
+  float2 column1;  // c1
+  float2 column2;  // c2
+  float2 unused0;
+  uint textureIndex;  // into PT_T_TEXTURES
+  uint samplerIndex;  // into PT_S_SAMPLERS
+  uint texCoordSet;   // 0: TEXCOORD_0, 1: TEXCOORD_1
+  uint unused1;
 };
 
 // A delta light: point, spot or directional (scene::PointLight).
 struct PointLight {
-  float4 position;   // xyz (none for a directional light); w cos(inner cone angle) of a spot light,
-                     // a directional light's cos(angular radius) (1: a delta light; less: a soft sun)
-  float4 intensity;  // rgb radiant intensity (W/sr), a directional light's irradiance (W/m^2);
-                     // w range (0: none), beyond which the light does not reach
-  float4 spot;       // xyz the direction the light faces (spot) or travels (directional);
-                     // w cos(outer cone angle) of a spot, else PT_LIGHT_POINT or PT_LIGHT_DIRECTIONAL
+  float3 position;  // render space; none for a directional light
+  // A spot light's cos(inner cone angle); a directional light's cos(angular
+  // radius) (1: a delta light; less: a soft sun).
+  float cosInner;
+  float3 intensity;  // radiant intensity (W/sr); a directional light's irradiance (W/m^2)
+  float range;       // beyond which the light does not reach (0: no limit)
+  float3 direction;  // the direction a spot light faces or a directional light travels
+  float cosOuter;    // a spot light's cos(outer cone angle)
+  uint type;         // PT_LIGHT_*
+  uint unused0;
+  uint unused1;
+  uint unused2;
 };
-#define PT_LIGHT_POINT -2.0
-#define PT_LIGHT_DIRECTIONAL -3.0
+#define PT_LIGHT_POINT 0u
+#define PT_LIGHT_SPOT 1u
+#define PT_LIGHT_DIRECTIONAL 2u
 // A directional light's shadow rays end this far away (world units).
 #define PT_DIRECTIONAL_SHADOW_LENGTH 1e30
 
 // The environment map's layout and placement (shaders/shared/environment.hlsli).
 struct EnvironmentData {
-  uint4 size;        // x width, y height (texels)
-  float4 transform;  // x cos, y sin of the rotation about +y; z intensity (scales the radiance)
+  uint width;  // texels
+  uint height;
+  uint unused0;
+  uint unused1;
+  float cosRotation;  // of the rotation about +y
+  float sinRotation;
+  float intensity;  // scales the radiance
+  float unused2;
 };
 
 // An emitting triangle in world space, for next-event estimation. A textured
@@ -257,50 +305,69 @@ struct ImplicitData {
   // extents; torus: x major, y minor radius; rounded box: xyz half extents,
   // w corner radius; mandelbulb: x power, y iterations
   float4 shape;
-  float4 boundsMin;  // xyz object-space box holding the surface; w sphere-tracing tolerance
-  float4 boundsMax;  // xyz; w blend radius
-  // x IMPLICIT_* kind, y InstanceData index, z max sphere-tracing steps,
-  // w blend primitive count
-  uint4 info;
-  uint4 blendKinds;                                    // IMPLICIT_* kind of each blend primitive
+  float3 boundsMin;  // object-space box holding the surface
+  float tolerance;   // sphere tracing: a hit is this close
+  float3 boundsMax;
+  float blendRadius;   // IMPLICIT_BLEND: the smooth union's radius
+  uint kind;           // IMPLICIT_*
+  uint instanceIndex;  // InstanceData index
+  uint maxSteps;       // sphere tracing
+  uint blendCount;     // IMPLICIT_BLEND: primitives used of blendKinds/Offsets/Shapes
+  uint4 blendKinds;    // IMPLICIT_* kind of each blend primitive (one per component)
   float4 blendOffsets[IMPLICIT_MAX_BLEND_PRIMITIVES];  // xyz: where each primitive's origin lies
   float4 blendShapes[IMPLICIT_MAX_BLEND_PRIMITIVES];   // each primitive's parameters, as `shape`
 };
 
 // A world-space ray of PathTracer::traceProbeRays (tMin 0).
 struct ProbeRay {
-  float4 origin;     // xyz; w tMax
-  float4 direction;  // xyz (hitT is in units of its length)
+  float3 origin;
+  float tMax;
+  float3 direction;  // hitT is in units of its length
+  float unused0;
 };
 
 // What the closest hit reported for one ProbeRay (SurfaceHit's fields).
 struct ProbeHit {
-  float4 position;  // xyz world position; w hitT (< 0: miss)
-  float4 normal;    // xyz geometric normal (front side)
-  uint4 ids;        // x instance index, y primitive index
+  float3 position;  // world
+  float hitT;       // < 0: a miss
+  float3 normal;    // geometric, front side
+  float unused0;
+  uint instanceIndex;
+  uint primitiveIndex;
+  uint unused1;
+  uint unused2;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(ImplicitData) == 256);
-static_assert(offsetof(ImplicitData, info) == 96);
+static_assert(offsetof(ImplicitData, boundsMin) == 64 && offsetof(ImplicitData, boundsMax) == 80 &&
+              offsetof(ImplicitData, kind) == 96);
 static_assert(offsetof(ImplicitData, blendOffsets) == 128);
 static_assert(offsetof(ImplicitData, blendShapes) == 192);
-static_assert(sizeof(ProbeRay) == 32);
-static_assert(sizeof(ProbeHit) == 48);
+static_assert(sizeof(ProbeRay) == 32 && offsetof(ProbeRay, direction) == 16);
+static_assert(sizeof(ProbeHit) == 48 && offsetof(ProbeHit, normal) == 16 &&
+              offsetof(ProbeHit, instanceIndex) == 32);
 // The offsets std430 and HLSL packing give (each float3 opens a 16-byte row).
 static_assert(sizeof(FrameConstants) == 128);
 static_assert(offsetof(FrameConstants, width) == 64 && offsetof(FrameConstants, seed) == 80 &&
               offsetof(FrameConstants, emissiveTriangleCount) == 96 &&
               offsetof(FrameConstants, ambient) == 112 &&
               offsetof(FrameConstants, radianceClamp) == 124);
-static_assert(sizeof(PointLight) == 48);
-static_assert(sizeof(InstanceData) == 128);
-static_assert(sizeof(MaterialData) == 176);
-static_assert(sizeof(TextureRefData) == 48);
+static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 &&
+              offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
+static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
+              offsetof(InstanceData, vertexAttributes) == 112);
+static_assert(sizeof(MaterialData) == 176 && offsetof(MaterialData, emission) == 16 &&
+              offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
+              offsetof(MaterialData, baseColorTexture) == 112 &&
+              offsetof(MaterialData, normalScale) == 144 &&
+              offsetof(MaterialData, absorption) == 160);
+static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
+              offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&
               offsetof(EmissiveTriangle, emissionTexture) == 44 &&
               offsetof(EmissiveTriangle, uv0) == 64 && offsetof(EmissiveTriangle, uv2) == 80);
-static_assert(sizeof(EnvironmentData) == 32);
+static_assert(sizeof(EnvironmentData) == 32 && offsetof(EnvironmentData, cosRotation) == 16);
 }  // namespace penumbra::gpu
 #endif
 #endif

@@ -5,9 +5,14 @@
 
 ProbeHit packProbeHit(SurfaceHit hit) {
   ProbeHit p;
-  p.position = float4(hit.position, hit.hitT);
-  p.normal = float4(hit.geometricNormal, 0.0);
-  p.ids = uint4(hit.instanceIndex, hit.primitiveIndex, 0u, 0u);
+  p.position = hit.position;
+  p.hitT = hit.hitT;
+  p.normal = hit.geometricNormal;
+  p.unused0 = 0.0;
+  p.instanceIndex = hit.instanceIndex;
+  p.primitiveIndex = hit.primitiveIndex;
+  p.unused1 = 0u;
+  p.unused2 = 0u;
   return p;
 }
 

@@ -46,17 +46,17 @@ float smoothMin(float a, float b, float k) {
 
 float sdfBlend(ImplicitData o, float3 p) {
   float d = sdfPrimitive(o.blendKinds.x, o.blendShapes[0], p - o.blendOffsets[0].xyz);
-  for (uint i = 1u; i < o.info.w; i += 1u) {
+  for (uint i = 1u; i < o.blendCount; i += 1u) {
     float next = sdfPrimitive(o.blendKinds[i], o.blendShapes[i], p - o.blendOffsets[i].xyz);
-    d = smoothMin(d, next, o.boundsMax.w);
+    d = smoothMin(d, next, o.blendRadius);
   }
   return d;
 }
 
 // Torus, rounded box and blend: the sphere-traced kinds of the "sdf" family.
 float sdfObjectDistance(ImplicitData o, float3 p) {
-  if (o.info.x == IMPLICIT_BLEND) return sdfBlend(o, p);
-  return sdfPrimitive(o.info.x, o.shape, p);
+  if (o.kind == IMPLICIT_BLEND) return sdfBlend(o, p);
+  return sdfPrimitive(o.kind, o.shape, p);
 }
 
 // The Mandelbulb's distance estimator 0.5 r ln(r) / |dz/dc| (Hart et al.

@@ -31,14 +31,14 @@ float3 gradientSampleOffset(uint k, float h) {
 // by the host so that entry point is clear of the surface) until the
 // distance drops below the tolerance. Steps are at least the tolerance, so a
 // step may end just past the surface; the distance is then negative and
-// still reports the hit. info.z distance evaluations without a hit is a
+// still reports the hit. maxSteps distance evaluations without a hit is a
 // miss, as is leaving the bounds or passing sMax. Without `needNormal` (a
 // shadow ray, which runs no closest-hit shader) the hit's normal is not
 // estimated: that saves the gradient's six distance evaluations per hit.
 ImplicitHit sphereTrace(ImplicitData o, ObjectRay ray, bool needNormal) {
-  float tolerance = o.boundsMin.w;
-  uint maxSteps = o.info.z;
-  SlabSpan span = intersectSlabs(ray.origin, ray.direction, o.boundsMin.xyz, o.boundsMax.xyz);
+  float tolerance = o.tolerance;
+  uint maxSteps = o.maxSteps;
+  SlabSpan span = intersectSlabs(ray.origin, ray.direction, o.boundsMin, o.boundsMax);
   float s = max(ray.sMin, span.sEnter);
   float sEnd = min(ray.sMax, span.sExit);
   if (!(s <= sEnd)) return implicitMiss();

@@ -51,7 +51,7 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
   hit.primitiveIndex = primitive;
   // Attributes the mesh lacks are zero, as in their buffers, without the
   // loads (a tenth of a Cornell box frame).
-  uint attributes = instance.vertexAttributes.x;
+  uint attributes = instance.vertexAttributes;
   float3 vertexNormal = zero3();
   if ((attributes & PT_VERTEX_NORMALS) != 0u)
     vertexNormal = barycentricInterpolate(loadVertexNormal(v.x), loadVertexNormal(v.y), loadVertexNormal(v.z), b);

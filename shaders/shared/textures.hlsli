@@ -9,33 +9,33 @@
 // The texture coordinates a reference reads: its set (TEXCOORD_0 in uv.xy,
 // TEXCOORD_1 in uv.zw) through its KHR_texture_transform.
 float2 textureCoordinates(TextureRefData ref, float4 uv) {
-  float2 st = ref.ids.z == 1u ? uv.zw : uv.xy;
-  return ref.transform.xy * st.x + ref.transform.zw * st.y + ref.offset.xy;
+  float2 st = ref.texCoordSet == 1u ? uv.zw : uv.xy;
+  return ref.column0 * st.x + ref.column1 * st.y + ref.column2;
 }
 
 float4 sampleTextureRef(uint refIndex, float4 uv) {
   TextureRefData ref = loadTextureRef(refIndex);
-  return sampleTextureLod0(ref.ids.x, ref.ids.y, textureCoordinates(ref, uv));
+  return sampleTextureLod0(ref.textureIndex, ref.samplerIndex, textureCoordinates(ref, uv));
 }
 
 // The material at a surface point: each texture multiplies its factor
 // (glTF 2.0 3.9.2): base colour rgb, metallic from blue and roughness from
 // green, emission rgb. sRGB textures arrive decoded to linear by the sampler.
 MaterialData applyMaterialTextures(MaterialData d, float4 uv) {
-  if (d.textures.x != PT_NO_TEXTURE) d.baseColor.xyz *= sampleTextureRef(d.textures.x, uv).xyz;
-  if (d.textures.y != PT_NO_TEXTURE) {
-    float4 mr = sampleTextureRef(d.textures.y, uv);
-    d.disney0.x *= mr.z;
-    d.disney0.y *= mr.y;
+  if (d.baseColorTexture != PT_NO_TEXTURE) d.baseColor *= sampleTextureRef(d.baseColorTexture, uv).xyz;
+  if (d.metallicRoughnessTexture != PT_NO_TEXTURE) {
+    float4 mr = sampleTextureRef(d.metallicRoughnessTexture, uv);
+    d.metallic *= mr.z;
+    d.roughness *= mr.y;
   }
-  if (d.textures.w != PT_NO_TEXTURE) d.emission.xyz *= sampleTextureRef(d.textures.w, uv).xyz;
+  if (d.emissionTexture != PT_NO_TEXTURE) d.emission *= sampleTextureRef(d.emissionTexture, uv).xyz;
   return d;
 }
 
 // Base-colour alpha at a point, for alphaMode MASK.
 float materialAlpha(MaterialData d, float4 uv) {
-  float alpha = d.textureParams.z;
-  if (d.textures.x != PT_NO_TEXTURE) alpha *= sampleTextureRef(d.textures.x, uv).w;
+  float alpha = d.alpha;
+  if (d.baseColorTexture != PT_NO_TEXTURE) alpha *= sampleTextureRef(d.baseColorTexture, uv).w;
   return alpha;
 }
 
@@ -44,8 +44,8 @@ float materialAlpha(MaterialData d, float4 uv) {
 // [0, 1), drawn per ray and primitive by alphaCoverageRandom), so averaged
 // over samples the surface covers alpha of what lies behind it.
 bool alphaKeepsHit(MaterialData d, float4 uv, float u) {
-  if (d.textures2.y == MATERIAL_ALPHA_MASK) return materialAlpha(d, uv) >= d.textureParams.w;
-  if (d.textures2.y == MATERIAL_ALPHA_BLEND) return u < materialAlpha(d, uv);
+  if (d.alphaMode == MATERIAL_ALPHA_MASK) return materialAlpha(d, uv) >= d.alphaCutoff;
+  if (d.alphaMode == MATERIAL_ALPHA_BLEND) return u < materialAlpha(d, uv);
   return true;
 }
 
@@ -69,8 +69,8 @@ float alphaCoverageRandom(uint2 pixel, uint samplesBefore, uint seed, float3 ori
 
 // The occlusion texture's factor (1 without): 1 + strength * (r - 1).
 float materialOcclusion(MaterialData d, float4 uv) {
-  if (d.textures2.x == PT_NO_TEXTURE) return 1.0;
-  return 1.0 + d.textureParams.y * (sampleTextureRef(d.textures2.x, uv).x - 1.0);
+  if (d.occlusionTexture == PT_NO_TEXTURE) return 1.0;
+  return 1.0 + d.occlusionStrength * (sampleTextureRef(d.occlusionTexture, uv).x - 1.0);
 }
 
 // A tangent-space normal map applied to the world-space frame (n: unit vertex
@@ -79,10 +79,10 @@ float materialOcclusion(MaterialData d, float4 uv) {
 // xy are scaled by normalScale (glTF normalTexture.scale). Returns an
 // unnormalised normal; a degenerate frame returns n.
 float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
-  if (d.textures.z == PT_NO_TEXTURE) return n;
-  float3 m = sampleTextureRef(d.textures.z, uv).xyz * 2.0 - splat3(1.0);
-  m.x *= d.textureParams.x;
-  m.y *= d.textureParams.x;
+  if (d.normalTexture == PT_NO_TEXTURE) return n;
+  float3 m = sampleTextureRef(d.normalTexture, uv).xyz * 2.0 - splat3(1.0);
+  m.x *= d.normalScale;
+  m.y *= d.normalScale;
   float3 mapped = t * m.x + b * m.y + n * m.z;
   return dot(t, t) > 0.0 && dot(b, b) > 0.0 ? mapped : n;
 }

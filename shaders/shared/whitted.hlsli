@@ -75,7 +75,7 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
 
     bool frontFace = dot(ray.direction, hit.geometricNormal) < 0.0;
     if (instance.firstEmissiveTriangle != PT_NO_EMISSION && frontFace)
-      radiance += ray.weight * data.emission.xyz;
+      radiance += ray.weight * data.emission;
     // Shade on the side the ray arrived from: Phong terms and the mirror and
     // refraction directions use the shading normal, rays leave from the
     // geometric surface (ng).

@@ -5,10 +5,12 @@
 // that keeps something per lifetime fails to create one eventually (the
 // NVIDIA driver once refused new instances after about 30 in one process).
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
 
+#include "backend_factory.h"
 #include "test_device.h"
 
 using namespace penumbra;
@@ -42,4 +44,14 @@ TEST_CASE("device lifetimes: 200 devices in one process, each with work and a re
     REQUIRE(std::memcmp(readback->mappedData(), data.data(), desc.byteSize) == 0);
     REQUIRE_NO_VALIDATION_MESSAGES(device);
   }
+}
+
+TEST_CASE("device creation: binding offsets that are not set are refused by name",
+          "[rhi][lifetimes]") {
+  // The RHI holds no register shifts of its own (binding_offsets.h): a device
+  // created without the shaders' would map every binding to the wrong
+  // D3D12 register, so it is refused before anything is created.
+  DeviceCreateInfo info;
+  REQUIRE_THROWS_WITH(backends::createDevice(test::testBackend(), info),
+                      Catch::Matchers::ContainsSubstring("DeviceCreateInfo::bindingOffsets"));
 }

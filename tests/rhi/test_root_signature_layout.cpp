@@ -7,8 +7,8 @@
 #include <catch2/matchers/catch_matchers_string.hpp>
 
 #include "path_tracer_shared.h"
+#include "penumbra/render/shader_binding_offsets.h"
 #include "penumbra/rhi/binding_layout.h"
-#include "penumbra/rhi/register_shifts.h"
 #include "penumbra/rhi/root_signature_layout.h"
 #include "penumbra/util/error.h"
 #include "penumbra_shaders.h"
@@ -19,6 +19,10 @@ using namespace penumbra::rhi;
 using Catch::Matchers::ContainsSubstring;
 
 namespace {
+// The shaders' offsets: the cases below name registers by bindings.hlsli's
+// macros, as the shaders do.
+constexpr BindingOffsets kOffsets = render::kShaderBindingOffsets;
+
 BindingLayoutItem item(uint32_t slot, ResourceType type, bool writable = false,
                        uint32_t arraySize = 1) {
   BindingLayoutItem i;
@@ -41,12 +45,12 @@ TEST_CASE(
         "triangle_alpha.rahit", "implicit.rchit", "implicit_sphere.rint", "implicit_plane_box.rint",
         "implicit_sdf.rint", "implicit_fractal.rint"})
     mergeBindingLayout(layout, shaders::shaderDesc(name).bindingLayout, name);
-  const RootSignatureLayout rs = computeRootSignatureLayout(layout);
+  const RootSignatureLayout rs = computeRootSignatureLayout(layout, kOffsets);
 
   REQUIRE(rs.pushConstants);
   CHECK(rs.pushConstants->rootParameterIndex == 0);
   CHECK(rs.pushConstants->shaderRegister == 0);
-  CHECK(rs.pushConstants->registerSpace == kPushConstantSpace);
+  CHECK(rs.pushConstants->registerSpace == kOffsets.pushConstantSpace);
   CHECK(rs.pushConstants->num32BitValues == sizeof(gpu::FrameConstants) / 4);
   // The bounded views, then the bindless textures (t16[], the highest t
   // register: an unbounded range covers every register above it) and the
@@ -143,7 +147,7 @@ TEST_CASE("root signature: spaces become tables in space order, arrays take seve
   addBindingLayoutItem(layout, 0, item(PENUMBRA_T(1), ResourceType::StorageBuffer, false, 4),
                        "test");
   addBindingLayoutItem(layout, 0, item(PENUMBRA_U(2), ResourceType::StorageTexture, true), "test");
-  const RootSignatureLayout rs = computeRootSignatureLayout(layout);
+  const RootSignatureLayout rs = computeRootSignatureLayout(layout, kOffsets);
 
   CHECK_FALSE(rs.pushConstants);
   REQUIRE(rs.tables.size() == 2);  // space 1 is empty: no table
@@ -174,7 +178,7 @@ TEST_CASE("root signature: samplers get a table of their own, unbounded arrays o
   addBindingLayoutItem(layout, 0, item(PENUMBRA_U(0), ResourceType::StorageBuffer, true), "test");
   addBindingLayoutItem(layout, 0, item(PENUMBRA_S(0), ResourceType::Sampler, false, 0), "test");
   addBindingLayoutItem(layout, 1, item(PENUMBRA_S(2), ResourceType::Sampler, false, 3), "test");
-  const RootSignatureLayout rs = computeRootSignatureLayout(layout);
+  const RootSignatureLayout rs = computeRootSignatureLayout(layout, kOffsets);
 
   // Space 0: views (t0, t1[2], u0), then the unbounded t12[] and s0[]; space 1: samplers.
   REQUIRE(rs.tables.size() == 4);
@@ -227,8 +231,8 @@ TEST_CASE("root signature: samplers get a table of their own, unbounded arrays o
 }
 
 TEST_CASE("root signature: the bindless texture shader's layout", "[rhi][root-signature]") {
-  const RootSignatureLayout rs =
-      computeRootSignatureLayout(test_shaders::shaderDesc("texture_sample.comp").bindingLayout);
+  const RootSignatureLayout rs = computeRootSignatureLayout(
+      test_shaders::shaderDesc("texture_sample.comp").bindingLayout, kOffsets);
   REQUIRE(rs.pushConstants);
   REQUIRE(rs.tables.size() == 3);  // t0 + u0; t12[]; s0[]
   CHECK(rs.tables[0].descriptorCount == 2);
@@ -242,60 +246,116 @@ TEST_CASE("root signature: bindings D3D12 cannot express are refused by name",
   PipelineBindingLayout layout;
   SECTION("a written resource in the t registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::StorageBuffer, true), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
                         ContainsSubstring("g32") && ContainsSubstring("register t0"));
   }
   SECTION("a constant buffer outside the b registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::ConstantBuffer), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("constant buffer"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
+                        ContainsSubstring("constant buffer"));
   }
   SECTION("an acceleration structure in the u registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_U(0), ResourceType::AccelStruct), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
                         ContainsSubstring("acceleration structure"));
   }
   SECTION("a sampler register") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_S(0), ResourceType::StorageBuffer), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("sampler"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets), ContainsSubstring("sampler"));
   }
   SECTION("a sampler outside the s registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::Sampler), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
                         ContainsSubstring("sampler outside the s registers"));
   }
   SECTION("a sampled texture outside the t registers") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_B(1), ResourceType::SampledTexture), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout),
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
                         ContainsSubstring("sampled texture outside"));
   }
   SECTION("an unbounded array below another register of its class") {
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(4), ResourceType::SampledTexture, false, 0),
                          "test");
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(7), ResourceType::StorageBuffer), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("g36") &&
-                                                                ContainsSubstring("overlap") &&
-                                                                ContainsSubstring("g39"));
+    REQUIRE_THROWS_WITH(
+        computeRootSignatureLayout(layout, kOffsets),
+        ContainsSubstring("g36") && ContainsSubstring("overlap") && ContainsSubstring("g39"));
   }
   SECTION("the reserved root-constant space") {
-    addBindingLayoutItem(layout, kPushConstantSpace,
+    addBindingLayoutItem(layout, kOffsets.pushConstantSpace,
                          item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("reserved"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
+                        ContainsSubstring("reserved"));
   }
   SECTION("more than 64 DWORDs") {
     layout.pushConstantBytes = 256;  // 64 DWORDs on their own
     addBindingLayoutItem(layout, 0, item(PENUMBRA_T(0), ResourceType::StorageBuffer), "test");
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("65 DWORDs"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
+                        ContainsSubstring("65 DWORDs"));
   }
   SECTION("push constants that are not whole DWORDs") {
     layout.pushConstantBytes = 6;
-    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout), ContainsSubstring("whole DWORDs"));
+    REQUIRE_THROWS_WITH(computeRootSignatureLayout(layout, kOffsets),
+                        ContainsSubstring("whole DWORDs"));
   }
 }
 
 TEST_CASE("root signature: shader records become local root constants", "[rhi][root-signature]") {
-  const RootConstantsLayout local = computeShaderRecordConstants(6);
+  const RootConstantsLayout local = computeShaderRecordConstants(6, kOffsets);
   CHECK(local.num32BitValues == 2);
-  CHECK(local.registerSpace == kShaderRecordSpace);
+  CHECK(local.registerSpace == kOffsets.shaderRecordSpace);
   CHECK(local.shaderRegister == 0);
-  CHECK(kShaderRecordSpace != kPushConstantSpace);
+  CHECK(kOffsets.shaderRecordSpace != kOffsets.pushConstantSpace);
+}
+
+TEST_CASE("root signature: registers and spaces follow the device's binding offsets",
+          "[rhi][root-signature]") {
+  // Offsets unlike the shaders' (NVRHI's defaults, spaces 7 and 8): the same
+  // binding numbers name other registers, so nothing in the RHI may assume
+  // bindings.hlsli's numbers.
+  constexpr BindingOffsets other{.constantBuffer = 0,
+                                 .shaderResource = 128,
+                                 .unorderedAccess = 256,
+                                 .sampler = 384,
+                                 .pushConstantSpace = 7,
+                                 .shaderRecordSpace = 8};
+  static_assert(other.valid());
+  CHECK(other.registerForBinding(130).registerClass == RegisterClass::T);
+  CHECK(other.registerForBinding(130).index == 2);
+  CHECK(other.registerForBinding(100).registerClass == RegisterClass::B);
+  CHECK(other.registerForBinding(100).index == 100);
+  CHECK(other.registerForBinding(390).registerClass == RegisterClass::S);
+
+  PipelineBindingLayout layout;
+  layout.pushConstantBytes = 16;
+  addBindingLayoutItem(layout, 0, item(130, ResourceType::StorageBuffer), "test");
+  addBindingLayoutItem(layout, 0, item(257, ResourceType::StorageTexture, true), "test");
+  const RootSignatureLayout rs = computeRootSignatureLayout(layout, other);
+  REQUIRE(rs.pushConstants);
+  CHECK(rs.pushConstants->registerSpace == 7);
+  REQUIRE(rs.tables.size() == 1);
+  REQUIRE(rs.tables[0].ranges.size() == 2);
+  CHECK(rs.tables[0].ranges[0].type == DescriptorRangeType::SRV);
+  CHECK(rs.tables[0].ranges[0].baseRegister == 2);
+  CHECK(rs.tables[0].ranges[1].type == DescriptorRangeType::UAV);
+  CHECK(rs.tables[0].ranges[1].baseRegister == 1);
+  CHECK(computeShaderRecordConstants(4, other).registerSpace == 8);
+
+  // Space 7 is now reserved; the shaders' 900 is an ordinary space.
+  PipelineBindingLayout reserved;
+  addBindingLayoutItem(reserved, 7, item(130, ResourceType::StorageBuffer), "test");
+  REQUIRE_THROWS_WITH(computeRootSignatureLayout(reserved, other), ContainsSubstring("reserved"));
+  PipelineBindingLayout ordinary;
+  addBindingLayoutItem(ordinary, 900, item(130, ResourceType::StorageBuffer), "test");
+  CHECK(computeRootSignatureLayout(ordinary, other).tables.size() == 1);
+
+  // Out of order, or one space for both kinds of root constants: not valid,
+  // and backends::createDevice refuses them (tests/rhi/test_device_lifetimes.cpp).
+  CHECK_FALSE(BindingOffsets{}.valid());
+  BindingOffsets sameSpace = other;
+  sameSpace.shaderRecordSpace = sameSpace.pushConstantSpace;
+  CHECK_FALSE(sameSpace.valid());
+  BindingOffsets swapped = other;
+  std::swap(swapped.unorderedAccess, swapped.sampler);
+  CHECK_FALSE(swapped.valid());
 }

@@ -14,7 +14,7 @@
 #include <cstring>
 #include <random>
 
-#include "penumbra/rhi/register_shifts.h"
+#include "bindings.hlsli"
 #include "penumbra/util/error.h"
 #include "penumbra_test_shaders.h"
 #include "test_device.h"
@@ -25,10 +25,11 @@ using Catch::Matchers::ContainsSubstring;
 
 namespace {
 
-constexpr uint32_t kQueriesSlot = kShiftT + 0;
-constexpr uint32_t kResultsSlot = kShiftU + 0;
-constexpr uint32_t kTexturesSlot = kShiftT + 12;
-constexpr uint32_t kSamplersSlot = kShiftS + 0;
+// texture_sample.comp's t0, u0, t12[] and s0[].
+constexpr uint32_t kQueriesSlot = PENUMBRA_T(0);
+constexpr uint32_t kResultsSlot = PENUMBRA_U(0);
+constexpr uint32_t kTexturesSlot = PENUMBRA_T(12);
+constexpr uint32_t kSamplersSlot = PENUMBRA_S(0);
 
 struct TextureQuery {
   float u, v;

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "penumbra/render/shader_binding_offsets.h"
+
 namespace penumbra::test {
 
 std::string testBackend() {
@@ -12,6 +14,7 @@ std::string testBackend() {
 
 rhi::DeviceHandle makeTestDevice() {
   rhi::DeviceCreateInfo info;
+  info.bindingOffsets = render::kShaderBindingOffsets;
   // The API's own validation (Vulkan's validation layer, the D3D12 debug
   // layer) on top of the RHI's, which is always on. vkd3d-proton has no
   // D3D12 debug layer: the D3D12 run under Wine turns it off with

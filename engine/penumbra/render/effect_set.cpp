@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <iterator>
+#include <utility>
 
 #include "effects.h"
 #include "penumbra/util/error.h"
@@ -70,15 +71,25 @@ uint32_t deriveEffects(const scene::Scene& scene) {
   return effects;
 }
 
+namespace {
+constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
+    {PT_EFFECT_AREA_LIGHTS, "area-lights"}, {PT_EFFECT_DELTA_LIGHTS, "delta-lights"},
+    {PT_EFFECT_SPECULAR, "specular"},       {PT_EFFECT_TRANSMISSION, "transmission"},
+    {PT_EFFECT_CLEARCOAT, "clearcoat"},     {PT_EFFECT_SHEEN, "sheen"},
+    {PT_EFFECT_TEXTURES, "textures"},       {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
+    {PT_EFFECT_ENVIRONMENT, "environment"}};
+constexpr uint32_t namedEffects() {
+  uint32_t bits = 0;
+  for (const auto& [bit, name] : kEffectNames) bits |= bit;
+  return bits;
+}
+// A bit added to effects.h gets a name here (--print-effects, the logs).
+static_assert(namedEffects() == PT_EFFECTS_ALL, "every PT_EFFECT_* bit needs a name");
+}  // namespace
+
 std::vector<std::string> effectNames(uint32_t effects) {
-  static const std::pair<uint32_t, const char*> kNames[] = {
-      {PT_EFFECT_AREA_LIGHTS, "area-lights"}, {PT_EFFECT_DELTA_LIGHTS, "delta-lights"},
-      {PT_EFFECT_SPECULAR, "specular"},       {PT_EFFECT_TRANSMISSION, "transmission"},
-      {PT_EFFECT_CLEARCOAT, "clearcoat"},     {PT_EFFECT_SHEEN, "sheen"},
-      {PT_EFFECT_TEXTURES, "textures"},       {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
-      {PT_EFFECT_ENVIRONMENT, "environment"}};
   std::vector<std::string> names;
-  for (const auto& [bit, name] : kNames)
+  for (const auto& [bit, name] : kEffectNames)
     if (effects & bit) names.emplace_back(name);
   return names;
 }

@@ -1,15 +1,9 @@
 #include "penumbra/render/emitter_table.h"
 
+#include "penumbra/render/gpu_vectors.h"
 #include "penumbra/render/scene_textures.h"
 
 namespace penumbra::render {
-namespace {
-
-gpu::float3 toFloat3(glm::vec3 v) {
-  return {v.x, v.y, v.z};
-}
-
-}  // namespace
 
 EmitterSource emitterSource(const scene::Scene& scene, const scene::Instance& instance) {
   const auto& mesh = scene.meshes[instance.mesh];

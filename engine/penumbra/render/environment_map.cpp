@@ -7,9 +7,11 @@ namespace penumbra::render {
 gpu::EnvironmentData environmentInfo(const scene::Environment& env) {
   gpu::EnvironmentData info;
   const double radians = double(env.rotationDegrees) * (3.14159265358979323846 / 180.0);
-  info.size = {std::max(env.width, 1u), std::max(env.height, 1u), 0, 0};
-  info.transform = {float(std::cos(radians)), float(std::sin(radians)),
-                    env.present() ? env.intensity : 0.0f, 0.0f};
+  info.width = std::max(env.width, 1u);
+  info.height = std::max(env.height, 1u);
+  info.cosRotation = float(std::cos(radians));
+  info.sinRotation = float(std::sin(radians));
+  info.intensity = env.present() ? env.intensity : 0.0f;
   return info;
 }
 

@@ -14,15 +14,12 @@
 #include "penumbra/render/effect_set.h"
 #include "penumbra/render/emitter_table.h"
 #include "penumbra/render/environment_map.h"
+#include "penumbra/render/gpu_vectors.h"
 #include "penumbra/render/scene_textures.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::render {
 namespace {
-
-gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) {
-  return {v.x, v.y, v.z, w};
-}
 
 template <class Matrix>  // glm::mat4 or glm::dmat4
 rhi::rt::AffineTransform toAffine(const Matrix& m) {
@@ -48,8 +45,11 @@ void placeInstance(gpu::InstanceData& d, const glm::dmat4& objectToWorld) {
 
 gpu::InstanceData instanceData(uint32_t firstIndex, uint32_t firstVertex, uint32_t material,
                                uint32_t firstEmissiveTriangle, const glm::dmat4& objectToWorld) {
-  gpu::InstanceData d{firstIndex, firstVertex, material, firstEmissiveTriangle, {}, {}, {}, {},
-                      {},         {},          {}};
+  gpu::InstanceData d{};
+  d.firstIndex = firstIndex;
+  d.firstVertex = firstVertex;
+  d.materialIndex = material;
+  d.firstEmissiveTriangle = firstEmissiveTriangle;
   placeInstance(d, objectToWorld);
   return d;
 }
@@ -142,18 +142,18 @@ constexpr double kRenderOriginGrid = 64.0;
 gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
   gpu::PointLight p;
   const bool directional = l.type == scene::LightType::Directional;
-  // w: a spot's inner cone, a directional light's angular radius (cosines).
-  p.position = toFloat4(
-      directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin),
+  const bool spot = l.type == scene::LightType::Spot;
+  p.position = toFloat3(directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin));
+  p.cosInner =
       directional && l.angularRadiusDegrees <= 0.0f
           ? 1.0f
           : std::cos(glm::radians(directional ? l.angularRadiusDegrees
-                                              : std::min(l.innerConeDegrees, l.outerConeDegrees))));
-  p.intensity = toFloat4(l.intensity, directional ? 0.0f : l.range);
-  float marker = float(PT_LIGHT_POINT);
-  if (l.type == scene::LightType::Spot) marker = std::cos(glm::radians(l.outerConeDegrees));
-  if (directional) marker = float(PT_LIGHT_DIRECTIONAL);
-  p.spot = toFloat4(glm::normalize(l.direction), marker);
+                                              : std::min(l.innerConeDegrees, l.outerConeDegrees)));
+  p.intensity = toFloat3(l.intensity);
+  p.range = directional ? 0.0f : l.range;
+  p.direction = toFloat3(glm::normalize(l.direction));
+  p.cosOuter = spot ? std::cos(glm::radians(l.outerConeDegrees)) : 0.0f;
+  p.type = directional ? PT_LIGHT_DIRECTIONAL : spot ? PT_LIGHT_SPOT : PT_LIGHT_POINT;
   return p;
 }
 
@@ -172,30 +172,47 @@ glm::dvec3 renderOriginNear(const glm::dvec3& position) {
 
 gpu::MaterialData packMaterial(const scene::Material& m) {
   gpu::MaterialData d;
-  d.baseColor = toFloat4(m.baseColor);
-  d.emission = toFloat4(m.emission);
-  d.disney0 = {m.metallic, m.roughness, m.anisotropic, m.specular};
-  d.disney1 = {m.specularTint, m.sheen, m.sheenTint, m.clearcoat};
-  d.disney2 = {m.clearcoatGloss, m.specTrans, m.ior, m.subsurface};
-  d.phong = {m.ks, m.exponent, m.reflectivity, m.transparency};
-  uint32_t flags = 0;
-  if (m.thin) flags |= MATERIAL_FLAG_THIN;
-  if (m.model == scene::MaterialModel::Lambert) flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;
-  d.flags = {m.model == scene::MaterialModel::Phong ? MATERIAL_MODEL_PHONG : MATERIAL_MODEL_DISNEY,
-             flags, 0, 0};
-  d.textures = {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.emissiveTexture};
-  const uint32_t alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
-                             : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND
-                                                                      : MATERIAL_ALPHA_OPAQUE;
-  d.textures2 = {m.occlusionTexture, alphaMode, 0, 0};
-  d.textureParams = {m.normalScale, m.occlusionStrength, m.alpha, m.alphaCutoff};
+  d.baseColor = toFloat3(m.baseColor);
+  d.emission = toFloat3(m.emission);
+  d.metallic = m.metallic;
+  d.roughness = m.roughness;
+  d.anisotropic = m.anisotropic;
+  d.specular = m.specular;
+  d.specularTint = m.specularTint;
+  d.sheen = m.sheen;
+  d.sheenTint = m.sheenTint;
+  d.clearcoat = m.clearcoat;
+  d.clearcoatGloss = m.clearcoatGloss;
+  d.specTrans = m.specTrans;
+  d.ior = m.ior;
+  d.subsurface = m.subsurface;
+  d.ks = m.ks;
+  d.phongExponent = m.exponent;
+  d.reflectivity = m.reflectivity;
+  d.transparency = m.transparency;
+  d.model = m.model == scene::MaterialModel::Phong ? MATERIAL_MODEL_PHONG : MATERIAL_MODEL_DISNEY;
+  d.flags = 0;
+  if (m.thin) d.flags |= MATERIAL_FLAG_THIN;
+  if (m.model == scene::MaterialModel::Lambert) d.flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;
+  d.baseColorTexture = m.baseColorTexture;
+  d.metallicRoughnessTexture = m.metallicRoughnessTexture;
+  d.normalTexture = m.normalTexture;
+  d.emissionTexture = m.emissiveTexture;
+  d.occlusionTexture = m.occlusionTexture;
+  d.alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
+                : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND
+                                                         : MATERIAL_ALPHA_OPAQUE;
+  d.normalScale = m.normalScale;
+  d.occlusionStrength = m.occlusionStrength;
+  d.alpha = m.alpha;
+  d.alphaCutoff = m.alphaCutoff;
   // sigma = -ln(colour) / distance, so exp(-sigma distance) = colour; a
   // black colour absorbs everything within a millionth of the distance.
   glm::vec3 sigma(0.0f);
   if (std::isfinite(m.attenuationDistance) && !m.thin)
     for (int k = 0; k < 3; ++k)
       sigma[k] = -std::log(std::max(m.attenuationColor[k], 1e-6f)) / m.attenuationDistance;
-  d.absorption = toFloat4(sigma);
+  d.absorption = toFloat3(sigma);
   return d;
 }
 
@@ -304,9 +321,9 @@ std::vector<gpu::InstanceData> GpuScene::placeInstances(const scene::Scene& scen
     gpu::InstanceData data =
         instanceData(layout.firstIndex[inst.mesh], layout.firstVertex[inst.mesh], mesh.material,
                      PT_NO_EMISSION, objectToRender);
-    data.vertexAttributes.x = (mesh.normals.empty() ? 0u : PT_VERTEX_NORMALS) |
-                              (mesh.tangents.empty() ? 0u : PT_VERTEX_TANGENTS) |
-                              (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS);
+    data.vertexAttributes = (mesh.normals.empty() ? 0u : PT_VERTEX_NORMALS) |
+                            (mesh.tangents.empty() ? 0u : PT_VERTEX_TANGENTS) |
+                            (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS);
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = emissiveTriangles;
       emissiveTriangles += uint32_t(mesh.indices.size() / 3);

@@ -201,12 +201,15 @@ gpu::ImplicitData packImplicit(const scene::ImplicitObject& object, uint32_t ins
   const float size =
       std::max(largestComponent(glm::abs(bounds.lo)), largestComponent(glm::abs(bounds.hi)));
   const float tolerance = std::max(object.sphereTracing.tolerance, 1e-6f * size);
-  d.boundsMin = {bounds.lo.x, bounds.lo.y, bounds.lo.z, tolerance};
-  d.boundsMax = {bounds.hi.x, bounds.hi.y, bounds.hi.z, 0.0f};
-  d.info = {uint32_t(object.kind()), instanceIndex, object.sphereTracing.maxSteps, 0};
+  d.boundsMin = {bounds.lo.x, bounds.lo.y, bounds.lo.z};
+  d.tolerance = tolerance;
+  d.boundsMax = {bounds.hi.x, bounds.hi.y, bounds.hi.z};
+  d.kind = uint32_t(object.kind());
+  d.instanceIndex = instanceIndex;
+  d.maxSteps = object.sphereTracing.maxSteps;
   if (const auto* blend = std::get_if<shapes::Blend>(&object.shape)) {
-    d.boundsMax.w = blend->blendRadius;
-    d.info.w = uint32_t(blend->primitives.size());
+    d.blendRadius = blend->blendRadius;
+    d.blendCount = uint32_t(blend->primitives.size());
     uint32_t* kinds[4] = {&d.blendKinds.x, &d.blendKinds.y, &d.blendKinds.z, &d.blendKinds.w};
     for (size_t i = 0; i < blend->primitives.size(); ++i) {
       const auto& primitive = blend->primitives[i];

@@ -21,9 +21,10 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   packed.reserve(rays.size());
   // Rays and hits are world space here, render space on the GPU.
   for (const auto& r : rays)
-    packed.push_back({{float(r.origin.x - origin.x), float(r.origin.y - origin.y),
-                       float(r.origin.z - origin.z), r.tMax},
-                      {r.direction.x, r.direction.y, r.direction.z, 0.0f}});
+    packed.push_back({.origin = {float(r.origin.x - origin.x), float(r.origin.y - origin.y),
+                                 float(r.origin.z - origin.z)},
+                      .tMax = r.tMax,
+                      .direction = {r.direction.x, r.direction.y, r.direction.z}});
 
   rhi::BufferDesc desc;
   desc.byteSize = packed.size() * sizeof(gpu::ProbeRay);
@@ -59,13 +60,13 @@ std::vector<SurfaceHit> PathTracer::traceProbeRays(const std::vector<ProbeRay>& 
   for (const auto& r : results) {
     SurfaceHit h;
     h.position = glm::vec3(glm::dvec3(r.position.x, r.position.y, r.position.z) + origin);
-    h.hitT = r.position.w;
+    h.hitT = r.hitT;
     h.geometricNormal = {r.normal.x, r.normal.y, r.normal.z};
     // The GPU orders mesh instances its own way (meshInstanceOrder);
     // implicit objects follow them in both orders.
     const auto& toScene = scene_->gpuToSceneInstance();
-    h.instanceIndex = r.ids.x < toScene.size() ? toScene[r.ids.x] : r.ids.x;
-    h.primitiveIndex = r.ids.y;
+    h.instanceIndex = r.instanceIndex < toScene.size() ? toScene[r.instanceIndex] : r.instanceIndex;
+    h.primitiveIndex = r.primitiveIndex;
     hits.push_back(h);
   }
   return hits;

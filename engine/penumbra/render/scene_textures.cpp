@@ -55,9 +55,12 @@ rhi::SamplerDesc samplerDesc(const scene::TextureSampler& s) {
 
 gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t samplerIndex) {
   gpu::TextureRefData d;
-  d.transform = {ref.transform0.x, ref.transform0.y, ref.transform1.x, ref.transform1.y};
-  d.offset = {ref.transform2.x, ref.transform2.y, 0.0f, 0.0f};
-  d.ids = {ref.texture, samplerIndex, ref.texCoord, 0u};
+  d.column0 = {ref.transform0.x, ref.transform0.y};
+  d.column1 = {ref.transform1.x, ref.transform1.y};
+  d.column2 = {ref.transform2.x, ref.transform2.y};
+  d.textureIndex = ref.texture;
+  d.samplerIndex = samplerIndex;
+  d.texCoordSet = ref.texCoord;
   return d;
 }
 

@@ -3,6 +3,7 @@
 // (backends/backend_factory.h); engine/ only ever sees these interfaces.
 // Presentation (the viewer) is opt-in: DeviceCreateInfo::presentWindow and
 // IDevice::createSwapchain (rhi/presentation.h).
+#include "penumbra/rhi/binding_offsets.h"
 #include "penumbra/rhi/command_list.h"
 #include "penumbra/rhi/presentation.h"
 
@@ -44,6 +45,11 @@ struct DeviceCreateInfo {
   // VK_KHR_surface + the window system's surface extension, device extension
   // VK_KHR_swapchain, and a queue family that can present to this window.
   NativeWindow presentWindow;
+  // The register shifts and root-constant spaces the shaders were compiled
+  // with (binding_offsets.h); no default: backends::createDevice refuses
+  // offsets that are not valid(). Penumbra's renderer passes
+  // render::kShaderBindingOffsets.
+  BindingOffsets bindingOffsets;
 };
 
 class IDevice {

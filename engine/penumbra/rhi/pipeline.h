@@ -16,7 +16,7 @@ namespace penumbra::rhi {
 // neither backend needs SPIR-V tooling at run time.
 // space N = Vulkan descriptor set N = D3D12 register space N; the slot is the
 // Vulkan binding number, which encodes the D3D12 register through the shift
-// table in register_shifts.h.
+// offsets the device was created with (binding_offsets.h).
 
 enum class ResourceType : uint8_t {
   AccelStruct,  // D3D12: SRV (RaytracingAccelerationStructure). Vulkan: ACCELERATION_STRUCTURE_KHR

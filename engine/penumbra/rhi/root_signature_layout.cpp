@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "penumbra/rhi/register_shifts.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::rhi {
@@ -22,8 +21,9 @@ const char* className(RegisterClass c) {
   return "?";
 }
 
-DescriptorRangeType rangeTypeFor(const BindingLayoutItem& item, uint32_t space) {
-  const Register reg = registerForBinding(item.slot);
+DescriptorRangeType rangeTypeFor(const BindingLayoutItem& item, uint32_t space,
+                                 const BindingOffsets& offsets) {
+  const Register reg = offsets.registerForBinding(item.slot);
   auto fail = [&](const char* why) {
     return Error(fmt::format("root signature: '{}' (space {}, slot {} = register {}{}) {}",
                              item.name, space, item.slot, className(reg.registerClass), reg.index,
@@ -64,10 +64,11 @@ DescriptorRangeType rangeTypeFor(const BindingLayoutItem& item, uint32_t space) 
 
 // An unbounded range claims every register of its class from its base up,
 // so another binding of the class above it in the same space would overlap.
-void checkUnboundedIsLast(const BindingLayoutItem& item, const BindingLayout& space) {
-  const Register reg = registerForBinding(item.slot);
+void checkUnboundedIsLast(const BindingLayoutItem& item, const BindingLayout& space,
+                          const BindingOffsets& offsets) {
+  const Register reg = offsets.registerForBinding(item.slot);
   for (const auto& other : space.items) {
-    const Register o = registerForBinding(other.slot);
+    const Register o = offsets.registerForBinding(other.slot);
     if (other.slot != item.slot && o.registerClass == reg.registerClass && o.index > reg.index)
       throw Error(fmt::format(
           "root signature: unbounded array '{}' (space {}, register {}{}) would overlap "
@@ -99,20 +100,22 @@ const DescriptorTableLayout* RootSignatureLayout::tableForSlot(uint32_t space,
   return nullptr;
 }
 
-RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layout) {
+RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layout,
+                                               const BindingOffsets& offsets) {
   RootSignatureLayout result;
   uint32_t parameter = 0;
   if (layout.pushConstantBytes > 0) {
     if (layout.pushConstantBytes % 4 != 0)
       throw Error(fmt::format("root signature: push constants of {} bytes are not whole DWORDs",
                               layout.pushConstantBytes));
-    result.pushConstants = RootConstantsLayout{parameter++, kPushConstantRegister,
-                                               kPushConstantSpace, layout.pushConstantBytes / 4};
+    result.pushConstants =
+        RootConstantsLayout{parameter++, kPushConstantRegister, offsets.pushConstantSpace,
+                            layout.pushConstantBytes / 4};
     result.dwordCost += result.pushConstants->num32BitValues;
   }
   for (const auto& space : layout.spaces) {
     if (space.items.empty()) continue;
-    if (space.space == kPushConstantSpace || space.space == kShaderRecordSpace)
+    if (space.space == offsets.pushConstantSpace || space.space == offsets.shaderRecordSpace)
       throw Error(
           fmt::format("root signature: space {} is reserved for root constants", space.space));
     DescriptorTableLayout views, samplers;
@@ -121,11 +124,11 @@ RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layo
     std::vector<DescriptorTableLayout> unbounded;
     for (const auto& item : space.items) {
       DescriptorRangeLayout range;
-      range.type = rangeTypeFor(item, space.space);
-      range.baseRegister = registerForBinding(item.slot).index;
+      range.type = rangeTypeFor(item, space.space, offsets);
+      range.baseRegister = offsets.registerForBinding(item.slot).index;
       range.slot = item.slot;
       if (item.arraySize == 0) {
-        checkUnboundedIsLast(item, space);
+        checkUnboundedIsLast(item, space, offsets);
         DescriptorTableLayout table;
         table.space = space.space;
         table.heap = range.type == DescriptorRangeType::Sampler ? DescriptorHeapKind::Sampler
@@ -161,8 +164,9 @@ RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layo
   return result;
 }
 
-RootConstantsLayout computeShaderRecordConstants(uint32_t shaderRecordBytes) {
-  return {0, kShaderRecordRegister, kShaderRecordSpace, (shaderRecordBytes + 3) / 4};
+RootConstantsLayout computeShaderRecordConstants(uint32_t shaderRecordBytes,
+                                                 const BindingOffsets& offsets) {
+  return {0, kShaderRecordRegister, offsets.shaderRecordSpace, (shaderRecordBytes + 3) / 4};
 }
 
 }  // namespace penumbra::rhi

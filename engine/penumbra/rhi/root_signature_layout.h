@@ -6,27 +6,27 @@
 // Global root signature, one per pipeline:
 //   parameter 0 (if the shaders have push constants): root constants, one
 //     32-bit value per 4 bytes of the push-constant block, at register
-//     b0, space900 (HLSL: PENUMBRA_PUSH_CONSTANTS in bindings.hlsli). A space
-//     of its own, so it can never collide with a reflected binding.
+//     b0 of BindingOffsets::pushConstantSpace (Penumbra's shaders:
+//     PENUMBRA_PUSH_CONSTANTS in bindings.hlsli, space 900). A space of its
+//     own, so it can never collide with a reflected binding.
 //   then one descriptor table per non-empty space, in space order. The table
 //     of space N has one range per layout item in slot order: the register
-//     class and number from registerForBinding(slot) (b -> CBV, t -> SRV,
+//     class and number from offsets.registerForBinding(slot) (b -> CBV, t -> SRV,
 //     u -> UAV), register space N, `arraySize` descriptors, packed back to
 //     back. A binding set writes its descriptors at the same offsets into its
 //     range of the shader-visible CBV/SRV/UAV heap.
 // Local root signature, one per shader that reads its shader record: root
-//   constants at b0, space901 (HLSL: PENUMBRA_SHADER_RECORD).
+//   constants at b0 of BindingOffsets::shaderRecordSpace (Penumbra's
+//   shaders: PENUMBRA_SHADER_RECORD, space 901).
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "penumbra/rhi/binding_offsets.h"
 #include "penumbra/rhi/pipeline.h"
-#include "penumbra/rhi/register_shifts.h"
 
 namespace penumbra::rhi {
 
-// The spaces come from bindings.hlsli, as the shaders' declarations do
-// (register_shifts.h).
 constexpr uint32_t kPushConstantRegister = 0;
 constexpr uint32_t kShaderRecordRegister = 0;
 // D3D12 root signatures hold at most 64 DWORDs: a root constant costs one,
@@ -87,10 +87,12 @@ struct RootSignatureLayout {
 // s or anything else in s, an unbounded array below another register of its
 // class and space, a push-constant block that is not whole DWORDs, a binding
 // in the reserved spaces, or more than 64 DWORDs in all.
-RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layout);
+RootSignatureLayout computeRootSignatureLayout(const PipelineBindingLayout& layout,
+                                               const BindingOffsets& offsets);
 
 // The local root signature of a shader whose record carries
 // `shaderRecordBytes` of local data (rounded up to whole DWORDs).
-RootConstantsLayout computeShaderRecordConstants(uint32_t shaderRecordBytes);
+RootConstantsLayout computeShaderRecordConstants(uint32_t shaderRecordBytes,
+                                                 const BindingOffsets& offsets);
 
 }  // namespace penumbra::rhi

@@ -10,8 +10,8 @@
 #include <penumbra/batch/render_settings.h>
 #include <penumbra/image/image_compare.h>
 #include <penumbra/render/effect_set.h>
+#include <penumbra/render/shader_binding_offsets.h>
 #include <penumbra/rhi/device.h>
-#include <penumbra/rhi/register_shifts.h>
 #include <penumbra/scene/scene_loader.h>
 #include <penumbra/shaders/penumbra_shaders.h>
 #include <penumbra/study/study_plan.h>
@@ -66,8 +66,10 @@ int main() {
 
   check(!shaders::find("path_trace.rgen").empty(),
         "penumbra::shaders holds the path tracer's SPIR-V");
-  check(rhi::registerForBinding(rhi::kShiftT).registerClass == rhi::RegisterClass::T,
-        "bindings.hlsli is installed for rhi/register_shifts.h");
+  check(
+      render::kShaderBindingOffsets.registerForBinding(render::kShaderBindingOffsets.shaderResource)
+              .registerClass == rhi::RegisterClass::T,
+      "bindings.hlsli is installed for render/shader_binding_offsets.h");
 
   return failures == 0 ? 0 : 1;
 }

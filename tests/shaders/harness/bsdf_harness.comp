@@ -75,17 +75,30 @@ void main() {
   } else if (gMode == MODE_SWEEP) {
     Rng rng = rngCreate(uint2(i, 1u), 0u, gSeed, RNG_SAMPLER_RANDOM);
     MaterialData d;
-    d.baseColor = float4(pick(rng), pick(rng), pick(rng), 0.0);
-    d.emission = float4(0.0, 0.0, 0.0, 0.0);
-    d.disney0 = float4(pick(rng), pick(rng), pick(rng), pick(rng));
-    d.disney1 = float4(pick(rng), pick(rng), pick(rng), pick(rng));
+    d.baseColor = float3(pick(rng), pick(rng), pick(rng));
+    d.emission = float3(0.0, 0.0, 0.0);
+    d.metallic = pick(rng);
+    d.roughness = pick(rng);
+    d.anisotropic = pick(rng);
+    d.specular = pick(rng);
+    d.specularTint = pick(rng);
+    d.sheen = pick(rng);
+    d.sheenTint = pick(rng);
+    d.clearcoat = pick(rng);
     float iorPick = rngNext(rng);
     float ior = iorPick < 0.2 ? 1.0 : (iorPick < 0.3 ? 1.0001 : (iorPick < 0.4 ? 4.0 : 1.0 + 2.0 * rngNext(rng)));
-    d.disney2 = float4(pick(rng), pick(rng), ior, pick(rng));
-    d.phong = float4(0.0, 0.0, 0.0, 0.0);
+    d.clearcoatGloss = pick(rng);
+    d.specTrans = pick(rng);
+    d.ior = ior;
+    d.subsurface = pick(rng);
+    d.ks = 0.0;
+    d.phongExponent = 0.0;
+    d.reflectivity = 0.0;
+    d.transparency = 0.0;
     uint flags = (rngNext(rng) < 0.3 ? MATERIAL_FLAG_THIN : 0u) |
                  (rngNext(rng) < 0.3 ? MATERIAL_FLAG_LAMBERT_DIFFUSE : 0u);
-    d.flags = uint4(MATERIAL_MODEL_DISNEY, flags, 0u, 0u);
+    d.model = MATERIAL_MODEL_DISNEY;
+    d.flags = flags;
     DisneyMaterial m = unpackDisney(d);
     float3 wo = pickDirection(rng);
     float3 wi = pickDirection(rng);

@@ -6,7 +6,7 @@
 // physics; the DXR entry points use the same files.
 //
 // The sphere is analytic, not triangles, so next-event estimation is off here
-// (lights.x = 0); the Vulkan furnace test covers NEE and MIS.
+// (emissiveTriangleCount = 0); the Vulkan furnace test covers NEE and MIS.
 #include "path_tracer_shared.h"
 #include "math.hlsli"
 #include "hit_record.hlsli"
@@ -17,7 +17,7 @@
 #include "probe.hlsli"
 #include "sdf.hlsli"
 float implicitSdf(ImplicitData o, float3 p) {
-  return o.info.x == IMPLICIT_MANDELBULB ? sdfMandelbulb(p, o.shape.x, uint(o.shape.y))
+  return o.kind == IMPLICIT_MANDELBULB ? sdfMandelbulb(p, o.shape.x, uint(o.shape.y))
                                          : sdfObjectDistance(o, p);
 }
 #include "sphere_tracing.hlsli"
@@ -59,7 +59,10 @@ InstanceData loadInstanceData(uint index) {
   m.worldToObject0 = m.objectToWorld0;
   m.worldToObject1 = m.objectToWorld1;
   m.worldToObject2 = m.objectToWorld2;
-  m.vertexAttributes = uint4(0u, 0u, 0u, 0u);
+  m.vertexAttributes = 0u;
+  m.unused0 = 0u;
+  m.unused1 = 0u;
+  m.unused2 = 0u;
   return m;
 }
 
@@ -68,25 +71,60 @@ MaterialData loadMaterial(uint index) {
   float albedo = gSphere[0].x;
   float emission = gSphere[0].y;
   MaterialData m;
-  m.baseColor = float4(albedo, albedo, albedo, 0.0);
-  m.emission = float4(emission, emission, emission, 0.0);
-  m.disney0 = float4(0.0, 1.0, 0.0, 0.0);  // metallic, roughness, anisotropic, specular
-  m.disney1 = float4(0.0, 0.0, 0.0, 0.0);
-  m.disney2 = float4(0.0, 0.0, 1.5, 0.0);  // clearcoatGloss, specTrans, ior, subsurface
-  m.phong = float4(0.0, 0.0, 0.0, 0.0);
-  m.flags = uint4(MATERIAL_MODEL_DISNEY, MATERIAL_FLAG_LAMBERT_DIFFUSE, 0u, 0u);
-  m.textures = uint4(PT_NO_TEXTURE, PT_NO_TEXTURE, PT_NO_TEXTURE, PT_NO_TEXTURE);
-  m.textures2 = uint4(PT_NO_TEXTURE, MATERIAL_ALPHA_OPAQUE, 0u, 0u);
-  m.textureParams = float4(1.0, 1.0, 1.0, 0.5);
+  m.baseColor = float3(albedo, albedo, albedo);
+  m.unused0 = 0.0;
+  m.emission = float3(emission, emission, emission);
+  m.unused1 = 0.0;
+  m.metallic = 0.0;
+  m.roughness = 1.0;
+  m.anisotropic = 0.0;
+  m.specular = 0.0;
+  m.specularTint = 0.0;
+  m.sheen = 0.0;
+  m.sheenTint = 0.0;
+  m.clearcoat = 0.0;
+  m.clearcoatGloss = 0.0;
+  m.specTrans = 0.0;
+  m.ior = 1.5;
+  m.subsurface = 0.0;
+  m.ks = 0.0;
+  m.phongExponent = 0.0;
+  m.reflectivity = 0.0;
+  m.transparency = 0.0;
+  m.model = MATERIAL_MODEL_DISNEY;
+  m.flags = MATERIAL_FLAG_LAMBERT_DIFFUSE;
+  m.unused2 = 0u;
+  m.unused3 = 0u;
+  m.baseColorTexture = PT_NO_TEXTURE;
+  m.metallicRoughnessTexture = PT_NO_TEXTURE;
+  m.normalTexture = PT_NO_TEXTURE;
+  m.emissionTexture = PT_NO_TEXTURE;
+  m.occlusionTexture = PT_NO_TEXTURE;
+  m.alphaMode = MATERIAL_ALPHA_OPAQUE;
+  m.unused4 = 0u;
+  m.unused5 = 0u;
+  m.normalScale = 1.0;
+  m.occlusionStrength = 1.0;
+  m.alpha = 1.0;
+  m.alphaCutoff = 0.5;
+  m.absorption = float3(0.0, 0.0, 0.0);
+  m.unused6 = 0.0;
   return m;
 }
 
-// No point lights in this harness (lights.y = 0).
+// No point lights in this harness (pointLightCount = 0).
 PointLight loadPointLight(uint index) {
   PointLight p;
-  p.position = float4(0.0, 0.0, 0.0, 1.0);
-  p.intensity = float4(0.0, 0.0, 0.0, 0.0);
-  p.spot = float4(0.0, 0.0, 1.0, -2.0);
+  p.position = float3(0.0, 0.0, 0.0);
+  p.cosInner = 1.0;
+  p.intensity = float3(0.0, 0.0, 0.0);
+  p.range = 0.0;
+  p.direction = float3(0.0, 0.0, 1.0);
+  p.cosOuter = 0.0;
+  p.type = PT_LIGHT_POINT;
+  p.unused0 = 0u;
+  p.unused1 = 0u;
+  p.unused2 = 0u;
   return p;
 }
 
@@ -112,9 +150,14 @@ EmissiveTriangle loadEmissiveTriangle(uint index) {
 // texture core still compiles through this front-end.
 TextureRefData loadTextureRef(uint index) {
   TextureRefData r;
-  r.transform = float4(1.0, 0.0, 0.0, 1.0);
-  r.offset = float4(0.0, 0.0, 0.0, 0.0);
-  r.ids = uint4(0u, 0u, 0u, 0u);
+  r.column0 = float2(1.0, 0.0);
+  r.column1 = float2(0.0, 1.0);
+  r.column2 = float2(0.0, 0.0);
+  r.unused0 = float2(0.0, 0.0);
+  r.textureIndex = 0u;
+  r.samplerIndex = 0u;
+  r.texCoordSet = 0u;
+  r.unused1 = 0u;
   return r;
 }
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) { return float4(1.0, 1.0, 1.0, 1.0); }
@@ -128,7 +171,8 @@ ImplicitData loadImplicit(uint index) {
   o.worldToObject0 = float4(1.0, 0.0, 0.0, 0.0);
   o.worldToObject1 = float4(0.0, 1.0, 0.0, 0.0);
   o.worldToObject2 = float4(0.0, 0.0, 1.0, 0.0);
-  o.info = uint4(IMPLICIT_SPHERE, 0u, 0u, 0u);
+  o.kind = IMPLICIT_SPHERE;
+  o.instanceIndex = 0u;
   return o;
 }
 uint3 triangleVertices(InstanceData instance, uint primitive) { return uint3(0u, 1u, 2u); }
@@ -138,12 +182,18 @@ float4 loadVertexTangent(uint vertex) { return float4(1.0, 0.0, 0.0, 1.0); }
 float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
 #include "surface_from_record.hlsli"
 
-// No environment in this harness (lights.w = 0); its code compiles through
+// No environment in this harness (no PT_EFFECT_ENVIRONMENT); its code compiles through
 // this front-end all the same.
 EnvironmentData loadEnvironment() {
   EnvironmentData e;
-  e.size = uint4(1u, 1u, 0u, 0u);
-  e.transform = float4(1.0, 0.0, 0.0, 0.0);
+  e.width = 1u;
+  e.height = 1u;
+  e.unused0 = 0u;
+  e.unused1 = 0u;
+  e.cosRotation = 1.0;
+  e.sinRotation = 0.0;
+  e.intensity = 0.0;
+  e.unused2 = 0.0;
   return e;
 }
 float4 loadEnvironmentTexel(uint index) { return float4(0.0, 0.0, 0.0, 1.0); }
