@@ -254,14 +254,12 @@ class D3D12ShaderTable final : public rhi::ShaderTableRecords {
   // Uploads the records if they changed and returns the DispatchRays ranges
   // (width/height/depth left for the caller).
   D3D12_DISPATCH_RAYS_DESC prepare();
-  std::shared_ptr<D3D12Buffer> buffer() const { return buffer_; }
+  std::shared_ptr<D3D12Buffer> buffer() const;
 
  private:
   D3D12Device& device_;
   std::shared_ptr<D3D12RayTracingPipeline> pipeline_;
   std::string debugName_;
-  std::shared_ptr<D3D12Buffer> buffer_;
-  D3D12_DISPATCH_RAYS_DESC dispatch_{};
 };
 
 class D3D12TimerQuery final : public rhi::ITimerQuery {

@@ -4,6 +4,7 @@
 
 #include "d3d12_backend.h"
 #include "penumbra/rhi/fault_injection.h"
+#include "penumbra/rhi/geometry_input.h"
 #include "penumbra/rhi/shader_table_layout.h"
 #include "penumbra/util/error.h"
 
@@ -271,36 +272,27 @@ AccelStructBuildInputs D3D12AccelStruct::buildInputs(uint64_t instanceAddress,
     return in;
   }
   inputs.Type = D3D12_RAYTRACING_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL;
-  for (const auto& geo : desc_.bottomLevelGeometries) {
+  for (const auto& geometry : desc_.bottomLevelGeometries) {
+    const rhi::rt::GeometryInput input = rhi::rt::geometryInput(geometry);
     D3D12_RAYTRACING_GEOMETRY_DESC g{};
     g.Flags = D3D12_RAYTRACING_GEOMETRY_FLAG_NONE;
-    if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::Opaque))
-      g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_OPAQUE;
-    if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation))
+    if (input.opaque) g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_OPAQUE;
+    if (input.noDuplicateAnyHitInvocation)
       g.Flags |= D3D12_RAYTRACING_GEOMETRY_FLAG_NO_DUPLICATE_ANYHIT_INVOCATION;
-    if (geo.type == rhi::rt::GeometryType::Triangles) {
-      const auto& t = geo.triangles;
+    if (input.triangles) {
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_TRIANGLES;
       auto& tri = g.Triangles;
-      tri.Transform3x4 =
-          t.transformBuffer ? t.transformBuffer->deviceAddress() + t.transformOffset : 0;
-      tri.VertexFormat = toDxgiFormat(t.vertexFormat);
-      tri.VertexCount = t.vertexCount;
-      tri.VertexBuffer.StartAddress = t.vertexBuffer->deviceAddress() + t.vertexOffset;
-      tri.VertexBuffer.StrideInBytes = t.vertexStride;
-      if (t.indexBuffer) {
-        tri.IndexFormat = toDxgiFormat(t.indexFormat);
-        tri.IndexCount = t.indexCount;
-        tri.IndexBuffer = t.indexBuffer->deviceAddress() + t.indexOffset;
-      } else {
-        tri.IndexFormat = DXGI_FORMAT_UNKNOWN;
-      }
+      tri.Transform3x4 = input.transformAddress;
+      tri.VertexFormat = toDxgiFormat(input.vertexFormat);
+      tri.VertexCount = input.vertexCount;
+      tri.VertexBuffer = {input.vertexAddress, input.vertexStride};
+      tri.IndexFormat = input.indexed ? toDxgiFormat(input.indexFormat) : DXGI_FORMAT_UNKNOWN;
+      tri.IndexCount = input.indexCount;
+      tri.IndexBuffer = input.indexAddress;
     } else {
-      const auto& a = geo.aabbs;
       g.Type = D3D12_RAYTRACING_GEOMETRY_TYPE_PROCEDURAL_PRIMITIVE_AABBS;
-      g.AABBs.AABBCount = a.count;
-      g.AABBs.AABBs.StartAddress = a.buffer->deviceAddress() + a.offset;
-      g.AABBs.AABBs.StrideInBytes = a.stride;
+      g.AABBs.AABBCount = input.primitiveCount;
+      g.AABBs.AABBs = {input.aabbAddress, input.aabbStride};
     }
     in.geometries.push_back(g);
   }

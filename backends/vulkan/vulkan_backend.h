@@ -230,14 +230,12 @@ class VulkanShaderTable final : public rhi::ShaderTableRecords {
     VkStridedDeviceAddressRegionKHR rayGen{}, miss{}, hit{}, callable{};
   };
   Regions prepare();
-  std::shared_ptr<VulkanBuffer> buffer() const { return buffer_; }
+  std::shared_ptr<VulkanBuffer> buffer() const;
 
  private:
   VulkanDevice& device_;
   std::shared_ptr<VulkanRayTracingPipeline> pipeline_;
   std::string debugName_;
-  std::shared_ptr<VulkanBuffer> buffer_;
-  Regions regions_;
 };
 
 class VulkanTimerQuery final : public rhi::ITimerQuery {

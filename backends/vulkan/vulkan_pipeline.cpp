@@ -452,33 +452,22 @@ VulkanShaderTable::VulkanShaderTable(VulkanDevice& device,
     : device_(device), pipeline_(std::move(pipeline)), debugName_(std::move(debugName)) {}
 
 VulkanShaderTable::Regions VulkanShaderTable::prepare() {
-  if (!changed()) return regions_;
   const auto& align = device_.adapter().shaderTable;
-  const rhi::ShaderTableLayout layout = recordLayout(align);
-  rhi::BufferDesc desc;
-  desc.byteSize = layout.totalBytes;
-  desc.usage = rhi::BufferUsage::ShaderTable;
-  desc.memory = rhi::MemoryLocation::Upload;
-  desc.debugName = debugName_;
-  // A fresh buffer each time the records change: a list still in flight keeps
-  // the old one alive (VulkanCommandList holds it).
-  buffer_ = std::make_shared<VulkanBuffer>(device_, desc, align.tableAlignment);
-  writeRecords(static_cast<uint8_t*>(buffer_->mappedData()), layout, align.handleSize,
-               [&](const std::string& name) { return pipeline_->groupHandle(name); });
-
-  const uint64_t address = buffer_->deviceAddress();
-  auto region = [&](const rhi::ShaderTableRegion& r) {
-    VkStridedDeviceAddressRegionKHR v{};
-    if (r.count == 0) return v;
-    v.deviceAddress = address + r.offset;
-    v.stride = r.stride;
-    v.size = r.size;
-    return v;
+  // The buffer starts shaderGroupBaseAlignment aligned, so every region does.
+  const rhi::ShaderTableRanges& ranges = upload(
+      align, debugName_,
+      [&](const rhi::BufferDesc& desc) {
+        return std::make_shared<VulkanBuffer>(device_, desc, align.tableAlignment);
+      },
+      [&](const std::string& name) { return pipeline_->groupHandle(name); });
+  auto region = [](const rhi::ShaderTableRange& r) {
+    return VkStridedDeviceAddressRegionKHR{r.address, r.stride, r.size};
   };
-  regions_.rayGen = region(layout.rayGeneration);
-  regions_.miss = region(layout.miss);
-  regions_.hit = region(layout.hitGroup);
-  return regions_;
+  return {region(ranges.rayGeneration), region(ranges.miss), region(ranges.hitGroup), {}};
+}
+
+std::shared_ptr<VulkanBuffer> VulkanShaderTable::buffer() const {
+  return std::static_pointer_cast<VulkanBuffer>(uploadBuffer());
 }
 
 }  // namespace penumbra::vk

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "penumbra/rhi/fault_injection.h"
+#include "penumbra/rhi/geometry_input.h"
 #include "penumbra/rhi/shader_table_layout.h"
 #include "penumbra/util/error.h"
 #include "vulkan_backend.h"
@@ -286,44 +287,34 @@ AccelStructBuildInputs VulkanAccelStruct::buildInputs(uint64_t instanceAddress,
     in.ranges.push_back({instanceCount, 0, 0, 0});
     in.maxPrimitiveCounts.push_back(desc_.topLevelMaxInstances);
   } else {
-    for (const auto& geo : desc_.bottomLevelGeometries) {
+    for (const auto& geometry : desc_.bottomLevelGeometries) {
+      const rhi::rt::GeometryInput input = rhi::rt::geometryInput(geometry);
       VkAccelerationStructureGeometryKHR g{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-      if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::Opaque))
-        g.flags |= VK_GEOMETRY_OPAQUE_BIT_KHR;
-      if (uint8_t(geo.flags) & uint8_t(rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation))
+      if (input.opaque) g.flags |= VK_GEOMETRY_OPAQUE_BIT_KHR;
+      if (input.noDuplicateAnyHitInvocation)
         g.flags |= VK_GEOMETRY_NO_DUPLICATE_ANY_HIT_INVOCATION_BIT_KHR;
-      uint32_t primitives = 0;
-      if (geo.type == rhi::rt::GeometryType::Triangles) {
-        const auto& t = geo.triangles;
+      if (input.triangles) {
         g.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
         auto& tri = g.geometry.triangles;
         tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-        tri.vertexFormat = toVkFormat(t.vertexFormat);
-        tri.vertexData.deviceAddress = t.vertexBuffer->deviceAddress() + t.vertexOffset;
-        tri.vertexStride = t.vertexStride;
-        tri.maxVertex = t.vertexCount > 0 ? t.vertexCount - 1 : 0;
-        if (t.transformBuffer)
-          tri.transformData.deviceAddress = t.transformBuffer->deviceAddress() + t.transformOffset;
-        if (t.indexBuffer) {
-          tri.indexType =
-              t.indexFormat == rhi::Format::R16_UINT ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32;
-          tri.indexData.deviceAddress = t.indexBuffer->deviceAddress() + t.indexOffset;
-          primitives = t.indexCount / 3;
-        } else {
-          tri.indexType = VK_INDEX_TYPE_NONE_KHR;
-          primitives = t.vertexCount / 3;
-        }
+        tri.vertexFormat = toVkFormat(input.vertexFormat);
+        tri.vertexData.deviceAddress = input.vertexAddress;
+        tri.vertexStride = input.vertexStride;
+        tri.maxVertex = input.vertexCount > 0 ? input.vertexCount - 1 : 0;
+        tri.transformData.deviceAddress = input.transformAddress;
+        tri.indexType = !input.indexed                               ? VK_INDEX_TYPE_NONE_KHR
+                        : input.indexFormat == rhi::Format::R16_UINT ? VK_INDEX_TYPE_UINT16
+                                                                     : VK_INDEX_TYPE_UINT32;
+        tri.indexData.deviceAddress = input.indexAddress;
       } else {
-        const auto& a = geo.aabbs;
         g.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
         g.geometry.aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
-        g.geometry.aabbs.data.deviceAddress = a.buffer->deviceAddress() + a.offset;
-        g.geometry.aabbs.stride = a.stride;
-        primitives = a.count;
+        g.geometry.aabbs.data.deviceAddress = input.aabbAddress;
+        g.geometry.aabbs.stride = input.aabbStride;
       }
       in.geometries.push_back(g);
-      in.ranges.push_back({primitives, 0, 0, 0});
-      in.maxPrimitiveCounts.push_back(primitives);
+      in.ranges.push_back({input.primitiveCount, 0, 0, 0});
+      in.maxPrimitiveCounts.push_back(input.primitiveCount);
     }
   }
   in.info.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR;

@@ -71,4 +71,31 @@ void ShaderTableRecords::writeRecords(
   changed_ = false;
 }
 
+const ShaderTableRanges& ShaderTableRecords::upload(
+    const ShaderTableAlignment& alignment, const std::string& debugName,
+    const std::function<BufferHandle(const BufferDesc&)>& createBuffer,
+    const std::function<const void*(const std::string&)>& identifier) {
+  if (!changed_) return ranges_;
+  const ShaderTableLayout layout = recordLayout(alignment);
+  BufferDesc desc;
+  desc.byteSize = layout.totalBytes;
+  desc.usage = BufferUsage::ShaderTable;
+  desc.memory = MemoryLocation::Upload;
+  desc.debugName = debugName;
+  buffer_ = createBuffer(desc);
+  writeRecords(static_cast<uint8_t*>(buffer_->mappedData()), layout, alignment.handleSize,
+               identifier);
+  const uint64_t address = buffer_->deviceAddress();
+  auto range = [&](const ShaderTableRegion& r) {
+    ShaderTableRange v;
+    if (r.count == 0) return v;
+    v.address = address + r.offset;
+    v.stride = r.stride;
+    v.size = r.size;
+    return v;
+  };
+  ranges_ = {range(layout.rayGeneration), range(layout.miss), range(layout.hitGroup)};
+  return ranges_;
+}
+
 }  // namespace penumbra::rhi
