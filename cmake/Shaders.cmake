@@ -74,6 +74,26 @@ elseif(WIN32)
                   "or pass -DDXC_EXECUTABLE=/path/to/dxc)")
 endif()
 
+# Which compiler turns the stages into SPIR-V for Vulkan: glslang (the
+# default: GLSL wrapper, glsl/prelude.glsl) or DXC (-spirv, from the same
+# HLSL wrapper the DXIL is built from: one compiler and one prelude for both
+# APIs). docs/results.md measures the two on the H200 and says why the
+# default is what it is.
+set(PENUMBRA_SPIRV_COMPILER "glslang" CACHE STRING "SPIR-V compiler of the shader stages: glslang | dxc")
+set_property(CACHE PENUMBRA_SPIRV_COMPILER PROPERTY STRINGS glslang dxc)
+if(PENUMBRA_SPIRV_COMPILER STREQUAL "dxc")
+  if(NOT DXC_EXECUTABLE)
+    find_program(_dxc_spirv NAMES dxc NO_CACHE)
+    if(NOT _dxc_spirv)
+      message(FATAL_ERROR "PENUMBRA_SPIRV_COMPILER=dxc: no dxc found (scripts/setup.sh installs it, or pass -DDXC_EXECUTABLE=...)")
+    endif()
+    set(DXC_EXECUTABLE "${_dxc_spirv}" CACHE FILEPATH "" FORCE)
+  endif()
+  message(STATUS "Penumbra: the stages' SPIR-V is compiled from HLSL with ${DXC_EXECUTABLE}")
+elseif(NOT PENUMBRA_SPIRV_COMPILER STREQUAL "glslang")
+  message(FATAL_ERROR "PENUMBRA_SPIRV_COMPILER is '${PENUMBRA_SPIRV_COMPILER}': glslang or dxc")
+endif()
+
 # --- The reflection tool: built here, or taken from a native build ---------
 # A cross build cannot run what it builds, so it names a native build's tool
 # directory (scripts/build-windows-cross.sh passes build/tools/shader_layout).
@@ -114,6 +134,21 @@ function(_penumbra_shader_stage name out)
     message(FATAL_ERROR "penumbra_add_shaders: cannot tell the stage of '${name}'")
   endif()
   set(${out} ${stage} PARENT_SCOPE)
+endfunction()
+
+# DXC's target profile of a stage, for DXIL and for -spirv alike.
+function(_penumbra_dxc_profile stage out)
+  if(stage STREQUAL "Compute")
+    set(profile -T cs_6_3 -E main)
+  elseif(stage STREQUAL "Vertex")
+    set(profile -T vs_6_0 -E main)
+  elseif(stage STREQUAL "Pixel")
+    set(profile -T ps_6_0 -E main)
+  else()
+    # 6.5 for GeometryIndex() (DXR 1.1, D3D12_RAYTRACING_TIER_1_1).
+    set(profile -T lib_6_5)
+  endif()
+  set(${out} ${profile} PARENT_SCOPE)
 endfunction()
 
 function(penumbra_add_shaders)
@@ -217,14 +252,26 @@ function(penumbra_add_shaders)
       # next to register(un).
       set(lang_flags --target-env vulkan1.1 -D -S comp -e main)
     endif()
-    add_custom_command(
-      OUTPUT ${spv}
-      COMMAND ${GLSLANG_VALIDATOR} ${lang_flags} ${effect_defines} ${include_flags} --quiet
-              --depfile ${spv}.d -o ${spv} ${glslang_input}
-      DEPENDS ${abs}
-      DEPFILE ${spv}.d
-      COMMENT "glslang ${name}"
-      VERBATIM)
+    if(kind STREQUAL "stage" AND PENUMBRA_SPIRV_COMPILER STREQUAL "dxc")
+      _penumbra_dxc_profile(${stage} spirv_profile)
+      add_custom_command(
+        OUTPUT ${spv}
+        COMMAND ${DXC_EXECUTABLE} -spirv -fspv-target-env=vulkan1.2 ${spirv_profile} -HV 2021 -O3
+                -Wno-ignored-attributes ${effect_defines} -I${stage_dir} ${hlsl_include_flags}
+                -Fo ${spv} ${hlsl_input}
+        DEPENDS ${abs} ${hlsl_depends}
+        COMMENT "dxc -spirv ${name}"
+        VERBATIM)
+    else()
+      add_custom_command(
+        OUTPUT ${spv}
+        COMMAND ${GLSLANG_VALIDATOR} ${lang_flags} ${effect_defines} ${include_flags} --quiet
+                --depfile ${spv}.d -o ${spv} ${glslang_input}
+        DEPENDS ${abs}
+        DEPFILE ${spv}.d
+        COMMENT "glslang ${name}"
+        VERBATIM)
+    endif()
 
     set(dxil_args)
     set(dxil_depends)
@@ -247,16 +294,7 @@ function(penumbra_add_shaders)
       endif()
       if(PENUMBRA_HAVE_DXIL)
         set(dxil ${out_dir}/${name}.dxil)
-        if(stage STREQUAL "Compute")
-          set(profile -T cs_6_3 -E main)
-        elseif(stage STREQUAL "Vertex")
-          set(profile -T vs_6_0 -E main)
-        elseif(stage STREQUAL "Pixel")
-          set(profile -T ps_6_0 -E main)
-        else()
-          # 6.5 for GeometryIndex() (DXR 1.1, D3D12_RAYTRACING_TIER_1_1).
-          set(profile -T lib_6_5)
-        endif()
+        _penumbra_dxc_profile(${stage} profile)
         add_custom_command(
           OUTPUT ${dxil}
           COMMAND ${DXC_EXECUTABLE} ${profile} -HV 2021 -Wno-ignored-attributes ${effect_defines} -I${stage_dir} ${hlsl_include_flags} -Fo ${dxil}

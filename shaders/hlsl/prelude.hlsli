@@ -124,7 +124,9 @@ static uint ptCheckGeometry;
   payload.hitT = dot(origin, direction) + (tMin) + (tMax)
 #else
 // --- DXC: DXR --------------------------------------------------------------
-#define PT_ACCELERATION_STRUCTURE(name, t) RaytracingAccelerationStructure name : PENUMBRA_REGISTER_T(t)
+// [[vk::binding]] for DXC's SPIR-V mode (PENUMBRA_SPIRV_COMPILER=dxc); DXIL ignores it.
+#define PT_ACCELERATION_STRUCTURE(name, t) \
+  [[vk::binding(PENUMBRA_T(t), 0)]] RaytracingAccelerationStructure name : PENUMBRA_REGISTER_T(t)
 #define PT_RAY_GENERATION(name) [shader("raygeneration")] void name()
 #define PT_MISS(name, payloadType, payload) [shader("miss")] void name(inout payloadType payload)
 #define PT_CLOSEST_HIT(name, payloadType, payload, attributeType, attributes) \

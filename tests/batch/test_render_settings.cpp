@@ -12,23 +12,11 @@
 #include "penumbra/batch/partial_render.h"
 #include "penumbra/batch/render_job.h"
 #include "penumbra/batch/render_settings.h"
+#include "penumbra/util/field_count.h"
 
 using namespace penumbra;
 
 namespace {
-
-// The number of fields of an aggregate: the most initializers it takes.
-struct AnyField {
-  template <class T>
-  operator T() const;
-};
-template <class T, class... Fields>
-constexpr size_t fieldCount() {
-  if constexpr (requires { T{Fields{}..., AnyField{}}; })
-    return fieldCount<T, Fields..., AnyField>();
-  else
-    return sizeof...(Fields);
-}
 
 // A value other than the setting's default that it accepts.
 double otherValue(const render::Setting& s) {

@@ -3,24 +3,28 @@
 #include <variant>
 
 #include "penumbra/util/content_hash.h"
+#include "penumbra/util/field_count.h"
 
 namespace penumbra::scene {
 namespace {
 
 // Each struct's fields are hashed one by one (padding bytes are not
-// content). The size checks catch a field added without being hashed here:
-// when one fails, hash the new field, then update the size.
-#if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(Material) == 184, "a Material field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(Mesh) == 184, "a Mesh field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(Camera) == 72, "a Camera field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(PointLight) == 72, "a PointLight field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(TextureRef) == 48, "a TextureRef field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(Texture) == 72, "a Texture field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(ImplicitObject) == 216, "an ImplicitObject field is not hashed");
-static_assert(sizeof(Instance) == 136, "an Instance field is not hashed (scene_hash.cpp)");
-static_assert(sizeof(Environment) == 80, "an Environment field is not hashed (scene_hash.cpp)");
-#endif
+// content). The field counts catch a field added without being hashed here,
+// padding or not, on every compiler: when one fails, hash the new field,
+// then update the count.
+static_assert(fieldCount<Material>() == 33, "a Material field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Mesh>() == 8, "a Mesh field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Camera>() == 8, "a Camera field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<TextureRef>() == 6, "a TextureRef field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<TextureSampler>() == 4, "a sampler field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Texture>() == 5, "a Texture field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<ImplicitObject>() == 5, "an ImplicitObject field is not hashed");
+static_assert(fieldCount<SphereTracing>() == 2, "a SphereTracing field is not hashed");
+static_assert(fieldCount<Instance>() == 2, "an Instance field is not hashed (scene_hash.cpp)");
+// Environment::source only names where the map came from: not hashed.
+static_assert(fieldCount<Environment>() == 7,
+              "an Environment field is not hashed (scene_hash.cpp)");
 
 void hashMaterial(ContentHash& h, const Material& m) {
   h.text(m.name);
