@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -38,15 +39,9 @@ namespace {
 struct StudyOptions {
   SceneOptions scene{"cornell-box", "64x64"};
   std::string spp = "1,4,16,64";
-  std::string integrators = "path";
-  std::string strategies = "mis";
-  std::string heuristics = "power";
-  std::string samplers = "random";
-  std::string maxDepths = "8";
-  std::string roulette = "on";
-  std::string clamps = "0";
-  std::string denoise = "off";
-  std::string pipelines = "specialized";
+  // Each study axis's comma-separated values, by settings key
+  // (study::studyAxes(): --integrator, --max-depth, --pipeline, ...).
+  std::map<std::string, std::string> axes;
   uint32_t seeds = 3;
   uint32_t firstSeed = 1;
   uint32_t repeats = 3;
@@ -108,40 +103,19 @@ study::StudySpec makeSpec(const StudyOptions& o) {
   spec.spp = parseList<uint32_t>(
       "--spp", o.spp, [](const std::string& s) { return parseCount(s, 1, 1u << 20); },
       "a sample count 1..1048576");
-  // The technique axes that are table settings take the table's names and
-  // ranges (batch/render_settings.h); a flag's values are on and off.
-  auto axis = [](const char* key, const std::string& text, auto& out) {
-    using T = typename std::decay_t<decltype(out)>::value_type;
-    const render::Setting& setting = *render::findSetting(key);
-    const std::vector<double> values = parseList<double>(
-        fmt::format("--{}", setting.name), text,
-        [&](const std::string& item) { return setting.parse(item); }, setting.expected().c_str());
-    out.clear();
-    for (double v : values) {
-      if constexpr (std::is_same_v<T, bool>)
-        out.push_back(v != 0.0);
-      else if constexpr (std::is_enum_v<T>)
-        out.push_back(T(static_cast<std::underlying_type_t<T>>(v)));
-      else
-        out.push_back(T(v));
-    }
-  };
-  axis("integrator", o.integrators, spec.integrators);
-  axis("strategy", o.strategies, spec.strategies);
-  axis("misHeuristic", o.heuristics, spec.heuristics);
-  axis("sampler", o.samplers, spec.samplers);
-  axis("maxDepth", o.maxDepths, spec.maxDepths);
-  axis("russianRoulette", o.roulette, spec.russianRoulette);
-  axis("radianceClamp", o.clamps, spec.clamps);
-  axis("denoise", o.denoise, spec.denoise);
-  spec.allEffects = parseList<bool>(
-      "--pipeline", o.pipelines,
-      [](const std::string& s) -> std::optional<bool> {
-        if (s == "specialized") return false;
-        if (s == "full") return true;
-        return std::nullopt;
-      },
-      "a pipeline (specialized, full)");
+  // The technique axes: the settings table's entries, their names and ranges.
+  for (const study::StudyAxis& axis : study::studyAxes()) {
+    const auto given = o.axes.find(std::string(axis.setting->key));
+    if (given == o.axes.end()) continue;
+    std::string expected = axis.setting->expected();
+    if (axis.setting->type == render::SettingType::Flag)
+      expected = fmt::format("{} or {}", axis.onWord, axis.offWord);
+    spec.sweepValues(
+        axis.setting->key,
+        parseList<double>(
+            fmt::format("--{}", axis.option), given->second,
+            [&](const std::string& item) { return axis.parse(item); }, expected.c_str()));
+  }
   spec.seeds = o.seeds;
   spec.firstSeed = o.firstSeed;
   return spec;
@@ -459,7 +433,7 @@ study::Reference renderOrCachedReference(const StudyOptions& o, const std::files
                     "the same study with --reference-only first",
                     o.out));
   study::Technique referenceTechnique;
-  referenceTechnique.maxDepth = o.referenceMaxDepth;
+  referenceTechnique.settings.tracer.maxDepth = o.referenceMaxDepth;
   study::Reference reference =
       runner.renderReference(referenceTechnique, referenceSppOf(o), o.referenceSeed, report);
   const auto cachedImage = dir / "reference.exr", cachedKey = dir / "reference.txt";
@@ -622,24 +596,16 @@ Command addStudyCommand(CLI::App& app) {
       "on the GPU and compared with a reference; write results.csv/json and print the answers");
   addSceneOptions(*cmd, o->scene, "Built-in scene name, scene file or glTF file");
   cmd->add_option("--spp", o->spp, "Samples per pixel, comma separated")->capture_default_str();
-  cmd->add_option("--integrator", o->integrators, "path, whitted (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--strategy", o->strategies, "uniform, cosine, bsdf, nee, mis (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--mis-heuristic", o->heuristics, "power, balance (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--sampler", o->samplers, "random, sobol (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--max-depth", o->maxDepths, "Maximum bounces (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--russian-roulette", o->roulette, "on, off (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--clamp", o->clamps, "Per-sample radiance clamps, 0 = off (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--denoise", o->denoise, "off, atrous, svgf (comma separated)")
-      ->capture_default_str();
-  cmd->add_option("--pipeline", o->pipelines, "specialized, full (comma separated)")
-      ->capture_default_str();
+  // One option per study axis, from the settings table.
+  for (const study::StudyAxis& axis : study::studyAxes()) {
+    const render::Setting& setting = *axis.setting;
+    std::string& values = o->axes[std::string(setting.key)];
+    values = axis.spell(setting.get(render::RenderSettings{}));
+    std::string help = fmt::format("{} (comma separated)", setting.help);
+    if (setting.type == render::SettingType::Flag)
+      help = fmt::format("{}: {}, {} (comma separated)", setting.label, axis.onWord, axis.offWord);
+    cmd->add_option(fmt::format("--{}", axis.option), values, help)->capture_default_str();
+  }
   cmd->add_option("--seeds", o->seeds, "Seeds per point (for confidence intervals)")
       ->check(CLI::Range(1u, 1000u))
       ->capture_default_str();

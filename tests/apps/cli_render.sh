@@ -5,6 +5,9 @@ set -eu
 penumbra="$1"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# A failed check names its line and command, and shows what the renders
+# printed to stderr (a rare failure under ctest -j2 printed nothing).
+trap 'echo "cli_render.sh: line $LINENO failed: $BASH_COMMAND" >&2; cat "$work"/*.err >&2 2>/dev/null || true' ERR
 "$penumbra" render --size 48x32 --spp 4 --seed 3 --validation --out "$work/cornell.png" | tee "$work/log"
 grep -q "^device: " "$work/log"
 grep -q "48x32, 4 spp" "$work/log"

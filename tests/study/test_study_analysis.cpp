@@ -112,7 +112,7 @@ TEST_CASE("study results: results.csv reads back, any column order, and bad file
     return std::string("no error");
   };
   CHECK(message("technique,spp,seed\n") == "r.csv: line 1: the header has no 'gpu_ms' column");
-  CHECK(message(std::string(study::kResultsCsvHeader) + "\n") == "r.csv: no rows after the header");
+  CHECK(message(study::resultsCsvHeader() + "\n") == "r.csv: no rows after the header");
   CHECK(message("technique,spp,seed,gpu_ms,relmse,mape,ssim,bias\nmis,4,1,2.5,nan,0,0,0\n") ==
         "r.csv: line 2: relmse 'nan' is not a finite number");
   CHECK(message("technique,spp,seed,gpu_ms,relmse,mape,ssim,bias\nmis,4,1,2.5\n") ==
@@ -128,7 +128,8 @@ TEST_CASE("study results: results.csv reads back, any column order, and bad file
 // matched to its point; a row of no point of the study is refused.
 TEST_CASE("study results: a part's rows read back exactly and match their points", "[study]") {
   study::StudySpec spec;
-  spec.strategies = {render::SamplingStrategy::Mis, render::SamplingStrategy::Bsdf};
+  spec.sweep("strategy",
+             std::vector{render::SamplingStrategy::Mis, render::SamplingStrategy::Bsdf});
   spec.spp = {1, 4};
   spec.seeds = 2;
   const std::vector<study::StudyPoint> points = study::expandStudy(spec);

@@ -59,14 +59,15 @@ TEST_CASE("study: unbiased strategies converge as 1/spp and a clamp's bias is fo
   const scene::Scene scene = scene::loadScene("cornell-box");
   study::StudyRunner runner(*device, scene, 32, 32);
   study::Technique referenceTechnique;
-  referenceTechnique.maxDepth = 64;
+  referenceTechnique.settings.tracer.maxDepth = 64;
   const study::Reference reference = runner.renderReference(referenceTechnique, 2048, 1000003);
   CHECK(reference.spp == 2048u);
   REQUIRE(reference.noiseRelMse > 0.0);
 
   study::StudySpec spec;
-  spec.strategies = {render::SamplingStrategy::Bsdf, render::SamplingStrategy::Mis};
-  spec.clamps = {0.0f, 0.5f};
+  spec.sweep("strategy",
+             std::vector{render::SamplingStrategy::Bsdf, render::SamplingStrategy::Mis});
+  spec.sweep("radianceClamp", std::vector{0.0f, 0.5f});
   spec.spp = {1, 4, 16, 64};
   spec.seeds = 3;
   study::checkReferenceIndependence(spec, reference.seed);
@@ -101,9 +102,9 @@ TEST_CASE("study: unbiased strategies converge as 1/spp and a clamp's bias is fo
   // random sampler's error. Its slope may be steeper than -1 (stratified
   // edges converge faster) but not flatter.
   study::StudySpec sobolSpec = spec;
-  sobolSpec.strategies = {render::SamplingStrategy::Mis};
-  sobolSpec.clamps = {0.0f};
-  sobolSpec.samplers = {render::Sampler::Sobol};
+  sobolSpec.sweep("strategy", std::vector{render::SamplingStrategy::Mis});
+  sobolSpec.sweep("radianceClamp", std::vector{0.0f});
+  sobolSpec.sweep("sampler", std::vector{render::Sampler::Sobol});
   std::vector<study::Measurement> sobolRows;
   for (const auto& point : study::expandStudy(sobolSpec))
     sobolRows.push_back(study::measurement(runner.run(point, reference)));

@@ -3,100 +3,146 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <iterator>
 
-#include "penumbra/batch/render_job.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::study {
 
-render::PathTracerSettings Technique::settings(uint32_t seed) const {
-  render::PathTracerSettings s;
-  s.integrator = integrator;
-  s.strategy = strategy;
-  s.misHeuristic = heuristic;
-  s.sampler = sampler;
-  s.maxDepth = maxDepth;
-  s.russianRoulette = russianRoulette;
-  s.radianceClamp = clamp;
+const std::vector<StudyAxis>& studyAxes() {
+  static const std::vector<StudyAxis> axes = [] {
+    auto axis = [](std::string_view key, std::string_view column, std::string_view tag) {
+      const render::Setting* setting = render::findSetting(key);
+      if (!setting) throw Error(fmt::format("internal error: study axis '{}' is no setting", key));
+      return StudyAxis{.setting = setting,
+                       .csvColumn = column,
+                       .jsonKey = key,
+                       .labelTag = tag,
+                       .option = setting->name};
+    };
+    std::vector<StudyAxis> list = {axis("integrator", "integrator", ""),
+                                   axis("strategy", "strategy", ""),
+                                   axis("misHeuristic", "mis_heuristic", ""),
+                                   axis("sampler", "sampler", ""),
+                                   axis("maxDepth", "max_depth", "depth="),
+                                   axis("russianRoulette", "russian_roulette", "rr="),
+                                   axis("radianceClamp", "clamp", "clamp="),
+                                   axis("denoise", "denoise", "denoise="),
+                                   axis("allEffects", "pipeline", "")};
+    // The results' spellings that predate the table's keys.
+    list[6].jsonKey = "clamp";
+    list[8].jsonKey = "pipeline";
+    list[8].onWord = "full";
+    list[8].offWord = "specialized";
+    list[8].option = "pipeline";
+    return list;
+  }();
+  return axes;
+}
+
+std::string StudyAxis::spell(double value) const {
+  switch (setting->type) {
+    case render::SettingType::Flag:
+      return std::string(value != 0.0 ? onWord : offWord);
+    case render::SettingType::Number:
+      return fmt::format("{:.17g}", value);
+    default:
+      return setting->format(value);
+  }
+}
+
+std::optional<double> StudyAxis::parse(std::string_view text) const {
+  if (setting->type == render::SettingType::Flag) {
+    if (text == onWord) return 1.0;
+    if (text == offWord) return 0.0;
+  }
+  return setting->parse(text);
+}
+
+const StudyAxis* findStudyAxis(std::string_view keyOrName) {
+  for (const StudyAxis& a : studyAxes())
+    if (a.setting->key == keyOrName || a.setting->name == keyOrName || a.option == keyOrName)
+      return &a;
+  return nullptr;
+}
+
+render::PathTracerSettings Technique::frameSettings(uint32_t seed) const {
+  render::PathTracerSettings s = render::frameSettings(settings);
   s.seed = seed;
-  s.writeGuides = denoise != render::DenoiseMode::Off;
   return s;
 }
 
+double Technique::value(std::string_view key) const {
+  const render::Setting* setting = render::findSetting(key);
+  if (!setting) throw Error(fmt::format("internal error: no setting '{}'", key));
+  return setting->get(settings);
+}
+
 std::string Technique::label() const {
-  const Technique defaults;
-  std::string name = integrator == render::Integrator::Whitted ? render::integratorName(integrator)
-                                                               : render::strategyName(strategy);
-  if (integrator == render::Integrator::Path && heuristic != defaults.heuristic)
-    name += fmt::format(" {}", render::misHeuristicName(heuristic));
-  if (sampler != defaults.sampler) name += fmt::format(" {}", render::samplerName(sampler));
-  if (maxDepth != defaults.maxDepth) name += fmt::format(" depth={}", maxDepth);
-  if (integrator == render::Integrator::Path) {
-    if (!russianRoulette) name += " rr=off";
-    if (clamp > 0.0f) name += fmt::format(" clamp={:g}", clamp);
-    if (denoise != render::DenoiseMode::Off)
-      name += fmt::format(" denoise={}", render::denoiseModeName(denoise));
+  const bool whitted = settings.tracer.integrator == render::Integrator::Whitted;
+  std::string name = whitted ? render::integratorName(settings.tracer.integrator)
+                             : render::strategyName(settings.tracer.strategy);
+  for (const StudyAxis& axis : studyAxes()) {
+    const render::Setting& s = *axis.setting;
+    if (s.key == "integrator" || s.key == "strategy" || s.isDefault(settings)) continue;
+    const double v = s.get(settings);
+    // Numbers as the table formats them (shortest), not spell()'s 17 digits.
+    name += fmt::format(" {}{}", axis.labelTag,
+                        s.type == render::SettingType::Number ? s.format(v) : axis.spell(v));
   }
-  if (allEffects) name += " full";
   return name;
 }
 
-bool Technique::operator==(const Technique& o) const {
-  return integrator == o.integrator && strategy == o.strategy && heuristic == o.heuristic &&
-         sampler == o.sampler && maxDepth == o.maxDepth && russianRoulette == o.russianRoulette &&
-         clamp == o.clamp && denoise == o.denoise && allEffects == o.allEffects;
+bool Technique::operator==(const Technique& other) const {
+  for (const StudyAxis& axis : studyAxes())
+    if (axis.setting->get(settings) != axis.setting->get(other.settings)) return false;
+  return true;
 }
 
-namespace {
-
-template <class T>
-void requireValues(const std::vector<T>& list, const char* what) {
-  if (list.empty()) throw Error(fmt::format("study: no {} given", what));
+void StudySpec::sweepValues(std::string_view key, std::vector<double> values) {
+  const StudyAxis* axis = findStudyAxis(key);
+  if (!axis) throw Error(fmt::format("study: '{}' is no setting a study sweeps", key));
+  for (double v : values)
+    if (!axis->setting->accepts(v))
+      throw Error(
+          fmt::format("study: {} {} is not {}", axis->setting->name, v, axis->setting->expected()));
+  for (Sweep& s : sweeps)
+    if (s.key == axis->setting->key) {
+      s.values = std::move(values);
+      return;
+    }
+  sweeps.push_back({std::string(axis->setting->key), std::move(values)});
 }
-
-}  // namespace
 
 std::vector<Technique> studyTechniques(const StudySpec& spec) {
-  requireValues(spec.integrators, "integrator");
-  requireValues(spec.strategies, "strategy");
-  requireValues(spec.heuristics, "MIS heuristic");
-  requireValues(spec.samplers, "sampler");
-  requireValues(spec.maxDepths, "max depth");
-  requireValues(spec.russianRoulette, "Russian roulette setting");
-  requireValues(spec.clamps, "clamp");
-  requireValues(spec.denoise, "denoiser");
-  requireValues(spec.allEffects, "pipeline");
+  // Each axis's values: the sweep's, or the default alone.
+  const std::vector<StudyAxis>& axes = studyAxes();
+  std::vector<std::vector<double>> lists;
+  for (const StudyAxis& axis : axes) {
+    std::vector<double> values{axis.setting->get(render::RenderSettings{})};
+    for (const auto& s : spec.sweeps)
+      if (s.key == axis.setting->key) values = s.values;
+    if (values.empty()) throw Error(fmt::format("study: no {} given", axis.setting->name));
+    lists.push_back(std::move(values));
+  }
   // The product of the lists, odometer order: the last list turns fastest.
-  const size_t sizes[] = {
-      spec.integrators.size(), spec.strategies.size(), spec.heuristics.size(),
-      spec.samplers.size(),    spec.maxDepths.size(),  spec.russianRoulette.size(),
-      spec.clamps.size(),      spec.denoise.size(),    spec.allEffects.size()};
-  constexpr size_t kLists = std::size(sizes);
-  size_t at[kLists] = {};
+  std::vector<size_t> at(lists.size(), 0);
   std::vector<Technique> techniques;
   for (bool more = true; more;) {
     Technique t;
-    t.integrator = spec.integrators[at[0]];
-    t.sampler = spec.samplers[at[3]];
-    t.maxDepth = spec.maxDepths[at[4]];
-    t.allEffects = spec.allEffects[at[8]];
-    const auto denoise = spec.denoise[at[7]];
-    bool keep = true;
-    if (t.integrator == render::Integrator::Path) {
-      t.strategy = spec.strategies[at[1]];
-      t.heuristic = spec.heuristics[at[2]];
-      t.russianRoulette = spec.russianRoulette[at[5]];
-      t.clamp = spec.clamps[at[6]];
-      t.denoise = denoise;
-    } else {
-      keep = denoise == render::DenoiseMode::Off;
-    }
+    for (size_t k = 0; k < axes.size(); ++k) axes[k].setting->set(t.settings, lists[k][at[k]]);
+    // The denoiser filters the path tracer's image only; the path tracer's
+    // other options mean nothing to Whitted.
+    const bool keep =
+        t.settings.denoiser.mode == render::DenoiseMode::Off || render::denoises(t.settings);
+    if (t.settings.tracer.integrator != render::Integrator::Path)
+      for (const StudyAxis& axis : axes)
+        if (axis.setting->pathTracerOnly)
+          axis.setting->set(t.settings, axis.setting->get(render::RenderSettings{}));
     if (keep && std::find(techniques.begin(), techniques.end(), t) == techniques.end())
       techniques.push_back(t);
     more = false;
-    for (size_t k = kLists; k-- > 0;) {
-      if (++at[k] < sizes[k]) {
+    for (size_t k = at.size(); k-- > 0;) {
+      if (++at[k] < lists[k].size()) {
         more = true;
         break;
       }
@@ -109,7 +155,7 @@ std::vector<Technique> studyTechniques(const StudySpec& spec) {
 }
 
 std::vector<StudyPoint> expandStudy(const StudySpec& spec) {
-  requireValues(spec.spp, "spp");
+  if (spec.spp.empty()) throw Error("study: no spp given");
   for (uint32_t spp : spec.spp)
     if (spp == 0) throw Error("study: spp 0 (every point needs at least one sample)");
   if (spec.seeds == 0) throw Error("study: --seeds 0 (every point needs a seed)");

@@ -14,10 +14,16 @@
 
 namespace penumbra::study {
 
-const char* const kResultsCsvHeader =
-    "technique,integrator,strategy,mis_heuristic,sampler,max_depth,russian_roulette,clamp,denoise,"
-    "pipeline,spp,seed,gpu_ms,denoise_ms,rays,relmse,mape,ssim,bias,efficiency,"
-    "below_reference_noise";
+const std::string& resultsCsvHeader() {
+  static const std::string header = [] {
+    std::string h = "technique";
+    for (const StudyAxis& axis : studyAxes()) h += fmt::format(",{}", axis.csvColumn);
+    return h +
+           ",spp,seed,gpu_ms,denoise_ms,rays,relmse,mape,ssim,bias,efficiency,"
+           "below_reference_noise";
+  }();
+  return header;
+}
 
 std::string imageName(const std::string& technique, uint32_t spp) {
   std::string name;
@@ -49,16 +55,16 @@ std::string number(double v) {
 }  // namespace
 
 std::string resultsCsv(const std::vector<StudyRow>& rows) {
-  std::string out = std::string(kResultsCsvHeader) + "\n";
+  std::string out = resultsCsvHeader() + "\n";
   for (const StudyRow& r : rows) {
     const Technique& t = r.point.technique;
-    // Technique labels hold no comma or quote: no quoting needed.
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-                       t.label(), render::integratorName(t.integrator),
-                       render::strategyName(t.strategy), render::misHeuristicName(t.heuristic),
-                       render::samplerName(t.sampler), t.maxDepth, t.russianRoulette ? "on" : "off",
-                       number(t.clamp), render::denoiseModeName(t.denoise),
-                       t.allEffects ? "full" : "specialized", r.point.spp, r.point.seed,
+    // Technique labels and spelled values hold no comma or quote: no quoting needed.
+    out += t.label();
+    for (const StudyAxis& axis : studyAxes()) {
+      out += ',';
+      out += axis.spell(axis.setting->get(t.settings));
+    }
+    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{}\n", r.point.spp, r.point.seed,
                        number(r.gpuMs), number(r.denoiseMs), r.rays, number(r.error.relMse),
                        number(r.error.mape), number(r.error.ssim), number(r.error.bias),
                        number(1.0 / (r.error.relMse * r.gpuMs)), r.belowReferenceNoise ? 1 : 0);
@@ -243,15 +249,27 @@ std::string resultsJson(const StudyContext& c, const std::vector<StudyRow>& rows
     const Technique& t = r.point.technique;
     nlohmann::json j;
     j["technique"] = t.label();
-    j["integrator"] = render::integratorName(t.integrator);
-    j["strategy"] = render::strategyName(t.strategy);
-    j["misHeuristic"] = render::misHeuristicName(t.heuristic);
-    j["sampler"] = render::samplerName(t.sampler);
-    j["maxDepth"] = t.maxDepth;
-    j["russianRoulette"] = t.russianRoulette;
-    j["clamp"] = t.clamp;
-    j["denoise"] = render::denoiseModeName(t.denoise);
-    j["pipeline"] = t.allEffects ? "full" : "specialized";
+    for (const StudyAxis& axis : studyAxes()) {
+      const double v = axis.setting->get(t.settings);
+      nlohmann::json& field = j[std::string(axis.jsonKey)];
+      switch (axis.setting->type) {
+        case render::SettingType::Count:
+          field = uint64_t(v);
+          break;
+        case render::SettingType::Number:
+          field = v;
+          break;
+        case render::SettingType::Flag:
+          if (axis.onWord == "on")
+            field = v != 0.0;
+          else
+            field = axis.spell(v);
+          break;
+        case render::SettingType::Choice:
+          field = axis.spell(v);
+          break;
+      }
+    }
     j["spp"] = r.point.spp;
     j["seed"] = r.point.seed;
     j["gpuMs"] = r.gpuMs;

@@ -22,7 +22,9 @@ struct StudyContext {
   double budgetMs = 33.3;
 };
 
-extern const char* const kResultsCsvHeader;
+// results.csv's header: the technique's label, a column per study axis
+// (studyAxes()), then the point and what was measured.
+const std::string& resultsCsvHeader();
 
 // The file name (no extension) of a point's image under images/: the
 // technique's label with anything but letters, digits and dots as '_',

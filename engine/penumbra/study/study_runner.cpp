@@ -49,17 +49,16 @@ StudyRunner::~StudyRunner() = default;
 image::Image StudyRunner::render(const Technique& technique, uint32_t spp, uint32_t seed,
                                  double* gpuMs, double* denoiseMs, uint64_t* rays,
                                  const std::function<void(uint32_t)>& progress) {
-  auto& tracer = tracers_[technique.allEffects];
+  auto& tracer = tracers_[technique.settings.allEffects];
   if (!tracer) {
     render::PipelineOptions options;
-    options.allEffects = technique.allEffects;
+    options.allEffects = technique.settings.allEffects;
     tracer = std::make_unique<render::PathTracer>(device_, scene_, width_, height_, options);
   }
-  const bool denoising = technique.denoise != render::DenoiseMode::Off;
+  const bool denoising = render::denoises(technique.settings);
   if (denoising && !denoiser_)
     denoiser_ = std::make_unique<render::Denoiser>(device_, width_, height_);
-  render::DenoiserSettings denoise;
-  denoise.mode = technique.denoise;
+  const render::DenoiserSettings& denoise = technique.settings.denoiser;
   // A GPU left idle while the host measured the last point clocks down, and
   // its first frames then run slow (on the H200 a 16-spp Cornell box read
   // 171 ms after a pause against 30 ms in a steady run): frames of this
@@ -67,7 +66,7 @@ image::Image StudyRunner::render(const Technique& technique, uint32_t spp, uint3
   if (gpuMs) {
     double warm = 0;
     for (int frame = 0; frame < 64 && warm < 0.1; ++frame)
-      warm += tracer->renderFrame(technique.settings(seed), std::min(spp, 16u)).gpuSeconds;
+      warm += tracer->renderFrame(technique.frameSettings(seed), std::min(spp, 16u)).gpuSeconds;
   }
   // Timed renders repeat (the same seed renders the same image) and the
   // median counts: on a shared GPU a single render read up to 1.6x its
@@ -76,7 +75,7 @@ image::Image StudyRunner::render(const Technique& technique, uint32_t spp, uint3
   const uint32_t repeats = gpuMs ? timingRepeats_ : 1u;
   for (uint32_t k = 0; k < repeats; ++k)
     timings.push_back(render::renderSamples(
-        *tracer, denoising ? denoiser_.get() : nullptr, technique.settings(seed), denoise, spp,
+        *tracer, denoising ? denoiser_.get() : nullptr, technique.frameSettings(seed), denoise, spp,
         render::PathTracer::kMaxSamplesPerFrame, k + 1 == repeats ? progress : nullptr));
   std::sort(timings.begin(), timings.end(), [](const auto& a, const auto& b) {
     return a.gpuSeconds + a.denoiseSeconds < b.gpuSeconds + b.denoiseSeconds;
@@ -91,7 +90,8 @@ image::Image StudyRunner::render(const Technique& technique, uint32_t spp, uint3
 Reference StudyRunner::renderReference(const Technique& technique, uint32_t spp, uint32_t seed,
                                        const std::function<void(uint32_t)>& progress) {
   if (spp < 2) throw Error("study: a rendered reference needs at least 2 spp (two halves)");
-  if (technique.denoise != render::DenoiseMode::Off || technique.clamp > 0.0f)
+  if (technique.settings.denoiser.mode != render::DenoiseMode::Off ||
+      technique.settings.tracer.radianceClamp > 0.0f)
     throw Error("study: the reference must be unbiased (no denoiser, no clamp)");
   const uint32_t half = (spp + 1) / 2;
   const image::Image a = render(technique, half, seed, nullptr, nullptr, nullptr, progress);
