@@ -191,7 +191,8 @@ void addOutputSettings(std::vector<Setting>& table) {
   table.push_back(field<Nested<&RenderSettings::denoiser, &DenoiserSettings::fireflyClamp>>(
       {.key = "fireflyClamp",
        .name = "firefly-clamp",
-       .help = "Denoiser: keep pixels brighter than all their neighbours (no firefly clamp)",
+       .help = "Denoiser: clamp a pixel brighter than all its neighbours to the brightest (fewer "
+               "spikes at 1-4 spp, but their light is lost)",
        .type = T::Flag,
        .label = "firefly clamp",
        .widget = W::Checkbox,

@@ -28,7 +28,10 @@ enum class DenoiseMode { Off, Atrous, Svgf };
 struct DenoiserSettings {
   DenoiseMode mode = DenoiseMode::Atrous;
   uint32_t iterations = 5;   // a-trous iterations: 5 reach 2^5 + ... = 62 pixels out
-  bool fireflyClamp = true;  // clamp a pixel brighter than all 8 neighbours to the brightest
+  // Clamp a pixel brighter than all 8 neighbours to the brightest. Off by
+  // default: the light of the spikes it clamps is gone (a 1 spp Cornell box
+  // lost 9 % of its light, docs/results.md "The denoiser keeps the light").
+  bool fireflyClamp = false;
   // Svgf: frames of history at most (then an exponential mean, alpha 1/32).
   uint32_t maxHistory = 32;
   // Edge stopping; 0 turns a test off (to measure what each one does).
