@@ -132,7 +132,7 @@ int runCompare(const CompareOptions& o) {
   fmt::print("max absolute difference: {:.6g}\n", s.maxAbsoluteDifference);
   fmt::print("pixels beyond relative tolerance {:g}: {} ({:.4f}%)\n", o.tolerance,
              s.pixelsBeyondTolerance, s.fractionBeyondTolerance * 100.0);
-  fmt::print("PSNR: {:.2f} dB\n", s.psnr);
+  fmt::print("PSNR: {:.2f} dB (peak: b's brightest value)\n", s.psnr);
   fmt::print("relative MSE (b as reference): {:.6g}\n", s.relativeMse);
   fmt::print("SSIM: {:.6f}\n", image::ssim(a, b));
   fmt::print(

@@ -29,8 +29,8 @@ TEST_CASE("an injected difference is measured exactly", "[image][compare]") {
   REQUIRE(s.meanAbsoluteDifference == Approx(5 * 0.5 / 300.0));
   REQUIRE(s.pixelsBeyondTolerance == 5u);
   REQUIRE(s.fractionBeyondTolerance == Approx(0.05));
-  // MSE = 5 * 0.25 / 300; peak = 1.
-  REQUIRE(s.psnr == Approx(10.0 * std::log10(1.0 / (1.25 / 300.0))));
+  // MSE = 5 * 0.25 / 300; peak = 1.5, b's.
+  REQUIRE(s.psnr == Approx(10.0 * std::log10(1.5 * 1.5 / (1.25 / 300.0))));
   // relMSE with b (1.5 in the changed channels) as the reference:
   // 5 of 300 channels contribute 0.25 / (1.5^2 + 1e-2).
   REQUIRE(s.relativeMse == Approx(5 * 0.25 / (2.25 + 0.01) / 300.0));
@@ -123,4 +123,21 @@ TEST_CASE("SSIM: 1 for equal images, the closed form for two flat ones, lower wi
     previous = s;
   }
   CHECK_THROWS(image::ssim(a, flatA));
+}
+
+TEST_CASE("PSNR takes its peak from the reference: a firefly lowers the score",
+          "[image][compare]") {
+  image::Image reference{10, 10}, clean{10, 10}, firefly{10, 10};
+  for (size_t i = 0; i < reference.rgba.size(); ++i) {
+    reference.rgba[i] = 1.0f;
+    clean.rgba[i] = 1.1f;  // every channel 0.1 off
+    firefly.rgba[i] = 1.0f;
+  }
+  firefly.pixel(4, 4)[0] = 100.0f;  // one channel 99 off
+  const auto c = image::compareImages(clean, reference, 1e-3);
+  const auto f = image::compareImages(firefly, reference, 1e-3);
+  // peak 1 (the reference's): MSE 0.01 -> 20 dB; MSE 99^2 / 300 -> -15.2 dB.
+  CHECK(c.psnr == Approx(20.0).epsilon(1e-5));
+  CHECK(f.psnr == Approx(10.0 * std::log10(1.0 / (99.0 * 99.0 / 300.0))));
+  CHECK(f.psnr < c.psnr);
 }

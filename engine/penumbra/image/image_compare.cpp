@@ -33,7 +33,7 @@ ComparisonStats compareImages(const Image& a, const Image& b, double relativeTol
       sumSq += d * d;
       sumRel += d * d / (vb * vb + 1e-2);
       s.maxAbsoluteDifference = std::max(s.maxAbsoluteDifference, d);
-      peak = std::max(peak, std::abs(va));
+      peak = std::max(peak, std::abs(vb));
       if (d > relativeTolerance * std::max({std::abs(va), std::abs(vb), 1e-3})) beyond = true;
     }
     if (beyond) ++s.pixelsBeyondTolerance;

@@ -15,7 +15,10 @@ struct ComparisonStats {
   // max(|a|, |b|, 1e-3): "beyond the tolerance".
   double fractionBeyondTolerance = 0;
   uint64_t pixelsBeyondTolerance = 0;
-  double psnr = 0;  // dB, peak = max value of image a (infinite if identical)
+  // dB, the peak the largest value of b, the reference (as for relativeMse):
+  // a firefly in the image tested lowers the score instead of raising its
+  // peak. Infinite if identical.
+  double psnr = 0;
   // Relative MSE against b as the reference: mean of (a - b)^2 / (b^2 + 1e-2)
   // over RGB channels (the 1e-2 keeps dark pixels from dominating).
   double relativeMse = 0;
