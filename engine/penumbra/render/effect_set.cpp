@@ -147,8 +147,10 @@ std::string effectVariant(std::string_view shader, uint32_t effects) {
         best = mask;
       if (extra == optional) break;
     }
+    // The same image, a little less saved: a detail for whoever tunes the
+    // variant list, not news on every render.
     if (best != wanted)
-      log::info("no {} variant is built for effects {:#x}; using {:#x}", shader, wanted, best);
+      log::debug("no {} variant is built for effects {:#x}; using {:#x}", shader, wanted, best);
     return name(best);
   }
   throw Error(fmt::format("no effect variants are built for shader '{}'", shader));
