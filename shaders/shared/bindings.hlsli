@@ -1,7 +1,8 @@
 // The register-to-binding shift table, defined here once: HLSL register(tN)
-// is Vulkan binding PENUMBRA_T(N), and so on (engine/penumbra/rhi/register_shifts.h
-// reads the same macros). Plain macros, so C++, GLSL layout qualifiers and
-// HLSL attributes can all use them.
+// is Vulkan binding PENUMBRA_T(N), and so on (render::kShaderBindingOffsets,
+// engine/penumbra/render/shader_binding_offsets.h, reads the same macros and
+// hands them to the device as rhi::BindingOffsets). Plain macros, so C++,
+// GLSL layout qualifiers and HLSL attributes can all use them.
 #ifndef PENUMBRA_BINDINGS_HLSLI
 #define PENUMBRA_BINDINGS_HLSLI
 #define PENUMBRA_B(n) (0 + (n))
@@ -13,9 +14,9 @@
 // block of a DXR/compute entry point and a shader's local record data. HLSL:
 //   [[vk::push_constant]] ConstantBuffer<T> gPush : PENUMBRA_PUSH_CONSTANTS;
 //   [[vk::shader_record_ext]] ConstantBuffer<R> gRecord : PENUMBRA_SHADER_RECORD;
-// The spaces are numbers here once; engine/penumbra/rhi/register_shifts.h gives them
-// to the D3D12 root signature (root_signature_layout.h), so the two sides
-// cannot disagree.
+// The spaces are numbers here once; render::kShaderBindingOffsets gives them
+// to the device, whose D3D12 root signatures use them
+// (root_signature_layout.h), so the two sides cannot disagree.
 #define PENUMBRA_PUSH_CONSTANT_SPACE 900
 #define PENUMBRA_SHADER_RECORD_SPACE 901
 #define PENUMBRA_PUSH_CONSTANTS register(b0, PENUMBRA_CAT(space, PENUMBRA_PUSH_CONSTANT_SPACE))

@@ -259,6 +259,10 @@ void denoiseVariance(int2 p) {
   storeIllumination(p, float4(centre.xyz, variance));
 }
 
+// The luminance test's scale for a pixel of this variance: sigma_l standard
+// deviations.
+float luminanceScale(DenoiseFrame f, float variance) { return f.luminanceSigma * sqrt(max(variance, 0.0)) + 1e-10; }
+
 // Pass DN_PASS_ATROUS: one iteration of the 5x5 B3-spline kernel with holes
 // of stepWidth pixels; the variance is filtered with the squared weights.
 void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
@@ -281,7 +285,7 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
       blurredVariance += w * loadIllumination(q).w;
       blurWeight += w;
     }
-  float sigmaLuminance = f.luminanceSigma * sqrt(max(blurredVariance / blurWeight, 0.0)) + 1e-10;
+  float sigmaLuminance = luminanceScale(f, blurredVariance / blurWeight);
   float3 normal = unitOrZero(nd.xyz);
   float2 gradient = depthGradient(f, p, nd.w);
   float luminanceP = luminance(centre.xyz);
@@ -300,7 +304,7 @@ void denoiseAtrous(int2 p, uint stepWidth, uint flags) {
       // with the centre's alone, a bright sample's high-variance pixel
       // averaged it away while its low-variance neighbours excluded it, and
       // its light was lost (3-4 % of a 1-4 spp Cornell box's).
-      float sigmaPair = max(sigmaLuminance, f.luminanceSigma * sqrt(max(v.w, 0.0)) + 1e-10);
+      float sigmaPair = max(sigmaLuminance, luminanceScale(f, v.w));
       float w = kernel[abs(dx)] * kernel[abs(dy)] *
                 edgeWeight(f, nd.w, gradient, normal, luminanceP, sigmaPair, ndQ, luminance(v.xyz),
                            float2(offset));

@@ -11,13 +11,11 @@ using namespace penumbra::rhi;
 using Catch::Matchers::ContainsSubstring;
 
 namespace {
-// Binding numbers as the shaders' offsets would place t and s registers;
-// validation itself only compares slots.
-constexpr uint32_t kShiftT = 32;
-constexpr uint32_t kShiftS = 96;
-}  // namespace
 
-namespace {
+// Where this test's t and s bindings start: validation only compares slots,
+// so any numbers do.
+constexpr uint32_t kFirstT = 32;
+constexpr uint32_t kFirstS = 96;
 
 // Validation only reads descs, so stand-ins do without a device.
 class FakeTexture final : public ITexture {
@@ -39,9 +37,11 @@ class FakeSampler final : public ISampler {
 
 PipelineBindingLayout layoutWith(uint32_t textureArraySize, uint32_t samplerArraySize) {
   PipelineBindingLayout layout;
-  addBindingLayoutItem(layout, 0, {kShiftT + 3, ResourceType::SampledTexture, textureArraySize, false, 0, "gMaps"},
-                       "test");
-  addBindingLayoutItem(layout, 0, {kShiftS + 1, ResourceType::Sampler, samplerArraySize, false, 0, "gLinear"},
+  addBindingLayoutItem(
+      layout, 0, {kFirstT + 3, ResourceType::SampledTexture, textureArraySize, false, 0, "gMaps"},
+      "test");
+  addBindingLayoutItem(layout, 0,
+                       {kFirstS + 1, ResourceType::Sampler, samplerArraySize, false, 0, "gLinear"},
                        "test");
   return layout;
 }
@@ -49,11 +49,12 @@ PipelineBindingLayout layoutWith(uint32_t textureArraySize, uint32_t samplerArra
 BindingSetDesc setWith(size_t textures, size_t samplers) {
   BindingSetDesc set;
   set.debugName = "materials";
-  set.items = {BindingSetItem::sampledTextures(
-                   kShiftT + 3, std::vector<TextureHandle>(textures, std::make_shared<FakeTexture>(
-                                                                         TextureUsage::Sampled))),
-               BindingSetItem::samplers(kShiftS + 1,
-                                        std::vector<SamplerHandle>(samplers, std::make_shared<FakeSampler>()))};
+  set.items = {
+      BindingSetItem::sampledTextures(
+          kFirstT + 3, std::vector<TextureHandle>(
+                           textures, std::make_shared<FakeTexture>(TextureUsage::Sampled))),
+      BindingSetItem::samplers(
+          kFirstS + 1, std::vector<SamplerHandle>(samplers, std::make_shared<FakeSampler>()))};
   return set;
 }
 
@@ -86,6 +87,7 @@ TEST_CASE("binding validation: unbounded arrays take 1 to kMaxBindlessDescriptor
 TEST_CASE("binding validation: array sizes must agree between shaders", "[rhi][binding-validation]") {
   PipelineBindingLayout layout = layoutWith(0, 1);
   REQUIRE_THROWS_WITH(
-      addBindingLayoutItem(layout, 0, {kShiftT + 3, ResourceType::SampledTexture, 8, false, 0, "gOther"}, "b.comp"),
+      addBindingLayoutItem(
+          layout, 0, {kFirstT + 3, ResourceType::SampledTexture, 8, false, 0, "gOther"}, "b.comp"),
       ContainsSubstring("b.comp") && ContainsSubstring("gMaps"));
 }

@@ -56,9 +56,9 @@ EmitterTable placeEmitters(const std::vector<EmitterSource>& sources,
       tri.p2 = toFloat3(p[2]);
       tri.emissionTexture = source.emissionTexture;
       tri.radiance = toFloat3(source.emission);
-      tri.uv0 = {uv[0].x, uv[0].y};
-      tri.uv1 = {uv[1].x, uv[1].y};
-      tri.uv2 = {uv[2].x, uv[2].y};
+      tri.uv0 = toFloat2(uv[0]);
+      tri.uv1 = toFloat2(uv[1]);
+      tri.uv2 = toFloat2(uv[2]);
       power.push_back(area > 0.0f ? area * source.luminance : 0.0);
     }
   }

@@ -5,7 +5,7 @@
 namespace penumbra::render {
 
 gpu::EnvironmentData environmentInfo(const scene::Environment& env) {
-  gpu::EnvironmentData info;
+  gpu::EnvironmentData info{};
   const double radians = double(env.rotationDegrees) * (3.14159265358979323846 / 180.0);
   info.width = std::max(env.width, 1u);
   info.height = std::max(env.height, 1u);

@@ -140,7 +140,7 @@ rhi::BufferHandle makeStorageBuffer(rhi::IDevice& device, const std::vector<T>& 
 constexpr double kRenderOriginGrid = 64.0;
 
 gpu::PointLight packPointLight(const scene::PointLight& l, const glm::dvec3& renderOrigin) {
-  gpu::PointLight p;
+  gpu::PointLight p{};
   const bool directional = l.type == scene::LightType::Directional;
   const bool spot = l.type == scene::LightType::Spot;
   p.position = toFloat3(directional ? glm::vec3(0.0f) : glm::vec3(l.position - renderOrigin));
@@ -171,7 +171,7 @@ glm::dvec3 renderOriginNear(const glm::dvec3& position) {
 }
 
 gpu::MaterialData packMaterial(const scene::Material& m) {
-  gpu::MaterialData d;
+  gpu::MaterialData d{};
   d.baseColor = toFloat3(m.baseColor);
   d.emission = toFloat3(m.emission);
   d.metallic = m.metallic;

@@ -185,7 +185,7 @@ ObjectBounds implicitObjectBounds(const scene::ImplicitObject& object) {
 }
 
 gpu::ImplicitData packImplicit(const scene::ImplicitObject& object, uint32_t instanceIndex) {
-  gpu::ImplicitData d;
+  gpu::ImplicitData d{};
   // Inverted in double: a small object far from the origin keeps its
   // translation exact.
   const glm::dmat4 worldToObject = glm::inverse(glm::dmat4(object.transform));

@@ -54,7 +54,7 @@ rhi::SamplerDesc samplerDesc(const scene::TextureSampler& s) {
 }
 
 gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t samplerIndex) {
-  gpu::TextureRefData d;
+  gpu::TextureRefData d{};
   d.column0 = {ref.transform0.x, ref.transform0.y};
   d.column1 = {ref.transform1.x, ref.transform1.y};
   d.column2 = {ref.transform2.x, ref.transform2.y};

@@ -19,21 +19,22 @@ const std::vector<StudyAxis>& studyAxes() {
                        .labelTag = tag,
                        .option = setting->name};
     };
+    // The results' spellings that predate the table's keys.
+    StudyAxis clamp = axis("radianceClamp", "clamp", "clamp=");
+    clamp.jsonKey = "clamp";
+    StudyAxis pipeline = axis("allEffects", "pipeline", "");
+    pipeline.jsonKey = pipeline.option = "pipeline";
+    pipeline.onWord = "full";
+    pipeline.offWord = "specialized";
     std::vector<StudyAxis> list = {axis("integrator", "integrator", ""),
                                    axis("strategy", "strategy", ""),
                                    axis("misHeuristic", "mis_heuristic", ""),
                                    axis("sampler", "sampler", ""),
                                    axis("maxDepth", "max_depth", "depth="),
                                    axis("russianRoulette", "russian_roulette", "rr="),
-                                   axis("radianceClamp", "clamp", "clamp="),
+                                   clamp,
                                    axis("denoise", "denoise", "denoise="),
-                                   axis("allEffects", "pipeline", "")};
-    // The results' spellings that predate the table's keys.
-    list[6].jsonKey = "clamp";
-    list[8].jsonKey = "pipeline";
-    list[8].onWord = "full";
-    list[8].offWord = "specialized";
-    list[8].option = "pipeline";
+                                   pipeline};
     return list;
   }();
   return axes;
@@ -54,6 +55,8 @@ std::optional<double> StudyAxis::parse(std::string_view text) const {
   if (setting->type == render::SettingType::Flag) {
     if (text == onWord) return 1.0;
     if (text == offWord) return 0.0;
+    // Words of its own ("full"): those alone. on/off flags: the table's too.
+    if (onWord != "on") return std::nullopt;
   }
   return setting->parse(text);
 }
@@ -84,10 +87,12 @@ std::string Technique::label() const {
   for (const StudyAxis& axis : studyAxes()) {
     const render::Setting& s = *axis.setting;
     if (s.key == "integrator" || s.key == "strategy" || s.isDefault(settings)) continue;
+    if (whitted && s.pathTracerOnly) continue;  // Whitted ignores it
     const double v = s.get(settings);
-    // Numbers as the table formats them (shortest), not spell()'s 17 digits.
-    name += fmt::format(" {}{}", axis.labelTag,
-                        s.type == render::SettingType::Number ? s.format(v) : axis.spell(v));
+    // Numbers to 6 digits (labels name images), not spell()'s 17.
+    name += fmt::format(
+        " {}{}", axis.labelTag,
+        s.type == render::SettingType::Number ? fmt::format("{:g}", float(v)) : axis.spell(v));
   }
   return name;
 }
