@@ -70,61 +70,32 @@ InstanceData loadInstanceData(uint index) {
 MaterialData loadMaterial(uint index) {
   float albedo = gSphere[0].x;
   float emission = gSphere[0].y;
-  MaterialData m;
+  MaterialData m = (MaterialData)0;
   m.baseColor = float3(albedo, albedo, albedo);
-  m.unused0 = 0.0;
   m.emission = float3(emission, emission, emission);
-  m.unused1 = 0.0;
-  m.metallic = 0.0;
   m.roughness = 1.0;
-  m.anisotropic = 0.0;
-  m.specular = 0.0;
-  m.specularTint = 0.0;
-  m.sheen = 0.0;
-  m.sheenTint = 0.0;
-  m.clearcoat = 0.0;
-  m.clearcoatGloss = 0.0;
-  m.specTrans = 0.0;
   m.ior = 1.5;
-  m.subsurface = 0.0;
-  m.ks = 0.0;
-  m.phongExponent = 0.0;
-  m.reflectivity = 0.0;
-  m.transparency = 0.0;
   m.model = MATERIAL_MODEL_DISNEY;
   m.flags = MATERIAL_FLAG_LAMBERT_DIFFUSE;
-  m.unused2 = 0u;
-  m.unused3 = 0u;
   m.baseColorTexture = PT_NO_TEXTURE;
   m.metallicRoughnessTexture = PT_NO_TEXTURE;
   m.normalTexture = PT_NO_TEXTURE;
   m.emissionTexture = PT_NO_TEXTURE;
   m.occlusionTexture = PT_NO_TEXTURE;
   m.alphaMode = MATERIAL_ALPHA_OPAQUE;
-  m.unused4 = 0u;
-  m.unused5 = 0u;
   m.normalScale = 1.0;
   m.occlusionStrength = 1.0;
   m.alpha = 1.0;
   m.alphaCutoff = 0.5;
-  m.absorption = float3(0.0, 0.0, 0.0);
-  m.unused6 = 0.0;
   return m;
 }
 
 // No point lights in this harness (pointLightCount = 0).
 PointLight loadPointLight(uint index) {
-  PointLight p;
-  p.position = float3(0.0, 0.0, 0.0);
+  PointLight p = (PointLight)0;
   p.cosInner = 1.0;
-  p.intensity = float3(0.0, 0.0, 0.0);
-  p.range = 0.0;
   p.direction = float3(0.0, 0.0, 1.0);
-  p.cosOuter = 0.0;
   p.type = PT_LIGHT_POINT;
-  p.unused0 = 0u;
-  p.unused1 = 0u;
-  p.unused2 = 0u;
   return p;
 }
 
@@ -149,15 +120,9 @@ EmissiveTriangle loadEmissiveTriangle(uint index) {
 // The sphere has no textures (every material slot is PT_NO_TEXTURE); the
 // texture core still compiles through this front-end.
 TextureRefData loadTextureRef(uint index) {
-  TextureRefData r;
+  TextureRefData r = (TextureRefData)0;
   r.column0 = float2(1.0, 0.0);
   r.column1 = float2(0.0, 1.0);
-  r.column2 = float2(0.0, 0.0);
-  r.unused0 = float2(0.0, 0.0);
-  r.textureIndex = 0u;
-  r.samplerIndex = 0u;
-  r.texCoordSet = 0u;
-  r.unused1 = 0u;
   return r;
 }
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) { return float4(1.0, 1.0, 1.0, 1.0); }
@@ -185,15 +150,10 @@ float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
 // No environment in this harness (no PT_EFFECT_ENVIRONMENT); its code compiles through
 // this front-end all the same.
 EnvironmentData loadEnvironment() {
-  EnvironmentData e;
+  EnvironmentData e = (EnvironmentData)0;
   e.width = 1u;
   e.height = 1u;
-  e.unused0 = 0u;
-  e.unused1 = 0u;
   e.cosRotation = 1.0;
-  e.sinRotation = 0.0;
-  e.intensity = 0.0;
-  e.unused2 = 0.0;
   return e;
 }
 float4 loadEnvironmentTexel(uint index) { return float4(0.0, 0.0, 0.0, 1.0); }
