@@ -339,8 +339,7 @@ void Viewer::changeEnvironment(const std::string& key, const std::string& value)
     // A new map starts unrotated at intensity 1, as --env FILE alone would.
     choice = render::EnvironmentChoice{};
     choice.map = value;
-    scene::Environment chosen =
-        render::chooseEnvironment(sceneEnvironment_, scene_.emitsLight(), scene_.name, choice);
+    scene::Environment chosen = render::chooseEnvironment(sceneEnvironment_, scene_, choice);
     tracer_->setEnvironment(chosen);  // validates before anything changes
     env = std::move(chosen);
     environment_ = choice;

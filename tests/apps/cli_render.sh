@@ -50,6 +50,11 @@ gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 "$penumbra" render --scene "$gltf_data/attributes.gltf" --env none --size 16x16 --spp 4 \
   --out "$work/dark.exr" 2>"$work/dark.err" >/dev/null
 [ ! -s "$work/dark.err" ]
+# Emissive materials of a glTF file are not its lighting: it is lit too, and
+# the line says why.
+"$penumbra" render --scene "$gltf_data/emissive_quad.gltf" --size 16x16 --spp 1 \
+  --out "$work/label.exr" 2>"$work/label.err" >/dev/null
+grep -q "has no light (its glTF emissive materials are not counted as lights): lit by the default studio environment" "$work/label.err"
 if "$penumbra" compare "$work/studio.exr" "$work/dark.exr" --tolerance 1e-3 >/dev/null; then
   echo "the default environment did not light the glTF file"; exit 1
 fi

@@ -292,7 +292,7 @@ TEST_CASE("environment: a glTF file without lights is lit by the default environ
           "[render][gpu][environment]") {
   auto device = test::makeTestDevice();
   scene::Scene s = scene::loadGltf(test::dataPath("gltf/attributes.gltf"));
-  REQUIRE_FALSE(s.emitsLight());
+  REQUIRE_FALSE(s.hasOwnLighting());
   REQUIRE_FALSE(s.environment.present());
   scene::Scene unlit = s;
   render::applyEnvironmentChoice(unlit, {.map = "none"});
@@ -307,9 +307,31 @@ TEST_CASE("environment: a glTF file without lights is lit by the default environ
   CHECK(image::meanRgb(lit).g > 0.05);
   // A scene with light of its own keeps its lighting.
   scene::Scene cornell = scene::loadScene("cornell-box");
+  REQUIRE(cornell.hasOwnLighting());
   render::applyEnvironmentChoice(cornell, {});
   CHECK_FALSE(cornell.environment.present());
   REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("environment: a glTF file's emissive materials do not count as its lighting",
+          "[environment]") {
+  // emissive_quad.gltf: an emissive quad and no punctual light, as a model
+  // with a glowing label or screen is.
+  scene::Scene s = scene::loadGltf(test::dataPath("gltf/emissive_quad.gltf"));
+  REQUIRE(s.hasEmitters());
+  CHECK_FALSE(s.hasOwnLighting());
+  scene::Scene unlit = s;
+  render::applyEnvironmentChoice(unlit, {.map = "none"});
+  CHECK_FALSE(unlit.environment.present());
+  render::applyEnvironmentChoice(s, {});
+  REQUIRE(s.environment.present());
+  CHECK(s.environment.source == "default studio");
+  // The same material declared by a scene file is a light.
+  for (auto& m : s.materials) m.emissionIsLighting = true;
+  CHECK(s.hasOwnLighting());
+  // A punctual light is lighting whatever the materials say.
+  scene::Scene withLight = scene::loadGltf(test::dataPath("gltf/lights_point.gltf"));
+  CHECK(withLight.hasOwnLighting());
 }
 
 TEST_CASE("environment: .exr and .hdr maps load; bad maps and settings are refused",

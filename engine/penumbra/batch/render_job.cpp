@@ -292,9 +292,8 @@ void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverr
   }
 }
 
-scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment, bool emitsLight,
-                                     const std::string& sceneName,
-                                     const EnvironmentChoice& choice) {
+scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment,
+                                     const scene::Scene& scene, const EnvironmentChoice& choice) {
   scene::Environment env = sceneEnvironment;
   if (choice.map == "none") {
     env = scene::Environment{};
@@ -303,10 +302,12 @@ scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment,
   } else if (!choice.map.empty()) {
     env = scene::loadEnvironmentMap(choice.map);
   }
-  if (choice.map != "none" && !env.present() && !emitsLight) {
+  if (choice.map != "none" && !env.present() && !scene.hasOwnLighting()) {
     env = scene::defaultEnvironment();
-    log::info("scene '{}' has no light: lit by the default studio environment (--env none: unlit)",
-              sceneName);
+    log::info(
+        "scene '{}' has no light{}: lit by the default studio environment (--env none: unlit)",
+        scene.name,
+        scene.hasEmitters() ? " (its glTF emissive materials are not counted as lights)" : "");
   }
   if (!env.present() && (choice.rotationDegrees || choice.intensity || choice.visibleBackground))
     throw Error(
@@ -320,7 +321,7 @@ scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment,
 }
 
 void applyEnvironmentChoice(scene::Scene& scene, const EnvironmentChoice& choice) {
-  scene.environment = chooseEnvironment(scene.environment, scene.emitsLight(), scene.name, choice);
+  scene.environment = chooseEnvironment(scene.environment, scene, choice);
 }
 
 std::string renderJobToJson(const RenderJob& job) {

@@ -62,15 +62,16 @@ struct EnvironmentChoice {
   bool empty() const { return map.empty() && !rotationDegrees && !intensity && !visibleBackground; }
 };
 
-// Applies the choice to the scene's environment; a scene left without any
-// light (no environment, scene::Scene::emitsLight false) gets scene::defaultEnvironment() and one
+// Applies the choice to the scene's environment; a scene left without
+// lighting (no environment, scene::Scene::hasOwnLighting false: glTF's
+// emissive materials do not count) gets scene::defaultEnvironment() and one
 // line on stderr saying so. Throws penumbra::Error for an unreadable map or
 // a setting given with no environment to apply it to.
 void applyEnvironmentChoice(scene::Scene& scene, const EnvironmentChoice& choice);
-// The same for a scene's own environment, given whether anything else in it
-// emits light (scene::Scene::emitsLight).
-scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment, bool emitsLight,
-                                     const std::string& sceneName, const EnvironmentChoice& choice);
+// The same, the scene's own environment given apart (the viewer keeps it
+// while the scene's current one follows its menu).
+scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment,
+                                     const scene::Scene& scene, const EnvironmentChoice& choice);
 
 struct RenderJob {
   std::string scene = "cornell-box";    // built-in name or scene file path

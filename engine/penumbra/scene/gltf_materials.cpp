@@ -117,6 +117,7 @@ Material defaultMaterial() {
   m.metallic = 1.0f;
   m.roughness = 1.0f;
   m.specular = specularFromF0(f0FromIor(1.5f));
+  m.emissionIsLighting = false;
   return m;
 }
 

@@ -81,13 +81,26 @@ void validateEnvironment(const Environment& env) {
   }
 }
 
-bool Scene::emitsLight() const {
-  if (!pointLights.empty()) return true;
-  for (const auto& inst : instances)
-    if (materials.at(meshes.at(inst.mesh).material).isEmissive()) return true;
-  for (const auto& object : implicits)
-    if (materials.at(object.material).isEmissive()) return true;
+namespace {
+// Whether a drawn material (on an instance or an implicit object) passes.
+template <class Pred>
+bool anyDrawnMaterial(const Scene& scene, Pred pred) {
+  for (const auto& inst : scene.instances)
+    if (pred(scene.materials.at(scene.meshes.at(inst.mesh).material))) return true;
+  for (const auto& object : scene.implicits)
+    if (pred(scene.materials.at(object.material))) return true;
   return false;
+}
+}  // namespace
+
+bool Scene::hasOwnLighting() const {
+  return !pointLights.empty() || anyDrawnMaterial(*this, [](const Material& m) {
+    return m.emissionIsLighting && m.isEmissive();
+  });
+}
+
+bool Scene::hasEmitters() const {
+  return anyDrawnMaterial(*this, [](const Material& m) { return m.isEmissive(); });
 }
 
 float apertureRadiusForFNumber(float fNumber, float verticalFovDegrees) {

@@ -104,6 +104,12 @@ struct Material {
   float alpha = 1.0f;  // base colour alpha factor
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
+  // Whether this material's emission is part of the scene's lighting
+  // (Scene::hasOwnLighting). A glTF file's emissive material is a label, a
+  // screen or a lamp's glow: drawn and sampled like any emitter, but it does
+  // not keep the default environment away (every glTF viewer lights such a
+  // file). Scene-file and built-in emitters are the scene's lights.
+  bool emissionIsLighting = true;
 
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // A Lambertian surface of the given reflectance (no specular layer).
@@ -202,9 +208,12 @@ struct Scene {
   std::vector<NamedCamera> cameras;  // alternatives for selectCamera
   std::optional<MaterialRow> materialRow;
   uint64_t triangleCount() const;
-  // Whether anything but the environment emits: an emissive material that
-  // is drawn, a delta light.
-  bool emitsLight() const;
+  // Whether the scene brings its own lighting: a delta light, or a drawn
+  // emissive material whose emission is lighting (Material::
+  // emissionIsLighting). A scene without it gets the default environment.
+  bool hasOwnLighting() const;
+  // Whether any drawn material emits, lighting or not.
+  bool hasEmitters() const;
 };
 
 // Makes the camera named `name` (its own name or its node's) the scene's view;
