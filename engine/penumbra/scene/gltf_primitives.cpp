@@ -7,6 +7,7 @@
 #include "penumbra/scene/gltf_accessors.h"
 #include "penumbra/scene/mesh_attributes.h"
 #include "penumbra/scene/tinygltf.h"
+#include "penumbra/scene/triangle_order.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::scene::gltf {
@@ -172,6 +173,7 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     makeFlatNormals(mesh);
   }
   if (mesh.tangents.empty()) generateTangents(mesh);
+  sortTrianglesSpatially(mesh);
   budget.triangles += mesh.indices.size() / 3;
   return mesh;
 }
