@@ -348,8 +348,8 @@ Command addRenderCommand(CLI::App& app) {
   addSceneOptions(*cmd, o->scene,
                   "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)");
   cmd->add_option("--camera", o->camera,
-                  "Render from the scene's camera of this name (glTF camera or node name; "
-                  "default: the first camera in node order)");
+                  "Render from the scene's camera of this name (glTF camera or node name) or "
+                  "index in node order (0 is the first; default: the first camera)");
   cmd->add_option("--aperture", o->aperture,
                   "Thin-lens aperture radius in metres (0: pinhole, everything sharp)")
       ->check(CLI::Range(0.0f, 1000.0f));

@@ -58,6 +58,9 @@ expect_error "unknown AOV" "unknown output 'uv'" render --aov albedo,uv --size 8
 expect_error "AOVs into a PNG" "auxiliary outputs are EXR layers" render --aov albedo --size 8x8 --spp 1 --out "$work/out.png"
 gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 expect_error "missing glTF file" "no such file" render --scene "$work/missing.glb" --out "$work/out.png"
+expect_error "a folder as the scene" "is a folder; give a scene file" render --scene "$gltf_data" --out "$work/out.png"
+mkdir -p "$work/folder.gltf"
+expect_error "a folder named like a glTF file" "is a folder" render --scene "$work/folder.gltf" --out "$work/out.png"
 expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
 expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"
 # A machine without a Vulkan driver: point the loader at an empty driver list.

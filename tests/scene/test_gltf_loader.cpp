@@ -334,7 +334,17 @@ TEST_CASE("glTF cameras: the first in node order is the view, others by name", "
   scene::selectCamera(s, "second");
   requireNear(s.camera.position, {0, 0, 5});
   REQUIRE_THROWS_WITH(scene::selectCamera(s, "nope"),
-                      ContainsSubstring("no camera named 'nope'") && ContainsSubstring("'second'"));
+                      ContainsSubstring("no camera named 'nope'") &&
+                          ContainsSubstring("0 'second' (node 'front'), 1 'first' (node 'side')"));
+  // By index in node order, which unnamed cameras need.
+  scene::selectCamera(s, "1");
+  requireNear(s.camera.position, {5, 0, 0});
+  scene::selectCamera(s, "0");
+  requireNear(s.camera.position, {0, 0, 5});
+  REQUIRE_THROWS_WITH(scene::selectCamera(s, "2"), ContainsSubstring("no camera named '2'"));
+  s.cameras[1].name.clear();
+  s.cameras[1].nodeName.clear();
+  REQUIRE_THROWS_WITH(scene::selectCamera(s, "x"), ContainsSubstring("1 (unnamed)"));
 }
 
 TEST_CASE("glTF without cameras frames the scene", "[gltf]") {
@@ -403,6 +413,15 @@ TEST_CASE("glTF: zero-area triangles are dropped at load with a warning", "[gltf
                                            {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   for (size_t i = 0; i < 6; ++i) CHECK(mesh.positions[mesh.indices[i]] == expected[i]);
   CHECK(hasWarning(r, "2 degenerate (zero-area) triangles dropped"));
+  // The same primitive three times: one line for the file, with the sum.
+  const auto many = scene::importGltf(gltf("degenerate_primitives.gltf"));
+  size_t lines = 0;
+  for (const auto& w : many.warnings) lines += w.find("degenerate") != std::string::npos;
+  CHECK(lines == 1u);
+  CHECK(hasWarning(many,
+                   "6 degenerate (zero-area) triangles dropped from 3 primitives (the first: "
+                   "glTF '"));
+  CHECK(hasWarning(many, "'some degenerate' primitive 0)"));
 }
 
 TEST_CASE(

@@ -118,6 +118,8 @@ class Importer {
     convertMaterials();
     textures_.warnUnusedBrokenImages();
     traverse(sceneRoots());
+    if (auto line = gltf::degenerateTrianglesWarning(budget_, at()); !line.empty())
+      warn(std::move(line));
     if (out_.scene.instances.empty())
       throw Error(fmt::format("{}: the scene has no triangle meshes to render", at()));
     std::stable_sort(cameras_.begin(), cameras_.end(),
@@ -421,6 +423,7 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
                       const InputLimits& limits) {
   const std::string at = fmt::format("glTF '{}'", path);
   std::error_code ec;
+  if (fs::is_directory(path, ec)) throw Error(fmt::format("{}: is a folder, not a file", at));
   if (!fs::is_regular_file(path, ec)) throw Error(fmt::format("{}: no such file", at));
   if (!isGltfPath(path))
     throw Error(fmt::format("{}: not a glTF file (expected .gltf or .glb)", at));

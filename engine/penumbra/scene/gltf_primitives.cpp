@@ -86,6 +86,16 @@ std::vector<Vec> toVectors(const std::vector<float>& flat, const std::string& wh
 
 }  // namespace
 
+std::string degenerateTrianglesWarning(const DecodeBudget& budget, const std::string& at) {
+  if (budget.primitivesWithDegenerate == 0) return "";
+  if (budget.primitivesWithDegenerate == 1)
+    return fmt::format("{}: {} degenerate (zero-area) triangles dropped",
+                       budget.firstWithDegenerate, budget.degenerateTriangles);
+  return fmt::format(
+      "{}: {} degenerate (zero-area) triangles dropped from {} primitives (the first: {})", at,
+      budget.degenerateTriangles, budget.primitivesWithDegenerate, budget.firstWithDegenerate);
+}
+
 std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p,
                                      uint32_t material, const std::string& where,
                                      std::vector<std::string>& warnings, DecodeBudget& budget) {
@@ -132,9 +142,10 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     if (glm::dot(n, n) > 0.0f)
       kept.insert(kept.end(), mesh.indices.begin() + t, mesh.indices.begin() + t + 3);
   }
-  if (const size_t dropped = (mesh.indices.size() - kept.size()) / 3; dropped > 0)
-    warnings.push_back(
-        fmt::format("{}: {} degenerate (zero-area) triangles dropped", where, dropped));
+  if (const size_t dropped = (mesh.indices.size() - kept.size()) / 3; dropped > 0) {
+    if (budget.primitivesWithDegenerate++ == 0) budget.firstWithDegenerate = where;
+    budget.degenerateTriangles += dropped;
+  }
   mesh.indices = std::move(kept);
   if (mesh.indices.empty()) {
     warnings.push_back(fmt::format("{}: has no triangles; skipped", where));

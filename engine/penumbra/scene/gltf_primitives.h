@@ -20,7 +20,16 @@ struct DecodeBudget {
   InputLimits limits;
   uint64_t decodedBytes = 0;  // accessor data read (InputLimits::maxDecodedBytes)
   uint64_t triangles = 0;     // triangles kept (InputLimits::maxTriangles)
+  // Zero-area triangles dropped, told in one line for the file (a model can
+  // have them in every primitive): how many, from how many primitives, and
+  // the first primitive that had any.
+  uint64_t degenerateTriangles = 0;
+  uint32_t primitivesWithDegenerate = 0;
+  std::string firstWithDegenerate;
 };
+
+// The line telling what `budget` dropped (file `at`), or "" when nothing was.
+std::string degenerateTrianglesWarning(const DecodeBudget& budget, const std::string& at);
 
 // The primitive as a triangle list, or nothing (with a warning) when it is
 // not made of triangles or has no positions. `material` is the scene

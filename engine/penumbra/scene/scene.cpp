@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 
 #include "penumbra/util/error.h"
@@ -243,17 +244,30 @@ void validate(const Scene& scene) {
 }
 
 void selectCamera(Scene& scene, const std::string& name) {
-  std::string names;
-  for (const auto& c : scene.cameras) {
+  for (const auto& c : scene.cameras)
     if (c.name == name || (!c.nodeName.empty() && c.nodeName == name)) {
       scene.camera = c.camera;
       return;
     }
-    names +=
-        (names.empty() ? "" : ", ") + fmt::format("'{}'", c.name.empty() ? c.nodeName : c.name);
+  // A number that names no camera is an index: unnamed cameras have no
+  // other handle.
+  size_t index = 0;
+  const auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), index);
+  if (ec == std::errc() && end == name.data() + name.size() && !name.empty() &&
+      index < scene.cameras.size()) {
+    scene.camera = scene.cameras[index].camera;
+    return;
   }
-  throw Error(fmt::format("scene '{}': no camera named '{}' ({})", scene.name, name,
-                          names.empty() ? "the scene names no cameras" : "cameras: " + names));
+  std::string names;
+  for (size_t i = 0; i < scene.cameras.size(); ++i) {
+    const NamedCamera& c = scene.cameras[i];
+    std::string shown = c.name.empty() ? "(unnamed)" : fmt::format("'{}'", c.name);
+    if (!c.nodeName.empty()) shown += fmt::format(" (node '{}')", c.nodeName);
+    names += fmt::format("{}{} {}", names.empty() ? "" : ", ", i, shown);
+  }
+  throw Error(fmt::format(
+      "scene '{}': no camera named '{}' ({})", scene.name, name,
+      names.empty() ? "the scene names no cameras" : "cameras by index and name: " + names));
 }
 
 }  // namespace penumbra::scene

@@ -216,8 +216,10 @@ struct Scene {
   bool hasEmitters() const;
 };
 
-// Makes the camera named `name` (its own name or its node's) the scene's view;
-// throws penumbra::Error listing the names there are.
+// Makes the camera named `name` (its own name or its node's) the scene's view,
+// or, when no camera has that name, the one at that index of `cameras` (node
+// order) when `name` is a number; throws penumbra::Error listing the cameras
+// by index and name.
 void selectCamera(Scene& scene, const std::string& name);
 
 // Checks indices, materials, texture references and instances refer to

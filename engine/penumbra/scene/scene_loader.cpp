@@ -431,8 +431,13 @@ Scene loadScene(const std::string& nameOrPath, const FileAccess& access,
                 const InputLimits& limits) {
   if (auto builtIn = embedded::find(nameOrPath + ".json"))
     return parseScene(*builtIn, nameOrPath, "", access, limits);
-  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access, limits);
   std::error_code ec;
+  if (std::filesystem::is_directory(nameOrPath, ec))
+    throw Error(fmt::format(
+        "scene '{}': is a folder; give a scene file (.json), a glTF file (.gltf, .glb) or a "
+        "built-in scene name",
+        nameOrPath));
+  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access, limits);
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) {
     std::string names;
     for (const auto& n : builtInSceneNames()) names += (names.empty() ? "" : ", ") + n;

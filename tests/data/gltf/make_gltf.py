@@ -748,7 +748,8 @@ def scene_files():
 
 def large_world():
     """degenerate.gltf: four triangles, two of zero area (a repeated corner;
-    three collinear corners); far_translation.gltf: the unit triangle under a
+    three collinear corners); degenerate_primitives.gltf: that primitive three
+    times in one mesh; far_translation.gltf: the unit triangle under a
     root node translated by (1000000.03, -200000.01, 0.07), which a float
     cannot hold (its spacing at 1e6 is 0.0625)."""
     b = Builder()
@@ -759,6 +760,9 @@ def large_world():
     b.doc["scenes"] = [{"nodes": [0]}]
     b.doc["scene"] = 0
     b.write_gltf("degenerate.gltf")
+    # The same primitive three times: one line for the file, not three.
+    b.doc["meshes"][0]["primitives"] *= 3
+    b.write_gltf("degenerate_primitives.gltf")
 
     b = triangle_file()
     b.doc["nodes"] = [{"translation": [1000000.03, -200000.01, 0.07], "children": [1]}, {"mesh": 0}]
