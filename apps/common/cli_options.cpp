@@ -63,6 +63,32 @@ void EnvironmentOptions::apply(const CLI::App& cmd, render::EnvironmentChoice& c
   if (cmd.count("--env-background") > 0) choice.visibleBackground = background == "visible";
 }
 
+void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
+  cmd.add_option("--camera", o.camera,
+                 "Render from the scene's camera of this name (glTF camera or node name) or "
+                 "index in node order (0 is the first; default: the first camera)");
+  cmd.add_option("--camera-position", o.position,
+                 "Put the camera at X,Y,Z (world units: metres after a scene file's unitScale)")
+      ->expected(3)
+      ->delimiter(',');
+  cmd.add_option("--look-at", o.lookAt,
+                 "Turn the camera towards the point X,Y,Z (after --camera-position)")
+      ->expected(3)
+      ->delimiter(',');
+  cmd.add_option("--fov", o.fovDegrees, "Vertical field of view in degrees, at any image shape")
+      ->check(CLI::Range(0.001f, 179.999f));
+}
+
+scene::CameraPlacement CameraOptions::placement(const CLI::App& cmd) const {
+  scene::CameraPlacement p;
+  p.name = camera;
+  auto point = [](const std::vector<double>& v) { return glm::dvec3(v[0], v[1], v[2]); };
+  if (cmd.count("--camera-position") > 0) p.position = point(position);
+  if (cmd.count("--look-at") > 0) p.lookAt = point(lookAt);
+  if (cmd.count("--fov") > 0) p.verticalFovDegrees = fovDegrees;
+  return p;
+}
+
 void SettingOptions::add(CLI::App& cmd, const render::RenderSettings& defaults,
                          const Filter& include) {
   using render::SettingType;

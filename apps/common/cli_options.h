@@ -8,10 +8,12 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "penumbra/batch/render_job.h"
 #include "penumbra/batch/render_settings.h"
 #include "penumbra/rhi/device.h"
+#include "penumbra/scene/camera_placement.h"
 
 namespace penumbra::app {
 
@@ -46,6 +48,17 @@ struct EnvironmentOptions {
   void apply(const CLI::App& cmd, render::EnvironmentChoice& choice) const;
 };
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentOptions& options);
+
+// --camera, --camera-position, --look-at, --fov: the view over the scene's
+// camera (scene::CameraPlacement).
+struct CameraOptions {
+  std::string camera;
+  std::vector<double> position, lookAt;
+  float fovDegrees = 45.0f;
+  // The parts given on the command line.
+  scene::CameraPlacement placement(const CLI::App& cmd) const;
+};
+void addCameraOptions(CLI::App& cmd, CameraOptions& options);
 
 // The settings table's command-line settings as options: --max-depth,
 // --strategy, --no-russian-roulette, ... each checked against the setting's

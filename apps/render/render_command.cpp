@@ -35,7 +35,7 @@ struct RenderOptions {
   SceneOptions scene;
   DeviceOptions device;
   SettingOptions settings;  // --max-depth, --strategy, ... (batch/render_settings.h)
-  std::string camera;
+  CameraOptions camera;     // --camera, --camera-position, --look-at, --fov
   uint32_t spp = 64;
   std::string out = "render.png";
   float aperture = 0.0f;
@@ -143,7 +143,8 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   // the record's (or the scene's). A new map starts from its own defaults,
   // as the viewer's does.
   o.environment.apply(cmd, job.environment);
-  // A scene camera named on the command line wins over the record's camera.
+  // A scene camera named on the command line wins over the record's camera;
+  // a position, look-at point or field of view changes the record's.
   if (fromFile && cmd.count("--camera") > 0) job.camera.reset();
   return job;
 }
@@ -153,10 +154,13 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
 // material edits and the environment applied.
 scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job) {
   scene::Scene scene = scene::loadScene(job.scene, {o.allowExternalFiles});
-  if (!o.camera.empty()) scene::selectCamera(scene, o.camera);
-  // The thin lens given on the command line, on whichever camera renders.
+  // The view and the thin lens given on the command line, on whichever
+  // camera renders (a record's, or the scene's after --camera picked one).
+  const scene::CameraPlacement placement = o.camera.placement(cmd);
+  if (!placement.name.empty()) scene::selectCamera(scene, placement.name);
   for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
     if (!c) continue;
+    scene::placeCamera(*c, placement);
     if (cmd.count("--aperture") > 0) c->apertureRadius = o.aperture;
     if (cmd.count("--f-number") > 0)
       c->apertureRadius = scene::apertureRadiusForFNumber(o.fNumber, c->verticalFovDegrees);
@@ -347,9 +351,7 @@ Command addRenderCommand(CLI::App& app) {
       app.add_subcommand("render", "Path-trace a scene to an image (.exr linear, .png sRGB)");
   addSceneOptions(*cmd, o->scene,
                   "Built-in scene name, scene file (.json) or glTF file (.gltf, .glb)");
-  cmd->add_option("--camera", o->camera,
-                  "Render from the scene's camera of this name (glTF camera or node name) or "
-                  "index in node order (0 is the first; default: the first camera)");
+  addCameraOptions(*cmd, o->camera);
   cmd->add_option("--aperture", o->aperture,
                   "Thin-lens aperture radius in metres (0: pinhole, everything sharp)")
       ->check(CLI::Range(0.0f, 1000.0f));

@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
                "Let glTF files read buffers and images outside their own folder");
   app.add_option("--config", o.config, "Viewer settings file holding camera bookmarks");
   app::addEnvironmentOptions(app, environment);
+  app::CameraOptions camera;
+  app::addCameraOptions(app, camera);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
   }
   if (renderScale > 0) o.renderScale = renderScale;
   environment.apply(app, o.environment);
+  o.camera = camera.placement(app);
   o.vsync = !noVsync;
   try {
     viewer::Viewer viewer(o);

@@ -87,7 +87,7 @@ Viewer::Viewer(const ViewerOptions& options)
         device_->createCommandList(fmt::format("viewer frame {}", frameLists_.size())));
 
   if (!options_.script.empty()) script_ = loadScript(options_.script);
-  loadScene(options_.scene);
+  loadScene(options_.scene, options_.camera);
   const auto& adapter = device_->adapter();
   fmt::print("device: {} ({}) via {}, {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              device_->backendName(),
@@ -103,9 +103,10 @@ Viewer::~Viewer() {
   ImGui::DestroyContext();
 }
 
-void Viewer::loadScene(const std::string& nameOrPath) {
+void Viewer::loadScene(const std::string& nameOrPath, const scene::CameraPlacement& placement) {
   // Throws before anything changes.
   scene::Scene scene = scene::loadScene(nameOrPath, {options_.allowExternalFiles});
+  scene::placeCamera(scene, placement);
   const scene::Environment own = scene.environment;
   render::applyEnvironmentChoice(scene, options_.environment);
   if (device_) device_->waitForIdle();

@@ -40,6 +40,9 @@ struct ViewerOptions {
   bool vsync = true;
   std::string config;                     // bookmarks file; empty: BookmarkStore::defaultPath()
   render::EnvironmentChoice environment;  // --env options, applied to every scene loaded
+  // --camera, --camera-position, --look-at, --fov: the first scene's view
+  // (a scene opened later starts from its own camera).
+  scene::CameraPlacement camera;
   // No window and no swapchain: width x height is the size the window would
   // have; a script drives the session (nothing else ends it).
   bool offscreen = false;
@@ -57,7 +60,7 @@ class Viewer {
   int run();
 
  private:
-  void loadScene(const std::string& nameOrPath);
+  void loadScene(const std::string& nameOrPath, const scene::CameraPlacement& placement = {});
   void createTracer();
   void resizeRender();
   void applyEffect(SettingEffect effect);

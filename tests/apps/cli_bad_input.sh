@@ -61,6 +61,8 @@ expect_error "missing glTF file" "no such file" render --scene "$work/missing.gl
 expect_error "a folder as the scene" "is a folder; give a scene file" render --scene "$gltf_data" --out "$work/out.png"
 mkdir -p "$work/folder.gltf"
 expect_error "a folder named like a glTF file" "is a folder" render --scene "$work/folder.gltf" --out "$work/out.png"
+expect_error "look-at at the camera" "is the camera's position" render --camera-position 1,2,3 --look-at 1,2,3 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "a camera position of two numbers" "--camera-position" render --camera-position 1,2 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
 expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"
 # A machine without a Vulkan driver: point the loader at an empty driver list.

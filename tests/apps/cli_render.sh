@@ -42,6 +42,17 @@ gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 "$penumbra" render --scene "$gltf_data/triangle.glb" --size 16x16 --spp 1 --validation \
   --out "$work/glb.png" >/dev/null
 [ -s "$work/glb.png" ]
+# A camera placed on the command line: the same view as the file's camera
+# (cameras.gltf's 'side': at (5,0,0) looking along -x, 0.5 rad) given as a
+# position, a look-at point and a field of view renders the same image.
+"$penumbra" render --scene "$gltf_data/cameras.gltf" --camera side --size 16x16 --spp 2 \
+  --out "$work/named.exr" >/dev/null
+"$penumbra" render --scene "$gltf_data/cameras.gltf" --camera-position 5,0,0 --look-at 0,0,0 \
+  --fov 28.6478897565 --size 16x16 --spp 2 --out "$work/placed.exr" >/dev/null
+"$penumbra" compare "$work/placed.exr" "$work/named.exr" --tolerance 1e-4 >/dev/null
+"$penumbra" render --scene "$gltf_data/cameras.gltf" --camera 1 --size 16x16 --spp 2 \
+  --out "$work/indexed.exr" >/dev/null
+"$penumbra" compare "$work/indexed.exr" "$work/named.exr" --tolerance 0 >/dev/null
 # A glTF file without lights is lit by the default environment and says so
 # (one line); --env none leaves it black, and says nothing.
 "$penumbra" render --scene "$gltf_data/attributes.gltf" --size 16x16 --spp 4 --validation \

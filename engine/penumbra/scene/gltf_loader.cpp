@@ -14,6 +14,7 @@
 #include <optional>
 #include <string_view>
 
+#include "penumbra/scene/camera_placement.h"
 #include "penumbra/scene/gltf_lights.h"
 #include "penumbra/scene/gltf_materials.h"
 #include "penumbra/scene/gltf_primitives.h"
@@ -80,26 +81,6 @@ glm::dmat4 localTransform(const tinygltf::Node& node, const std::string& where) 
     if (!std::isfinite(glm::value_ptr(m)[i]))
       throw Error(fmt::format("{}: transform is not finite", where));
   return m;
-}
-
-// A view that frames the world bounds of every instance, looking down -z
-// (glTF's camera convention), for files without cameras.
-Camera framingCamera(const Scene& scene) {
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  for (const auto& inst : scene.instances)
-    for (const auto& p : scene.meshes[inst.mesh].positions) {
-      const glm::dvec3 w(inst.transform * glm::dvec4(glm::dvec3(p), 1.0));
-      lo = glm::min(lo, w);
-      hi = glm::max(hi, w);
-    }
-  Camera c;
-  c.verticalFovDegrees = 45.0f;
-  const glm::dvec3 center = 0.5 * (lo + hi);
-  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
-  c.position = center + glm::dvec3(0.0, 0.0, radius / std::sin(glm::radians(22.5)));
-  c.forward = glm::vec3(0.0f, 0.0f, -1.0f);
-  c.up = glm::vec3(0.0f, 1.0f, 0.0f);
-  return c;
 }
 
 class Importer {
