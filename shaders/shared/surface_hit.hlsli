@@ -61,15 +61,48 @@ float3 resolveShadingTangent(float3 t, float3 n) {
   return len > 1e-8 && len < 1e30 ? o / len : float3(0.0, 0.0, 0.0);
 }
 
+// The shading normal n (unit, on ng's side) turned towards the geometric
+// normal ng (unit, on wo's side) just enough that the mirror reflection of wo
+// about it leaves the geometric surface: at least min(0.9 wo.ng, 0.01) above
+// its plane (so never shallower than wo came in). A normal map's bumps tilt
+// n so far from ng that the reflection of a grazing view falls below the
+// surface; a path that must end there draws a black rim around every bump.
+// The same remedy as production renderers' "valid reflection" normal.
+//
+// n is turned in the plane of ng and n: with x the unit part of n
+// orthogonal to ng and n(t) = sin(t) x + cos(t) ng, the reflection's height
+// is r(t).ng = 2 (n(t).wo) cos(t) - wo.ng = A cos(2t - phi), with
+// A = |(wo.x, wo.ng)| and phi = atan2(wo.x, wo.ng). The heights at least the
+// margin m lie in 2t - phi in [-acos(m/A), acos(m/A)]; t = 0 (ng) is among
+// them (m <= wo.ng), n's own angle is past them, so the largest, the least
+// turn, is t = (phi + acos(m/A)) / 2.
+float3 bendForValidReflection(float3 n, float3 ng, float3 wo) {
+  float woZ = dot(wo, ng);
+  float margin = min(0.9 * woZ, 0.01);
+  float3 r = 2.0 * dot(n, wo) * n - wo;
+  if (dot(r, ng) >= margin) return n;
+  float3 x = n - dot(n, ng) * ng;
+  float lenX = length(x);
+  if (!(lenX > 1e-7)) return ng;
+  x = x / lenX;
+  float woX = dot(wo, x);
+  float a = sqrt(woX * woX + woZ * woZ);
+  float t = 0.5 * (atan2(woX, woZ) + acos(clamp(margin / a, -1.0, 1.0)));
+  return normalize(sin(t) * x + cos(t) * ng);
+}
+
 // The normal to shade with for a viewer in direction `wo` (unit, away from
-// the surface): the shading normal, unless wo lies on the other side of it
-// than of the geometric surface; then the shading normal cannot describe what
-// the viewer sees and the geometric normal takes over (no black fringes, no
-// negative cosines).
+// the surface): the shading normal, bent for a valid mirror reflection
+// (bendForValidReflection), unless wo lies on the other side of it than of
+// the geometric surface; then the shading normal cannot describe what the
+// viewer sees and the geometric normal takes over (no black fringes, no
+// negative cosines). The result stays on the geometric normal's side.
 float3 shadingNormalFor(SurfaceHit hit, float3 wo) {
   float sideG = dot(wo, hit.geometricNormal);
   float sideS = dot(wo, hit.shadingNormal);
-  return sideG * sideS > 0.0 ? hit.shadingNormal : hit.geometricNormal;
+  if (!(sideG * sideS > 0.0)) return hit.geometricNormal;
+  float facing = sideG > 0.0 ? 1.0 : -1.0;
+  return facing * bendForValidReflection(facing * hit.shadingNormal, facing * hit.geometricNormal, wo);
 }
 
 // Whether wi continues on the side of the geometric surface that the shading
