@@ -219,9 +219,9 @@ void addOutputSettings(std::vector<Setting>& table) {
   table.push_back(field<Nested<&RenderSettings::toneMapping, &ToneMapping::toneOperator>>(
       {.key = "toneMapping",
        .name = "tonemap",
-       .help = "Tone curve for PNG output: clamp | reinhard | aces",
+       .help = "Tone curve for PNG output: clamp | reinhard | aces | pbr-neutral | agx",
        .type = T::Choice,
-       .choices = {"clamp", "reinhard", "aces"},
+       .choices = {"clamp", "reinhard", "aces", "pbr-neutral", "agx"},
        .label = "tone mapping",
        .widget = W::Combo,
        .group = G::Display,

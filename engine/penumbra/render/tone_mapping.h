@@ -15,6 +15,8 @@ enum class ToneMapOperator : uint32_t {
   Clamp = 0,       // linear, values above 1 clip (the default: PNGs match the EXR's values)
   Reinhard = 1,    // x / (1 + x) per channel
   AcesFitted = 2,  // Hill's fit of the ACES RRT + sRGB ODT
+  PbrNeutral = 3,  // Khronos PBR Neutral: base colours as authored, highlights compressed
+  AgX = 4,         // AgX as glTF viewers (Filament, three.js) ship it
 };
 
 struct ToneMapping {
