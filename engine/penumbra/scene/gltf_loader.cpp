@@ -11,6 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string_view>
 
@@ -117,14 +118,8 @@ class Importer {
   void warn(std::string line) { out_.warnings.push_back(std::move(line)); }
 
   void checkExtensions() {
-    for (const auto& name : model_.extensionsRequired)
-      if (!gltf::isSupportedExtension(name)) {
-        std::string supported;
-        for (auto s : gltf::supportedExtensions())
-          supported += (supported.empty() ? "" : ", ") + std::string(s);
-        throw Error(fmt::format("{}: requires extension {}, which is not supported (supported: {})",
-                                at(), name, supported));
-      }
+    // Required ones were checked before tinygltf read the file
+    // (requireSupportedExtensions).
     for (const auto& name : model_.extensionsUsed)
       if (!gltf::isSupportedExtension(name))
         warn(fmt::format("{}: optional extension {} is not supported; ignored", at(), name));
@@ -382,6 +377,26 @@ std::string expandNothing(const std::string& path, void*) {
   return path;
 }
 
+// A file that requires an extension Penumbra does not read is refused
+// before tinygltf reads it: a compressed mesh or image would otherwise fail
+// in tinygltf with a message about what it found instead (an accessor
+// without a buffer view, an unknown image type).
+void requireSupportedExtensions(std::string_view jsonText, const std::string& at) {
+  const auto doc = nlohmann::json::parse(jsonText, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) return;  // tinygltf says what is wrong
+  if (!doc.contains("extensionsRequired")) return;
+  const nlohmann::json& required = doc.at("extensionsRequired");
+  if (!required.is_array()) return;
+  for (const auto& name : required) {
+    if (!name.is_string() || gltf::isSupportedExtension(name.get<std::string>())) continue;
+    std::string supported;
+    for (auto s : gltf::supportedExtensions())
+      supported += (supported.empty() ? "" : ", ") + std::string(s);
+    throw Error(fmt::format("{}: requires extension {}, which is not supported (supported: {})", at,
+                            name.get<std::string>(), supported));
+  }
+}
+
 // Existence is judged by readWholeFile, which says why a file is refused.
 bool fileExists(const std::string&, void*) {
   return true;
@@ -428,6 +443,7 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
     throw Error(fmt::format("{}: larger than 4 GiB, more than glTF can address", at));
   const bool binary = lower(fs::path(path).extension().string()) == ".glb";
   requireJsonDepth(jsonText(data, binary), limits, at);
+  requireSupportedExtensions(jsonText(data, binary), at);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;

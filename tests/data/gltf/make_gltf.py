@@ -291,6 +291,20 @@ def extensions():
     b.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
     b.doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
     b.write_gltf("extension_required.gltf")
+    # As such files are: the compressed primitive's accessors have no buffer
+    # view, the texture's only source is a KTX2 image (which is not there).
+    b = triangle_file()
+    b.doc["extensionsUsed"] = ["KHR_draco_mesh_compression", "KHR_texture_basisu"]
+    b.doc["extensionsRequired"] = ["KHR_draco_mesh_compression", "KHR_texture_basisu"]
+    for a in b.doc["accessors"]:
+        del a["bufferView"]
+    b.doc["meshes"][0]["primitives"][0]["extensions"] = {
+        "KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}
+    b.doc["images"] = [{"uri": "missing.ktx2", "mimeType": "image/ktx2"}]
+    b.doc["textures"] = [{"extensions": {"KHR_texture_basisu": {"source": 0}}}]
+    b.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.write_gltf("extension_required_compressed.gltf")
     b = triangle_file()
     b.doc["extensionsUsed"] = ["KHR_materials_unlit", "KHR_materials_clearcoat"]
     b.write_gltf("extension_optional.gltf")
