@@ -194,6 +194,7 @@ SurfaceHit implicitSurfaceHit(ImplicitData o, float3 worldOrigin, float3 worldDi
   // No vertex attributes: the surface shades with its true normal.
   h.shadingNormal = h.geometricNormal;
   h.uv = float4(0.0, 0.0, 0.0, 0.0);
+  h.color = float4(1.0, 1.0, 1.0, 1.0);
   h.shadingTangent = float3(0.0, 0.0, 0.0);
   return h;
 }

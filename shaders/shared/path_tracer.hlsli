@@ -281,12 +281,13 @@ PointLightVertex noPointLightVertex() {
   return v;
 }
 
-// The material of a hit, its textures applied.
+// The material of a hit, its textures and vertex colour applied.
 MaterialData hitMaterial(InstanceData instance, SurfaceHit hit) {
   MaterialData data = loadMaterial(instance.materialIndex);
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   data = applyMaterialTextures(data, hit.uv);
 #endif
+  data.baseColor *= hit.color.xyz;
   return data;
 }
 

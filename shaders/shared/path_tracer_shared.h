@@ -35,7 +35,9 @@ namespace penumbra::gpu {
 #define PT_T_ENVIRONMENT_INFO 13   // EnvironmentData, one (a 1x1 black map when the scene has none)
 #define PT_T_ENVIRONMENT 14        // float4 per texel of the map: rgb radiance, w the texel's probability
 #define PT_T_ENVIRONMENT_CDF 15    // float: the rows' cumulative probabilities, then each row's own
-#define PT_T_TEXTURES 16           // Texture2D[] (bindless, so the highest t register: D3D12 unbounded ranges cover all above)
+#define PT_T_COLORS 16  // float4 per vertex: COLOR_0, linear RGBA (read only with PT_VERTEX_COLORS)
+#define PT_T_TEXTURES \
+  17  // Texture2D[] (bindless, so the highest t register: D3D12 unbounded ranges cover all above)
 #define PT_S_SAMPLERS 0            // SamplerState[] (bindless): the distinct samplers of the texture refs
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
@@ -56,6 +58,7 @@ namespace penumbra::gpu {
 #define PT_SLOT_NORMALS PENUMBRA_T(PT_T_NORMALS)
 #define PT_SLOT_TANGENTS PENUMBRA_T(PT_T_TANGENTS)
 #define PT_SLOT_TEXCOORDS PENUMBRA_T(PT_T_TEXCOORDS)
+#define PT_SLOT_COLORS PENUMBRA_T(PT_T_COLORS)
 #define PT_SLOT_IMPLICITS PENUMBRA_T(PT_T_IMPLICITS)
 #define PT_SLOT_PROBE_RAYS PENUMBRA_T(PT_T_PROBE_RAYS)
 #define PT_SLOT_ENVIRONMENT_INFO PENUMBRA_T(PT_T_ENVIRONMENT_INFO)
@@ -186,6 +189,7 @@ struct InstanceData {
 #define PT_VERTEX_NORMALS 1u
 #define PT_VERTEX_TANGENTS 2u
 #define PT_VERTEX_TEXCOORDS 4u
+#define PT_VERTEX_COLORS 8u
 
 // Disney parameters (docs/materials.md) and the Phong parameters of Whitted.
 struct MaterialData {

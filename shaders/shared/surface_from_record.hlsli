@@ -10,6 +10,7 @@
 //   float3 loadVertexNormal(uint vertex);     // object space, zero without
 //   float4 loadVertexTangent(uint vertex);    // object space, w handedness, zero without
 //   float4 loadVertexTexCoords(uint vertex);  // xy TEXCOORD_0, zw TEXCOORD_1
+//   float4 loadVertexColor(uint vertex);      // COLOR_0, linear RGBA
 // and, with PT_EFFECT_TEXTURES, textures.hlsli (applyNormalMap).
 #ifndef PENUMBRA_SURFACE_FROM_RECORD_HLSLI
 #define PENUMBRA_SURFACE_FROM_RECORD_HLSLI
@@ -63,6 +64,9 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
   if ((attributes & PT_VERTEX_TEXCOORDS) != 0u)
     hit.uv = barycentricInterpolate4(loadVertexTexCoords(v.x), loadVertexTexCoords(v.y),
                                      loadVertexTexCoords(v.z), b);
+  hit.color = float4(1.0, 1.0, 1.0, 1.0);
+  if ((attributes & PT_VERTEX_COLORS) != 0u)
+    hit.color = barycentricInterpolate4(loadVertexColor(v.x), loadVertexColor(v.y), loadVertexColor(v.z), b);
   float3 worldNormal =
       transformNormal3x4(instance.worldToObject0, instance.worldToObject1, instance.worldToObject2, vertexNormal);
   float3 worldTangent = transformVector3x4(instance.objectToWorld0, instance.objectToWorld1,

@@ -13,6 +13,7 @@ struct SurfaceHit {
   float3 shadingNormal;   // unit, on geometricNormal's side (geometricNormal without vertex normals)
   float3 shadingTangent;  // unit and orthogonal to shadingNormal, or zero without vertex tangents
   float4 uv;              // xy TEXCOORD_0, zw TEXCOORD_1 (zero without)
+  float4 color;           // COLOR_0, linear RGBA: multiplies base colour and alpha (1 without)
 };
 
 SurfaceHit surfaceMiss() {
@@ -24,6 +25,7 @@ SurfaceHit surfaceMiss() {
   h.primitiveIndex = 0u;
   h.shadingNormal = float3(0.0, 0.0, 1.0);
   h.uv = float4(0.0, 0.0, 0.0, 0.0);
+  h.color = float4(1.0, 1.0, 1.0, 1.0);
   h.shadingTangent = float3(0.0, 0.0, 0.0);
   return h;
 }

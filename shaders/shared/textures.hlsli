@@ -32,9 +32,10 @@ MaterialData applyMaterialTextures(MaterialData d, float4 uv) {
   return d;
 }
 
-// Base-colour alpha at a point, for alphaMode MASK.
-float materialAlpha(MaterialData d, float4 uv) {
-  float alpha = d.alpha;
+// Base-colour alpha at a point, for alphaMode MASK and BLEND, times the
+// vertex colour's alpha.
+float materialAlpha(MaterialData d, float4 uv, float vertexAlpha) {
+  float alpha = d.alpha * vertexAlpha;
   if (d.baseColorTexture != PT_NO_TEXTURE) alpha *= sampleTextureRef(d.baseColorTexture, uv).w;
   return alpha;
 }
@@ -43,9 +44,9 @@ float materialAlpha(MaterialData d, float4 uv) {
 // with the cutoff; BLEND keeps it with probability alpha (`u` uniform in
 // [0, 1), drawn per ray and primitive by alphaCoverageRandom), so averaged
 // over samples the surface covers alpha of what lies behind it.
-bool alphaKeepsHit(MaterialData d, float4 uv, float u) {
-  if (d.alphaMode == MATERIAL_ALPHA_MASK) return materialAlpha(d, uv) >= d.alphaCutoff;
-  if (d.alphaMode == MATERIAL_ALPHA_BLEND) return u < materialAlpha(d, uv);
+bool alphaKeepsHit(MaterialData d, float4 uv, float vertexAlpha, float u) {
+  if (d.alphaMode == MATERIAL_ALPHA_MASK) return materialAlpha(d, uv, vertexAlpha) >= d.alphaCutoff;
+  if (d.alphaMode == MATERIAL_ALPHA_BLEND) return u < materialAlpha(d, uv, vertexAlpha);
   return true;
 }
 

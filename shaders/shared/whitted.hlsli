@@ -71,6 +71,7 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     data = applyMaterialTextures(data, hit.uv);
     occlusion = materialOcclusion(data, hit.uv);
 #endif
+    data.baseColor *= hit.color.xyz;  // COLOR_0
     PhongMaterial p = unpackPhong(data);
 
     bool frontFace = dot(ray.direction, hit.geometricNormal) < 0.0;

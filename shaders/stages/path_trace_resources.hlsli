@@ -20,6 +20,7 @@ PT_BUFFER(PointLight, gPointLights, PT_T_POINT_LIGHTS);
 PT_BUFFER(float4, gNormals, PT_T_NORMALS);
 PT_BUFFER(float4, gTangents, PT_T_TANGENTS);
 PT_BUFFER(float4, gTexCoords, PT_T_TEXCOORDS);
+PT_BUFFER(float4, gColors, PT_T_COLORS);
 PT_BUFFER(ImplicitData, gImplicits, PT_T_IMPLICITS);
 PT_BUFFER(TextureRefData, gTextureRefs, PT_T_TEXTURE_REFS);
 PT_BUFFER(EnvironmentData, gEnvironment, PT_T_ENVIRONMENT_INFO);
@@ -54,6 +55,7 @@ float3 loadVertexPosition(uint vertex) { return gVertices[vertex].xyz; }
 float3 loadVertexNormal(uint vertex) { return gNormals[vertex].xyz; }
 float4 loadVertexTangent(uint vertex) { return gTangents[vertex]; }
 float4 loadVertexTexCoords(uint vertex) { return gTexCoords[vertex]; }
+float4 loadVertexColor(uint vertex) { return gColors[vertex]; }
 #include "surface_from_record.hlsli"
 
 #endif

@@ -452,6 +452,38 @@ TEST_CASE("textures: a normal-mapped mirror has no dark rims, and the furnace ga
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+TEST_CASE("vertex colours: COLOR_0 multiplies the base colour and, for MASK, the alpha",
+          "[render][gpu][textures]") {
+  auto device = test::makeTestDevice();
+  const glm::vec4 color(0.2f, 0.6f, 0.9f, 1.0f);
+  // The same colour as the material's factor: the images agree.
+  auto material = glossyMaterial();
+  auto coloured = litQuadScene(material);
+  coloured.meshes[0].colors.assign(4, color);
+  auto factor = litQuadScene(material);
+  factor.materials[0].baseColor *= glm::vec3(color);
+  const auto expected = test::renderScene(*device, factor, kSize, kSize, 4, oneBounce());
+  const auto image = test::renderScene(*device, coloured, kSize, kSize, 4, oneBounce());
+  CHECK(relativeMaxDifference(image, expected) < 2e-3f);
+  // And the colour changes the image at all.
+  const auto plain =
+      test::renderScene(*device, litQuadScene(material), kSize, kSize, 4, oneBounce());
+  CHECK(relativeMaxDifference(image, plain) > 0.05f);
+
+  // Alpha MASK at cutoff 0.5: a vertex alpha of 0.3 cuts the quad away (the
+  // camera sees the black background), 0.8 keeps it.
+  auto masked = litQuadScene(material);
+  masked.materials[0].alphaMode = scene::AlphaMode::Mask;
+  masked.materials[0].alphaCutoff = 0.5f;
+  masked.meshes[0].colors.assign(4, glm::vec4(1.0f, 1.0f, 1.0f, 0.3f));
+  const auto cut = test::renderScene(*device, masked, kSize, kSize, 4, oneBounce());
+  CHECK(image::meanRgb(cut).g == 0.0);
+  masked.meshes[0].colors.assign(4, glm::vec4(1.0f, 1.0f, 1.0f, 0.8f));
+  const auto kept = test::renderScene(*device, masked, kSize, kSize, 4, oneBounce());
+  CHECK(relativeMaxDifference(kept, plain) < 2e-3f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 TEST_CASE("textures: alpha MASK cuts camera rays through transparent texels",
           "[render][gpu][textures]") {
   auto device = test::makeTestDevice();

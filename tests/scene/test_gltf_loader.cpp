@@ -115,6 +115,33 @@ TEST_CASE("glTF sparse accessors substitute their values", "[gltf]") {
   REQUIRE(m.uv0[5] == glm::vec2(0.0f));
 }
 
+TEST_CASE("glTF COLOR_0: RGB or RGBA, normalized integers or floats, clamped to [0, 1]", "[gltf]") {
+  const auto s = scene::loadGltf(gltf("vertex_colors.gltf"));
+  REQUIRE(s.meshes.size() == 2u);
+  // Normalized unsigned bytes, RGB: alpha 1; 51 / 255 = 0.2. The positions
+  // are the unit triangle's, in order, so colour i is vertex i's.
+  const auto& bytes = s.meshes[0];
+  REQUIRE(bytes.colors.size() == bytes.positions.size());
+  for (size_t v = 0; v < bytes.positions.size(); ++v) {
+    const glm::vec3 p = bytes.positions[v];
+    const glm::vec4 expected = p == glm::vec3(1, 0, 0)   ? glm::vec4(0, 1, 0, 1)
+                               : p == glm::vec3(0, 1, 0) ? glm::vec4(0, 0, 0.2f, 1)
+                                                         : glm::vec4(1, 0, 0, 1);
+    CHECK(glm::length(bytes.colors[v] - expected) < 1e-6f);
+  }
+  // Floats, RGBA; 1.5 clamped to 1.
+  const auto& floats = s.meshes[1];
+  REQUIRE(floats.colors.size() == floats.positions.size());
+  for (size_t v = 0; v < floats.positions.size(); ++v) {
+    const float red = floats.positions[v] == glm::vec3(0, 0, 0) ? 1.0f : 0.25f;
+    CHECK(floats.colors[v] == glm::vec4(red, 0.5f, 0.75f, 0.5f));
+  }
+  // A mesh's colours must be in range when they come from elsewhere.
+  scene::Scene bad = s;
+  bad.meshes[0].colors[0].g = 1.5f;
+  REQUIRE_THROWS_WITH(scene::validate(bad), ContainsSubstring("vertex colour component 1.5"));
+}
+
 TEST_CASE("glTF normalized integer attributes and byte strides", "[gltf]") {
   const auto s = scene::loadGltf(gltf("attributes.gltf"));
   REQUIRE(s.meshes.size() == 2u);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <iterator>
@@ -46,10 +47,15 @@ constexpr EntryPointBits kVariantBits[] = {{"path_trace.rgen", PT_PATH_TRACE_EFF
 
 }  // namespace
 
-bool alphaMasked(const scene::Material& m) {
+bool alphaMasked(const scene::Material& m, bool vertexAlpha) {
   const bool textured = m.baseColorTexture != scene::Material::kNoTexture;
-  if (m.alphaMode == scene::AlphaMode::Mask) return textured;
-  return m.alphaMode == scene::AlphaMode::Blend && (textured || m.alpha < 1.0f);
+  if (m.alphaMode == scene::AlphaMode::Mask) return textured || vertexAlpha;
+  return m.alphaMode == scene::AlphaMode::Blend && (textured || vertexAlpha || m.alpha < 1.0f);
+}
+
+bool hasVertexAlpha(const scene::Mesh& mesh) {
+  return std::any_of(mesh.colors.begin(), mesh.colors.end(),
+                     [](const glm::vec4& c) { return c.a < 1.0f; });
 }
 
 uint32_t deriveMaterialEffects(const scene::Material& material) {
@@ -66,7 +72,12 @@ uint32_t deriveEffects(const scene::Scene& scene) {
     effects |= materialEffectsOf(material);
     if (material.isEmissive()) effects |= PT_EFFECT_AREA_LIGHTS;
   };
-  for (const auto& instance : scene.instances) use(scene.meshes.at(instance.mesh).material);
+  for (const auto& instance : scene.instances) {
+    const scene::Mesh& mesh = scene.meshes.at(instance.mesh);
+    use(mesh.material);
+    if (alphaMasked(scene.materials.at(mesh.material), hasVertexAlpha(mesh)))
+      effects |= PT_EFFECT_ALPHA_MASK;
+  }
   for (const auto& object : scene.implicits) use(object.material);
   return effects;
 }

@@ -25,8 +25,12 @@ uint32_t deriveMaterialEffects(const scene::Material& material);
 // MASK with a base-colour texture (per texel), or BLEND with alpha below 1
 // anywhere (stochastic coverage). Its meshes are non-opaque geometry and the
 // triangles' hit group gets the alpha any-hit shader. MASK without a texture
-// is all or nothing, decided when the scene is loaded.
-bool alphaMasked(const scene::Material& material);
+// is all or nothing, decided when the scene is loaded. A mesh whose vertex
+// colours (COLOR_0) carry alpha below 1 (`vertexAlpha`) varies it per point
+// too, under MASK or BLEND.
+bool alphaMasked(const scene::Material& material, bool vertexAlpha = false);
+// Whether a mesh's vertex colours carry alpha below 1 anywhere.
+bool hasVertexAlpha(const scene::Mesh& mesh);
 
 // Names of the bits in `effects`, in bit order ("area-lights", "sheen", ...).
 std::vector<std::string> effectNames(uint32_t effects);

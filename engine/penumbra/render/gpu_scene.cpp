@@ -218,7 +218,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
 
 struct GpuScene::Buffers {
   rhi::BufferHandle vertices, indices, instances, materials, emissive, pointLights;
-  rhi::BufferHandle normals, tangents, texcoords;
+  rhi::BufferHandle normals, tangents, texcoords, colors;
   SceneTextures textures;
   rhi::BufferHandle textureRefs;
   rhi::BufferHandle environmentInfo, environmentTexels, environmentCdf;
@@ -277,6 +277,9 @@ struct GpuScene::MeshLayout {
   // Vertex attributes parallel to `vertices`; zero where a mesh has none,
   // which the closest-hit shader reads as "none".
   std::vector<gpu::float4> normals, tangents, texcoords;
+  // COLOR_0 parallel to `vertices` when any mesh has vertex colours (one
+  // element otherwise: a scene without them keeps no buffer for them).
+  std::vector<gpu::float4> colors;
   MeshInstanceOrder order;
 };
 
@@ -284,6 +287,8 @@ struct GpuScene::MeshLayout {
 // buffers.
 GpuScene::MeshLayout GpuScene::packMeshes(const scene::Scene& scene) {
   MeshLayout l;
+  const bool anyColors = std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                                     [](const scene::Mesh& m) { return !m.colors.empty(); });
   for (const auto& mesh : scene.meshes) {
     l.firstVertex.push_back(uint32_t(l.vertices.size()));
     l.firstIndex.push_back(uint32_t(l.indices.size()));
@@ -295,9 +300,13 @@ GpuScene::MeshLayout GpuScene::packMeshes(const scene::Scene& scene) {
       const glm::vec2 uv0 = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[v];
       const glm::vec2 uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[v];
       l.texcoords.push_back({uv0.x, uv0.y, uv1.x, uv1.y});
+      if (anyColors)
+        l.colors.push_back(mesh.colors.empty() ? toFloat4(glm::vec4(1.0f))
+                                               : toFloat4(mesh.colors[v]));
     }
     l.indices.insert(l.indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
+  if (l.colors.empty()) l.colors.push_back(toFloat4(glm::vec4(1.0f)));
   return l;
 }
 
@@ -323,7 +332,8 @@ std::vector<gpu::InstanceData> GpuScene::placeInstances(const scene::Scene& scen
                      PT_NO_EMISSION, objectToRender);
     data.vertexAttributes = (mesh.normals.empty() ? 0u : PT_VERTEX_NORMALS) |
                             (mesh.tangents.empty() ? 0u : PT_VERTEX_TANGENTS) |
-                            (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS);
+                            (mesh.uv0.empty() && mesh.uv1.empty() ? 0u : PT_VERTEX_TEXCOORDS) |
+                            (mesh.colors.empty() ? 0u : PT_VERTEX_COLORS);
     if (material.isEmissive()) {
       data.firstEmissiveTriangle = emissiveTriangles;
       emissiveTriangles += uint32_t(mesh.indices.size() / 3);
@@ -367,6 +377,7 @@ void GpuScene::upload(const scene::Scene& scene, bool allImplicitFamilies) {
   const auto& normals = layout.normals;
   const auto& tangents = layout.tangents;
   const auto& texcoords = layout.texcoords;
+  const auto& colors = layout.colors;
   s.vertices = makeStorageBuffer(device_, vertices, BufferUsage::AccelStructBuildInput, "vertices");
   s.indices = makeStorageBuffer(device_, indices, BufferUsage::AccelStructBuildInput, "indices");
   s.instances = makeStorageBuffer(device_, instances, BufferUsage::None, "instances");
@@ -376,6 +387,7 @@ void GpuScene::upload(const scene::Scene& scene, bool allImplicitFamilies) {
   s.normals = makeStorageBuffer(device_, normals, BufferUsage::None, "vertex normals");
   s.tangents = makeStorageBuffer(device_, tangents, BufferUsage::None, "vertex tangents");
   s.texcoords = makeStorageBuffer(device_, texcoords, BufferUsage::None, "vertex texcoords");
+  s.colors = makeStorageBuffer(device_, colors, BufferUsage::None, "vertex colours");
 
   auto* cmd = commandList_.get();
   cmd->open();
@@ -385,6 +397,7 @@ void GpuScene::upload(const scene::Scene& scene, bool allImplicitFamilies) {
     cmd->writeBuffer(s.tangents.get(), tangents.data(), tangents.size() * sizeof(gpu::float4));
     cmd->writeBuffer(s.texcoords.get(), texcoords.data(), texcoords.size() * sizeof(gpu::float4));
   }
+  writeAll(*cmd, s.colors, colors);
   if (!indices.empty())
     cmd->writeBuffer(s.indices.get(), indices.data(), indices.size() * sizeof(uint32_t));
   writeAll(*cmd, s.instances, instances);
@@ -424,9 +437,10 @@ void GpuScene::buildAccelStructs(const scene::Scene& scene, const MeshLayout& la
   auto meshGeometry = [&](uint32_t m) {
     rhi::rt::GeometryDesc geo;
     geo.type = rhi::rt::GeometryType::Triangles;
-    geo.flags = alphaMasked(scene.materials[scene.meshes[m].material])
-                    ? rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation
-                    : rhi::rt::GeometryFlags::Opaque;
+    geo.flags =
+        alphaMasked(scene.materials[scene.meshes[m].material], hasVertexAlpha(scene.meshes[m]))
+            ? rhi::rt::GeometryFlags::NoDuplicateAnyHitInvocation
+            : rhi::rt::GeometryFlags::Opaque;
     geo.triangles.vertexBuffer = s.vertices.get();
     geo.triangles.vertexOffset = uint64_t(layout.firstVertex[m]) * sizeof(gpu::float4);
     geo.triangles.vertexStride = sizeof(gpu::float4);
@@ -651,6 +665,7 @@ std::vector<rhi::BindingSetItem> GpuScene::bindingItems() const {
           Item::storageBuffer(PT_SLOT_NORMALS, b.normals),
           Item::storageBuffer(PT_SLOT_TANGENTS, b.tangents),
           Item::storageBuffer(PT_SLOT_TEXCOORDS, b.texcoords),
+          Item::storageBuffer(PT_SLOT_COLORS, b.colors),
           Item::storageBuffer(PT_SLOT_IMPLICITS, b.implicits),
           Item::storageBuffer(PT_SLOT_TEXTURE_REFS, b.textureRefs),
           Item::storageBuffer(PT_SLOT_ENVIRONMENT_INFO, b.environmentInfo),

@@ -16,5 +16,8 @@ inline gpu::float3 toFloat3(glm::vec3 v) {
 inline gpu::float4 toFloat4(glm::vec3 v, float w = 0.0f) {
   return {v.x, v.y, v.z, w};
 }
+inline gpu::float4 toFloat4(glm::vec4 v) {
+  return {v.x, v.y, v.z, v.w};
+}
 
 }  // namespace penumbra::render

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "penumbra/scene/gltf_accessors.h"
@@ -43,7 +44,7 @@ int attribute(const tinygltf::Primitive& p, const char* name) {
 }
 
 // The attributes convertPrimitive reads besides POSITION.
-constexpr const char* kAttributes[] = {"NORMAL", "TEXCOORD_0", "TEXCOORD_1", "TANGENT"};
+constexpr const char* kAttributes[] = {"NORMAL", "TEXCOORD_0", "TEXCOORD_1", "TANGENT", "COLOR_0"};
 
 // Charges what converting `p` reads and makes to `budget`, from the
 // accessors' declared counts, before any of it is allocated.
@@ -176,6 +177,25 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   for (auto& t : mesh.tangents) {
     const float len = glm::length(glm::vec3(t));
     t = glm::vec4(len > 0.0f ? glm::vec3(t) / len : glm::vec3(0.0f), t.w < 0.0f ? -1.0f : 1.0f);
+  }
+  // COLOR_0, RGB or RGBA (float or normalised integers), clamped to [0, 1].
+  if (const int color = attribute(p, "COLOR_0"); color >= 0) {
+    const bool rgb = size_t(color) < model.accessors.size() &&
+                     model.accessors[size_t(color)].type == TINYGLTF_TYPE_VEC3;
+    const int components = rgb ? 3 : 4;
+    const std::vector<float> values = readAttribute("COLOR_0", components);
+    mesh.colors.resize(vertexCount);
+    for (size_t v = 0; v < vertexCount; ++v) {
+      glm::vec4 c(1.0f);
+      for (int k = 0; k < components; ++k) {
+        const float value = values[v * size_t(components) + size_t(k)];
+        if (!std::isfinite(value))
+          throw Error(
+              fmt::format("{}: element {} is not a finite number", accessorName("COLOR_0"), v));
+        c[k] = std::clamp(value, 0.0f, 1.0f);
+      }
+      mesh.colors[v] = c;
+    }
   }
   if (!p.targets.empty())
     warnings.push_back(fmt::format("{}: morph targets are ignored (base shape only)", where));

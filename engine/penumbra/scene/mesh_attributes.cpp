@@ -19,6 +19,7 @@ void makeFlatNormals(Mesh& mesh) {
   Mesh flat;
   const bool hasUv = !mesh.uv0.empty();
   const bool hasUv1 = !mesh.uv1.empty();
+  const bool hasColors = !mesh.colors.empty();
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     glm::vec3 p[3];
     for (int k = 0; k < 3; ++k) p[k] = mesh.positions[mesh.indices[t + k]];
@@ -31,6 +32,7 @@ void makeFlatNormals(Mesh& mesh) {
       flat.normals.push_back(n);
       if (hasUv) flat.uv0.push_back(mesh.uv0[mesh.indices[t + k]]);
       if (hasUv1) flat.uv1.push_back(mesh.uv1[mesh.indices[t + k]]);
+      if (hasColors) flat.colors.push_back(mesh.colors[mesh.indices[t + k]]);
     }
   }
   mesh.positions = std::move(flat.positions);
@@ -38,6 +40,7 @@ void makeFlatNormals(Mesh& mesh) {
   mesh.normals = std::move(flat.normals);
   mesh.uv0 = std::move(flat.uv0);
   mesh.uv1 = std::move(flat.uv1);
+  mesh.colors = std::move(flat.colors);
   mesh.tangents.clear();
 }
 

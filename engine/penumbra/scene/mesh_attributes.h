@@ -7,7 +7,7 @@ namespace penumbra::scene {
 
 // Gives every triangle its own three vertices carrying the face normal
 // (counter-clockwise front), so shading is faceted as glTF requires for
-// primitives without normals. Texture coordinates follow their vertices;
+// primitives without normals. Texture coordinates and colours follow their vertices;
 // tangents are dropped (glTF: they must be ignored without normals).
 // A degenerate triangle gets a zero normal, which the renderer reads as
 // "use the geometric normal".

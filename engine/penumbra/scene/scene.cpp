@@ -159,6 +159,12 @@ void validateMesh(const Mesh& mesh, const Scene& scene, const Fail& fail) {
   checkAttribute(mesh.tangents.size(), finite(mesh.tangents), "tangents");
   checkAttribute(mesh.uv0.size(), finite(mesh.uv0), "texture coordinates");
   checkAttribute(mesh.uv1.size(), finite(mesh.uv1), "second texture coordinates");
+  checkAttribute(mesh.colors.size(), finite(mesh.colors), "vertex colours");
+  for (const auto& c : mesh.colors)
+    for (int i = 0; i < 4; ++i)
+      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+        fail(fmt::format("mesh '{}' has a vertex colour component {} outside [0, 1]", mesh.name,
+                         c[i]));
 }
 
 // A material's parameters in their ranges, its texture references in the scene.

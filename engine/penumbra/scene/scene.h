@@ -144,6 +144,8 @@ struct Mesh {
   std::vector<glm::vec4> tangents;  // xyz unit, w = +-1: bitangent = cross(normal, xyz) * w
   std::vector<glm::vec2> uv0;       // glTF convention: (0, 0) is the image's top-left corner
   std::vector<glm::vec2> uv1;       // TEXCOORD_1, as uv0
+  std::vector<glm::vec4>
+      colors;  // COLOR_0, linear RGBA in [0, 1]: multiplies the base colour and alpha
   uint32_t triangleCount() const { return uint32_t(indices.size() / 3); }
 };
 

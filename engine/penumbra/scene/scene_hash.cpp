@@ -15,7 +15,7 @@ namespace {
 // Material::emissionIsLighting only decides whether the default environment
 // is added, and the environment is hashed: not hashed.
 static_assert(fieldCount<Material>() == 34, "a Material field is not hashed (scene_hash.cpp)");
-static_assert(fieldCount<Mesh>() == 8, "a Mesh field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Camera>() == 8, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<TextureRef>() == 6, "a TextureRef field is not hashed (scene_hash.cpp)");
@@ -128,6 +128,7 @@ std::string contentHash(const Scene& scene) {
     h.array(m.tangents);
     h.array(m.uv0);
     h.array(m.uv1);
+    h.array(m.colors);
   }
   h.value(uint64_t(scene.instances.size()));
   for (const auto& i : scene.instances) {

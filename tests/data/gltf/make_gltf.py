@@ -199,6 +199,23 @@ def attributes():
     b.write_gltf("attributes.gltf")
 
 
+def vertex_colors():
+    """COLOR_0 as glTF allows it: primitive 0 (the unit triangle) with RGB as
+    normalized unsigned bytes (255, 0, 0), (0, 255, 0), (0, 0, 51); primitive 1
+    with RGBA floats (0.25, 0.5, 0.75, 0.5) at every corner, one corner's
+    red out of range (1.5, clamped to 1)."""
+    b = Builder()
+    pos = b.accessor(TRIANGLE, minmax=True)
+    rgb = b.view(struct.pack("<12B", 255, 0, 0, 0, 0, 255, 0, 0, 0, 0, 51, 0), stride=4)
+    c8 = b.accessor([], UBYTE, "VEC3", normalized=True, view=rgb, count=3)
+    cf = b.accessor([1.5, 0.5, 0.75, 0.5] + [0.25, 0.5, 0.75, 0.5] * 2, FLOAT, "VEC4")
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": pos, "COLOR_0": c8}},
+                                    {"attributes": {"POSITION": pos, "COLOR_0": cf}}]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("vertex_colors.gltf")
+
+
 def generated():
     """Primitive 0: a folded pair of triangles without NORMAL (flat normals).
     Primitive 1: a quad in the xy plane with +z normals and the usual UV
@@ -841,6 +858,7 @@ if __name__ == "__main__":
     transforms()
     sparse()
     attributes()
+    vertex_colors()
     generated()
     containers()
     materials()

@@ -145,6 +145,7 @@ float3 loadVertexPosition(uint vertex) { return float3(float(vertex == 1u), floa
 float3 loadVertexNormal(uint vertex) { return float3(0.0, 0.0, 1.0); }
 float4 loadVertexTangent(uint vertex) { return float4(1.0, 0.0, 0.0, 1.0); }
 float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
+float4 loadVertexColor(uint vertex) { return float4(1.0, 1.0, 1.0, 1.0); }
 #include "surface_from_record.hlsli"
 
 // No environment in this harness (no PT_EFFECT_ENVIRONMENT); its code compiles through
