@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <new>
 #include <optional>
 #include <regex>
 #include <tuple>
@@ -19,6 +20,7 @@
 #include "penumbra/image/image_io.h"
 #include "penumbra/render/denoiser.h"
 #include "penumbra/render/effect_set.h"
+#include "penumbra/render/gpu_scene.h"
 #include "penumbra/render/image_size.h"
 #include "penumbra/render/path_tracer.h"
 #include "penumbra/scene/material_row.h"
@@ -289,9 +291,34 @@ int renderWhole(const RenderOptions& o, rhi::IDevice& device, render::PathTracer
 
 // Parse, check, hand over, report: everything that can fail on bad input
 // fails before any device is made.
+int renderScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job,
+                const scene::Scene& scene);
+
+// Out of memory is a property of the scene and the machine: said in one
+// line with what the scene needs, not as an internal error.
 int runRender(const RenderOptions& o, const CLI::App& cmd) {
   render::RenderJob job = makeJob(o, cmd);
-  const scene::Scene scene = loadJobScene(o, cmd, job);
+  std::optional<scene::Scene> scene;
+  try {
+    scene = loadJobScene(o, cmd, job);
+  } catch (const std::bad_alloc&) {
+    throw Error(fmt::format("scene '{}': out of memory while loading it", job.scene));
+  }
+  try {
+    return renderScene(o, cmd, job, *scene);
+  } catch (const std::bad_alloc&) {
+    const double gib = double(1ull << 30);
+    throw Error(fmt::format(
+        "scene '{}': out of memory; its {} triangles need {:.1f} GiB of vertex and index data to "
+        "upload (held on the host and again on the device) and {:.1f} GiB as loaded, before "
+        "acceleration structures",
+        scene->name, scene->triangleCount(), double(render::GpuScene::uploadBytes(*scene)) / gib,
+        double(scene->meshBytes()) / gib));
+  }
+}
+
+int renderScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job,
+                const scene::Scene& scene) {
   if (o.printEffects) {
     for (const auto& name : render::effectNames(render::deriveEffects(scene)))
       fmt::print("{}\n", name);

@@ -66,6 +66,24 @@ expect_error "a camera position of two numbers" "--camera-position" render --cam
 expect_error "a glTF file needing Draco and KTX2" "requires extension KHR_draco_mesh_compression" render --scene "$gltf_data/extension_required_compressed.gltf" --out "$work/out.png"
 expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
 expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"
+# Out of memory says what the scene needs, in one line: a 4000 x 4000
+# terrain (32 M triangles) in a 2 GB address space fails uploading it, and
+# in 400 MB already generating it.
+cat >"$work/terrain.json" <<'JSON'
+{ "format": "penumbra-scene", "version": 1, "name": "big terrain",
+  "camera": { "position": [0, 5, -17], "forward": [0, -0.3, 1], "up": [0, 1, 0], "verticalFovDegrees": 50 },
+  "materials": { "rock": { "model": "lambert", "albedo": [0.45, 0.4, 0.35] } },
+  "lights": [ { "type": "point", "position": [6, 20, -12], "intensity": [150, 145, 135] } ],
+  "generated": [ { "kind": "terrain", "material": "rock", "resolution": 4000, "size": 40, "height": 2.5 } ] }
+JSON
+real_penumbra="$penumbra"
+for limit in 2000000 400000; do
+  printf '#!/bin/sh\nulimit -v %s\nexec "%s" "$@"\n' "$limit" "$real_penumbra" >"$work/limited.sh"
+  chmod +x "$work/limited.sh"
+  penumbra="$work/limited.sh"
+  expect_error "out of memory in ${limit} KB" "GiB" render --scene "$work/terrain.json" --size 16x16 --spp 1 --out "$work/out.png"
+  penumbra="$real_penumbra"
+done
 # A machine without a Vulkan driver: point the loader at an empty driver list.
 VK_DRIVER_FILES="$work/none.json" VK_ICD_FILENAMES="$work/none.json" \
   expect_error "no device with ray tracing" "no Vulkan driver" render --size 8x8 --spp 1 --out "$work/out.png"

@@ -283,6 +283,20 @@ struct GpuScene::MeshLayout {
   MeshInstanceOrder order;
 };
 
+uint64_t GpuScene::uploadBytes(const scene::Scene& scene) {
+  uint64_t vertices = 0, indices = 0;
+  bool colors = false;
+  for (const auto& mesh : scene.meshes) {
+    vertices += mesh.positions.size();
+    indices += mesh.indices.size();
+    colors = colors || !mesh.colors.empty();
+  }
+  // Positions, normals, tangents, texture coordinates (and colours): a
+  // float4 each, as packMeshes lays them out.
+  const uint64_t perVertex = (colors ? 5 : 4) * sizeof(gpu::float4);
+  return vertices * perVertex + indices * sizeof(uint32_t);
+}
+
 // Every mesh's vertices, attributes and indices, back to back in shared
 // buffers.
 GpuScene::MeshLayout GpuScene::packMeshes(const scene::Scene& scene) {

@@ -45,6 +45,11 @@ class GpuScene {
   ~GpuScene();
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;
+  // The bytes of the vertex, attribute and index arrays the upload of
+  // `scene` builds on the host (and then holds on the device as well):
+  // what an out-of-memory message says a scene needs, before acceleration
+  // structures.
+  static uint64_t uploadBytes(const scene::Scene& scene);
 
   // Places everything that depends on the origin again about `origin`
   // (instances, emitters, point lights, implicit objects; the implicit

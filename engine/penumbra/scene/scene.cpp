@@ -53,6 +53,16 @@ uint64_t Scene::triangleCount() const {
   return n;
 }
 
+uint64_t Scene::meshBytes() const {
+  uint64_t bytes = 0;
+  for (const auto& m : meshes)
+    bytes += m.positions.size() * sizeof(glm::vec3) + m.indices.size() * sizeof(uint32_t) +
+             m.normals.size() * sizeof(glm::vec3) + m.tangents.size() * sizeof(glm::vec4) +
+             (m.uv0.size() + m.uv1.size()) * sizeof(glm::vec2) +
+             m.colors.size() * sizeof(glm::vec4);
+  return bytes;
+}
+
 // Here rather than in environment.cpp, which reads image files: the glTF
 // loader's sanitizer build links scene.cpp without the image readers.
 void validateEnvironment(const Environment& env) {
@@ -267,8 +277,11 @@ void selectCamera(Scene& scene, const std::string& name) {
   std::string names;
   for (size_t i = 0; i < scene.cameras.size(); ++i) {
     const NamedCamera& c = scene.cameras[i];
-    std::string shown = c.name.empty() ? "(unnamed)" : fmt::format("'{}'", c.name);
-    if (!c.nodeName.empty()) shown += fmt::format(" (node '{}')", c.nodeName);
+    std::string shown = c.name.empty() ? "" : fmt::format("'{}'", c.name);
+    if (!c.nodeName.empty())
+      shown += c.name.empty() ? fmt::format("node '{}'", c.nodeName)
+                              : fmt::format(" (node '{}')", c.nodeName);
+    if (shown.empty()) shown = "(unnamed)";
     names += fmt::format("{}{} {}", names.empty() ? "" : ", ", i, shown);
   }
   throw Error(fmt::format(

@@ -210,6 +210,8 @@ struct Scene {
   std::vector<NamedCamera> cameras;  // alternatives for selectCamera
   std::optional<MaterialRow> materialRow;
   uint64_t triangleCount() const;
+  // The bytes of the meshes' vertex, attribute and index arrays as loaded.
+  uint64_t meshBytes() const;
   // Whether the scene brings its own lighting: a delta light, or a drawn
   // emissive material whose emission is lighting (Material::
   // emissionIsLighting). A scene without it gets the default environment.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <new>
 
 #include "penumbra/util/error.h"
 
@@ -56,7 +57,18 @@ Mesh makeTerrain(const TerrainDesc& desc, uint32_t material) {
   Mesh mesh;
   mesh.name = fmt::format("terrain {}x{}", n, n);
   mesh.material = material;
-  mesh.positions.reserve(n * n);
+  try {
+    mesh.positions.reserve(n * n);
+    mesh.indices.reserve((n - 1) * (n - 1) * 6);
+  } catch (const std::bad_alloc&) {
+    const double bytes =
+        double(n * n * sizeof(glm::vec3) + (n - 1) * (n - 1) * 6 * sizeof(uint32_t));
+    throw Error(
+        fmt::format("terrain: {}x{} needs {:.1f} GiB for its vertices and indices alone, more than "
+                    "this process "
+                    "can allocate; lower \"resolution\"",
+                    n, n, bytes / double(1ull << 30)));
+  }
   const float step = desc.size / float(n - 1);
   // Five noise features across the terrain, whatever its size.
   const float noiseScale = 5.0f / desc.size;
@@ -69,7 +81,6 @@ Mesh makeTerrain(const TerrainDesc& desc, uint32_t material) {
       mesh.positions.emplace_back(x, y, z);
     }
   }
-  mesh.indices.reserve((n - 1) * (n - 1) * 6);
   for (uint64_t j = 0; j + 1 < n; ++j) {
     for (uint64_t i = 0; i + 1 < n; ++i) {
       const uint32_t a = uint32_t(j * n + i), b = a + 1, c = uint32_t(a + n), d = c + 1;
