@@ -142,6 +142,25 @@ TEST_CASE("glTF COLOR_0: RGB or RGBA, normalized integers or floats, clamped to 
   REQUIRE_THROWS_WITH(scene::validate(bad), ContainsSubstring("vertex colour component 1.5"));
 }
 
+TEST_CASE("glTF EXT_mesh_gpu_instancing: one instance per copy, placed in the node's space",
+          "[gltf]") {
+  const auto r = scene::importGltf(gltf("gpu_instancing.gltf"));
+  CHECK(r.warnings.empty());
+  const auto& s = r.scene;
+  REQUIRE(s.meshes.size() == 1u);
+  REQUIRE(s.instances.size() == 3u);
+  // The triangle's vertex (1, 0, 0) (vertex 1 of the file; the loader keeps
+  // the vertex order) through node (10, 0, 0) x copy T R S, worked by hand:
+  // as is; turned 90 degrees about +z to (0, 1, 0), moved by (2, 0, 0);
+  // scaled to (2, 0, 0), moved by (0, 3, 0).
+  requireNear(world(s, s.instances[0], 1), {11, 0, 0});
+  requireNear(world(s, s.instances[1], 1), {12, 1, 0});
+  requireNear(world(s, s.instances[2], 1), {12, 3, 0});
+  REQUIRE_THROWS_WITH(scene::importGltf(gltf("invalid_instancing_counts.gltf")),
+                      ContainsSubstring("EXT_mesh_gpu_instancing SCALE: 2 instances where the "
+                                        "other attributes have 3"));
+}
+
 TEST_CASE("glTF normalized integer attributes and byte strides", "[gltf]") {
   const auto s = scene::loadGltf(gltf("attributes.gltf"));
   REQUIRE(s.meshes.size() == 2u);

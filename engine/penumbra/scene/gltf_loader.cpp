@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "penumbra/scene/camera_placement.h"
+#include "penumbra/scene/gltf_instancing.h"
 #include "penumbra/scene/gltf_lights.h"
 #include "penumbra/scene/gltf_materials.h"
 #include "penumbra/scene/gltf_primitives.h"
@@ -290,12 +291,21 @@ class Importer {
       stack.push_back({step.node, glm::dmat4(1.0), true});
 
       const glm::dmat4 world = step.parent * localTransform(node, where);
-      if (node.mesh >= 0)
-        for (uint32_t mesh : meshesOf(node.mesh, where)) {
-          requireAtMost(out_.scene.instances.size() + 1, budget_.limits.maxInstances,
-                        "maxInstances", at() + " instance count");
-          out_.scene.instances.push_back({mesh, world});
-        }
+      if (node.mesh >= 0) {
+        // EXT_mesh_gpu_instancing: a copy of the mesh per instance, in the
+        // node's space; otherwise the one at the node.
+        std::vector<glm::dmat4> placements;
+        for (const glm::dmat4& copy :
+             gltf::gpuInstanceTransforms(model_, node, where, budget_.limits))
+          placements.push_back(world * copy);
+        if (placements.empty()) placements.push_back(world);
+        for (uint32_t mesh : meshesOf(node.mesh, where))
+          for (const glm::dmat4& placement : placements) {
+            requireAtMost(out_.scene.instances.size() + 1, budget_.limits.maxInstances,
+                          "maxInstances", at() + " instance count");
+            out_.scene.instances.push_back({mesh, placement});
+          }
+      }
       if (node.camera >= 0) addCamera(index, world);
       if (auto light = gltf::nodeLight(model_, node, world, where))
         out_.scene.pointLights.push_back(*light);

@@ -86,7 +86,8 @@ const std::vector<std::string_view>& supportedExtensions() {
                                                    "KHR_materials_specular",
                                                    "KHR_materials_sheen",
                                                    "KHR_texture_transform",
-                                                   "KHR_lights_punctual"};  // gltf_lights.h
+                                                   "KHR_lights_punctual",       // gltf_lights.h
+                                                   "EXT_mesh_gpu_instancing"};  // gltf_instancing.h
   return names;
 }
 

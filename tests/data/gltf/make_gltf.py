@@ -216,6 +216,26 @@ def vertex_colors():
     b.write_gltf("vertex_colors.gltf")
 
 
+def gpu_instancing():
+    """EXT_mesh_gpu_instancing: the unit triangle under a node at (10, 0, 0)
+    drawn three times: as is; turned 90 degrees about +z and moved by
+    (2, 0, 0); scaled by 2 and moved by (0, 3, 0). And a file whose
+    attributes disagree on the count (3 translations, 2 scales)."""
+    def build(scales):
+        b = triangle_file()
+        t = b.accessor([0, 0, 0, 2, 0, 0, 0, 3, 0], FLOAT, "VEC3")
+        h = math.sqrt(0.5)
+        r = b.accessor([0, 0, 0, 1, 0, 0, h, h, 0, 0, 0, 1], FLOAT, "VEC4")
+        sc = b.accessor(scales, FLOAT, "VEC3")
+        b.doc["nodes"] = [{"mesh": 0, "translation": [10, 0, 0], "extensions": {
+            "EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": t, "ROTATION": r, "SCALE": sc}}}}]
+        b.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+        b.doc["extensionsRequired"] = ["EXT_mesh_gpu_instancing"]
+        return b
+    build([1, 1, 1, 1, 1, 1, 2, 2, 2]).write_gltf("gpu_instancing.gltf")
+    build([1, 1, 1, 2, 2, 2]).write_gltf("invalid_instancing_counts.gltf")
+
+
 def generated():
     """Primitive 0: a folded pair of triangles without NORMAL (flat normals).
     Primitive 1: a quad in the xy plane with +z normals and the usual UV
@@ -859,6 +879,7 @@ if __name__ == "__main__":
     sparse()
     attributes()
     vertex_colors()
+    gpu_instancing()
     generated()
     containers()
     materials()
