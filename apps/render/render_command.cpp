@@ -159,10 +159,10 @@ scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::R
   // The view and the thin lens given on the command line, on whichever
   // camera renders (a record's, or the scene's after --camera picked one).
   const scene::CameraPlacement placement = o.camera.placement(cmd);
-  if (!placement.name.empty()) scene::selectCamera(scene, placement.name);
+  scene::placeCamera(scene, placement);
+  if (job.camera) scene::placeCamera(*job.camera, placement);
   for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
     if (!c) continue;
-    scene::placeCamera(*c, placement);
     if (cmd.count("--aperture") > 0) c->apertureRadius = o.aperture;
     if (cmd.count("--f-number") > 0)
       c->apertureRadius = scene::apertureRadiusForFNumber(o.fNumber, c->verticalFovDegrees);
@@ -309,11 +309,11 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
   } catch (const std::bad_alloc&) {
     const double gib = double(1ull << 30);
     throw Error(fmt::format(
-        "scene '{}': out of memory; its {} triangles need {:.1f} GiB of vertex and index data to "
-        "upload (held on the host and again on the device) and {:.1f} GiB as loaded, before "
-        "acceleration structures",
-        scene->name, scene->triangleCount(), double(render::GpuScene::uploadBytes(*scene)) / gib,
-        double(scene->meshBytes()) / gib));
+        "scene '{}': out of memory rendering it at {}x{}; its {} triangles need {:.1f} GiB of "
+        "vertex and index data to upload (held on the host and again on the device) and {:.1f} "
+        "GiB as loaded, before acceleration structures and the image's buffers",
+        scene->name, job.width, job.height, scene->triangleCount(),
+        double(render::GpuScene::uploadBytes(*scene)) / gib, double(scene->meshBytes()) / gib));
   }
 }
 

@@ -16,7 +16,8 @@
 #define PT_EFFECT_CLEARCOAT 16     // clearcoat > 0
 #define PT_EFFECT_SHEEN 32         // sheen > 0
 #define PT_EFFECT_TEXTURES 64      // material textures: base colour, metallic-roughness, emission, normal maps
-#define PT_EFFECT_ALPHA_MASK 128   // alphaMode MASK (textured) or BLEND: an any-hit shader cuts the surface
+#define PT_EFFECT_ALPHA_MASK \
+  128  // alphaMode MASK (textured or vertex alpha) or BLEND: an any-hit shader cuts the surface
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
 // Every effect: the eight bits above and the environment.
 #define PT_EFFECTS_ALL                                                                            \

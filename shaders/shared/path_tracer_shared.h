@@ -19,6 +19,8 @@ namespace penumbra::gpu {
 // Resources of the path tracer (space 0): the HLSL register number of each
 // (register(tN) / register(uN) in the DXR entry points, through
 // PENUMBRA_REGISTER_T/U) and the Vulkan binding it shifts to (PT_SLOT_*).
+// The table is kept aligned by hand.
+// clang-format off
 #define PT_T_SCENE 0               // top-level acceleration structure
 #define PT_T_VERTICES 1            // float4 positions (object space)
 #define PT_T_INDICES 2             // uint triangle indices
@@ -35,9 +37,10 @@ namespace penumbra::gpu {
 #define PT_T_ENVIRONMENT_INFO 13   // EnvironmentData, one (a 1x1 black map when the scene has none)
 #define PT_T_ENVIRONMENT 14        // float4 per texel of the map: rgb radiance, w the texel's probability
 #define PT_T_ENVIRONMENT_CDF 15    // float: the rows' cumulative probabilities, then each row's own
-#define PT_T_COLORS 16  // float4 per vertex: COLOR_0, linear RGBA (read only with PT_VERTEX_COLORS)
-#define PT_T_TEXTURES \
-  17  // Texture2D[] (bindless, so the highest t register: D3D12 unbounded ranges cover all above)
+#define PT_T_COLORS 16             // float4 per vertex: COLOR_0, linear RGBA (with PT_VERTEX_COLORS)
+// Texture2D[], bindless: the highest t register (a D3D12 unbounded range
+// covers every register above its first).
+#define PT_T_TEXTURES 17
 #define PT_S_SAMPLERS 0            // SamplerState[] (bindless): the distinct samplers of the texture refs
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
@@ -48,6 +51,7 @@ namespace penumbra::gpu {
 #define PT_U_GUIDE_NORMAL_DEPTH 4  // xyz shading normal (mean, not renormalised); w linear view depth, 0: no surface
 #define PT_U_GUIDE_EMISSION 5      // rgb radiance emitted there towards the camera (not filtered)
 #define PT_U_GUIDE_MOMENTS 6       // x mean luminance of (radiance - emission) per sample, y its mean square
+// clang-format on
 #define PT_SLOT_SCENE PENUMBRA_T(PT_T_SCENE)
 #define PT_SLOT_VERTICES PENUMBRA_T(PT_T_VERTICES)
 #define PT_SLOT_INDICES PENUMBRA_T(PT_T_INDICES)

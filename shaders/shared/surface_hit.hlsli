@@ -66,7 +66,10 @@ float3 resolveShadingTangent(float3 t, float3 n) {
 // The shading normal n (unit, on ng's side) turned towards the geometric
 // normal ng (unit, on wo's side) just enough that the mirror reflection of wo
 // about it leaves the geometric surface: at least min(0.9 wo.ng, 0.01) above
-// its plane (so never shallower than wo came in). A normal map's bumps tilt
+// its plane (the 0.9 wo.ng keeps ng itself a valid answer for grazing views).
+// Every interpolated shading normal goes through it, vertex normals as well
+// as normal maps; only where the mirror direction would fall below the
+// surface does it change anything. A normal map's bumps tilt
 // n so far from ng that the reflection of a grazing view falls below the
 // surface; a path that must end there draws a black rim around every bump.
 // The same remedy as production renderers' "valid reflection" normal.

@@ -52,8 +52,9 @@ float3 pbrNeutral(float3 c) {
 }
 
 // AgX as Filament and three.js ship it (Blender's AgX base, Rec. 2020 working
-// space): into Rec. 2020, the AgX inset, log2 exposure between -12.47 and
-// +4.03 EV about middle grey, Wrensch's polynomial fit of the sigmoid, the
+// space): into Rec. 2020, the AgX inset, log2 encoding between -12.47 and
+// +4.03 (-10 to +6.5 EV about middle grey 0.18), Wrensch's polynomial fit of
+// the sigmoid, the
 // outset, a 2.2 power back to linear, back to Rec. 709, clipped. Matrices
 // as rows (the shading core keeps no matrices).
 float3 agxContrast(float3 x) {

@@ -470,6 +470,41 @@ TEST_CASE("vertex colours: COLOR_0 multiplies the base colour and, for MASK, the
       test::renderScene(*device, litQuadScene(material), kSize, kSize, 4, oneBounce());
   CHECK(relativeMaxDifference(image, plain) > 0.05f);
 
+  // Interpolated across each triangle: colours affine in position,
+  // c = (0.5 + 0.4 x, 0.5 + 0.4 y, 0.3) at the corners (x, y = +-1), are
+  // that affine function everywhere on both triangles. A Lambert surface's
+  // radiance is its albedo times the white surface's, so the ratio to a
+  // white render at each pixel is c at its centre: frontCamera sees
+  // +-3 tan(22.5 deg) at z = 0, so pixel (i, j)'s centre is at
+  // x = (2 (i + 0.5) / size - 1) 3 tan(22.5 deg), y the same for -j. The two
+  // renders share their sample positions, so the ratio is c averaged over
+  // them: within 0.4 x half a pixel (0.016) of the centre's; 0.025 passes
+  // that and fails a wrong corner (an error of 0.4 or more).
+  {
+    auto white = litQuadScene(scene::Material::lambert("white", glm::vec3(1.0f)));
+    auto affine = white;
+    for (size_t v = 0; v < 4; ++v) {
+      const glm::vec3 p = affine.meshes[0].positions[v];
+      affine.meshes[0].colors.emplace_back(0.5f + 0.4f * p.x, 0.5f + 0.4f * p.y, 0.3f, 1.0f);
+    }
+    const auto lit = test::renderScene(*device, white, kSize, kSize, 16, oneBounce());
+    const auto tinted = test::renderScene(*device, affine, kSize, kSize, 16, oneBounce());
+    uint32_t checked = 0;
+    for (uint32_t j = 8; j < kSize - 8; ++j)
+      for (uint32_t i = 8; i < kSize - 8; ++i) {
+        const float halfView = 3.0f * std::tan(glm::radians(22.5f));
+        const float x = (2.0f * (float(i) + 0.5f) / float(kSize) - 1.0f) * halfView;
+        const float y = -(2.0f * (float(j) + 0.5f) / float(kSize) - 1.0f) * halfView;
+        const glm::vec3 c(0.5f + 0.4f * x, 0.5f + 0.4f * y, 0.3f);
+        const float w = lit.pixel(i, j)[1];
+        if (w < 0.05f) continue;
+        for (int k = 0; k < 3; ++k)
+          CHECK(std::abs(tinted.pixel(i, j)[k] / lit.pixel(i, j)[k] - c[k]) < 0.025f);
+        ++checked;
+      }
+    CHECK(checked > 200);
+  }
+
   // Alpha MASK at cutoff 0.5: a vertex alpha of 0.3 cuts the quad away (the
   // camera sees the black background), 0.8 keeps it.
   auto masked = litQuadScene(material);

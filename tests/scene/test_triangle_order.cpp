@@ -71,8 +71,9 @@ TEST_CASE("triangle order: a shuffled mesh comes out local, whatever order it wa
           "[scene]") {
   const scene::Mesh rows = grid(64);
   const scene::Mesh random = shuffled(rows, 7);
-  // A random order steps about a third of the grid's width (~0.52 x 64
-  // cells) from one triangle to the next.
+  // A random order steps about half the grid's width (~0.52 x 64 cells, the
+  // mean distance of two random points in a square) from one triangle to
+  // the next.
   REQUIRE(meanStep(random) > 20.0);
 
   scene::Mesh sortedRandom = random;

@@ -22,8 +22,8 @@ uint32_t deriveEffects(const scene::Scene& scene);
 uint32_t deriveMaterialEffects(const scene::Material& material);
 
 // Whether a material's surface is cut by its base colour's alpha: alphaMode
-// MASK with a base-colour texture (per texel), or BLEND with alpha below 1
-// anywhere (stochastic coverage). Its meshes are non-opaque geometry and the
+// MASK with a base-colour texture (per texel) or vertex alpha, or BLEND with
+// alpha below 1 anywhere (stochastic coverage). Its meshes are non-opaque geometry and the
 // triangles' hit group gets the alpha any-hit shader. MASK without a texture
 // is all or nothing, decided when the scene is loaded. A mesh whose vertex
 // colours (COLOR_0) carry alpha below 1 (`vertexAlpha`) varies it per point

@@ -47,8 +47,11 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   rayCounter_ = device_.createBuffer(counter);
   ownFrame_ = createFrameQueries();
 
-  for (const auto& inst : scene.instances)
+  for (const auto& inst : scene.instances) {
     drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
+    if (hasVertexAlpha(scene.meshes[inst.mesh]))
+      vertexAlphaMaterials_.push_back(scene.meshes[inst.mesh].material);
+  }
   for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
   scene_ = std::make_unique<GpuScene>(device_, scene, renderOriginNear(scene.camera.position),
                                       pipelineEffects_ == uint32_t(PT_EFFECTS_ALL));
@@ -211,6 +214,9 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   uint32_t effects =
       sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_ENVIRONMENT);
   for (uint32_t m : drawnMaterials_) effects |= deriveMaterialEffects(materials_[m]);
+  // Vertex alpha cuts a mesh under MASK or BLEND whatever its texture.
+  for (uint32_t m : vertexAlphaMaterials_)
+    if (alphaMasked(materials_[m], true)) effects |= PT_EFFECT_ALPHA_MASK;
   sceneEffects_ = effects;
   return rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
 }

@@ -238,6 +238,7 @@ class PathTracer {
   glm::vec3 ambient_{0.0f};
   std::vector<scene::Material> materials_;
   std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
+  std::vector<uint32_t> vertexAlphaMaterials_;  // materials of meshes with COLOR_0 alpha below 1
   uint32_t accumulatedSamples_ = 0;
   bool guidesWritten_ = false;
   uint32_t firstSample_ = 0;

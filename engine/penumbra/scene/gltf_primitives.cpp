@@ -182,20 +182,13 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   if (const int color = attribute(p, "COLOR_0"); color >= 0) {
     const bool rgb = size_t(color) < model.accessors.size() &&
                      model.accessors[size_t(color)].type == TINYGLTF_TYPE_VEC3;
-    const int components = rgb ? 3 : 4;
-    const std::vector<float> values = readAttribute("COLOR_0", components);
-    mesh.colors.resize(vertexCount);
-    for (size_t v = 0; v < vertexCount; ++v) {
-      glm::vec4 c(1.0f);
-      for (int k = 0; k < components; ++k) {
-        const float value = values[v * size_t(components) + size_t(k)];
-        if (!std::isfinite(value))
-          throw Error(
-              fmt::format("{}: element {} is not a finite number", accessorName("COLOR_0"), v));
-        c[k] = std::clamp(value, 0.0f, 1.0f);
-      }
-      mesh.colors[v] = c;
-    }
+    if (rgb)
+      for (const glm::vec3& c :
+           toVectors<glm::vec3>(readAttribute("COLOR_0", 3), accessorName("COLOR_0")))
+        mesh.colors.emplace_back(c, 1.0f);
+    else
+      mesh.colors = toVectors<glm::vec4>(readAttribute("COLOR_0", 4), accessorName("COLOR_0"));
+    for (auto& c : mesh.colors) c = glm::clamp(c, 0.0f, 1.0f);
   }
   if (!p.targets.empty())
     warnings.push_back(fmt::format("{}: morph targets are ignored (base shape only)", where));

@@ -108,7 +108,9 @@ struct Material {
   // (Scene::hasOwnLighting). A glTF file's emissive material is a label, a
   // screen or a lamp's glow: drawn and sampled like any emitter, but it does
   // not keep the default environment away (every glTF viewer lights such a
-  // file). Scene-file and built-in emitters are the scene's lights.
+  // file), whether the glTF file is loaded alone or merged into a scene file
+  // ("gltf"). Materials a scene file declares itself, and built-in scenes'
+  // emitters, are the scene's lights.
   bool emissionIsLighting = true;
 
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
