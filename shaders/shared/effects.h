@@ -9,6 +9,8 @@
 #ifndef PENUMBRA_EFFECTS_H
 #define PENUMBRA_EFFECTS_H
 
+// One line each: the build reads these lines (shaders/CMakeLists.txt).
+// clang-format off
 #define PT_EFFECT_AREA_LIGHTS 1    // emissive geometry: emission on hit, NEE on triangles, MIS
 #define PT_EFFECT_DELTA_LIGHTS 2   // point and spot lights
 #define PT_EFFECT_SPECULAR 4       // a GGX specular layer: metallic > 0 or specular > 0 (Phong: ks, mirrors)
@@ -16,9 +18,9 @@
 #define PT_EFFECT_CLEARCOAT 16     // clearcoat > 0
 #define PT_EFFECT_SHEEN 32         // sheen > 0
 #define PT_EFFECT_TEXTURES 64      // material textures: base colour, metallic-roughness, emission, normal maps
-#define PT_EFFECT_ALPHA_MASK \
-  128  // alphaMode MASK (textured or vertex alpha) or BLEND: an any-hit shader cuts the surface
+#define PT_EFFECT_ALPHA_MASK 128   // MASK (textured or COLOR_0 alpha) or BLEND: an any-hit shader cuts
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
+// clang-format on
 // Every effect: the eight bits above and the environment.
 #define PT_EFFECTS_ALL                                                                            \
   (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | \
