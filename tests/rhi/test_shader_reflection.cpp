@@ -37,7 +37,7 @@ const BindingLayoutItem& slot(const PipelineBindingLayout& layout, uint32_t s) {
 TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][reflection]") {
   auto layout = reflectPathTracer();
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 25);
+  REQUIRE(layout.spaces[0].items.size() == 26);
   REQUIRE(layout.pushConstantBytes == sizeof(gpu::FrameConstants));
 
   REQUIRE(slot(layout, PT_SLOT_SCENE).type == ResourceType::AccelStruct);
@@ -48,8 +48,8 @@ TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][refl
   REQUIRE(slot(layout, PT_SLOT_RAY_COUNTER).writable);
   REQUIRE_FALSE(slot(layout, PT_SLOT_EMISSIVE_TRIANGLES).writable);
   // Vertex attributes: read-only float4 arrays (D3D12 needs the 16-byte stride).
-  for (uint32_t s :
-       {uint32_t(PT_SLOT_NORMALS), uint32_t(PT_SLOT_TANGENTS), uint32_t(PT_SLOT_TEXCOORDS)}) {
+  for (uint32_t s : {uint32_t(PT_SLOT_NORMALS), uint32_t(PT_SLOT_TANGENTS),
+                     uint32_t(PT_SLOT_TEXCOORDS), uint32_t(PT_SLOT_COLORS)}) {
     REQUIRE(slot(layout, s).type == ResourceType::StorageBuffer);
     REQUIRE_FALSE(slot(layout, s).writable);
     REQUIRE(slot(layout, s).structureStride == 16u);
