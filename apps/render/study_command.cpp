@@ -193,6 +193,14 @@ class OutputGuard {
   std::vector<std::filesystem::path> written_;
 };
 
+// report.html's previews: the centre of each image at full resolution, so a
+// 1080p study's folder stays a few megabytes and its noise looks as rendered.
+constexpr uint32_t kPreviewMaxWidth = 256;
+
+void savePreview(const std::filesystem::path& path, const image::Image& image) {
+  image::savePng(path.string(), image::encodeSrgb8(image::centreCrop(image, kPreviewMaxWidth)));
+}
+
 // The plots and report.html (scripts/study_report.py), when Python with
 // matplotlib is there; otherwise how to make them.
 void makeReport(const std::string& dir) {
@@ -395,7 +403,7 @@ int gatherStudy(const StudyOptions& o, const std::vector<study::StudyPoint>& poi
              parts.size(), context.device, context.commit);
   if (!reference.image.rgba.empty()) {
     const auto preview = dir / "reference.png";
-    image::savePng(preview.string(), image::encodeSrgb8(reference.image));
+    savePreview(preview, reference.image);
   }
   OutputGuard written;
   writeResults(o, dir, context, ordered, written);
@@ -461,7 +469,7 @@ std::vector<study::StudyRow> measurePoints(study::StudyRunner& runner,
       const auto exr = dir / "images" / (name + ".exr"), png = dir / "images" / (name + ".png");
       image::saveExr(exr.string(), runner.lastImage());
       written.add(exr);
-      image::savePng(png.string(), image::encodeSrgb8(runner.lastImage()));
+      savePreview(png, runner.lastImage());
       written.add(png);
     }
   }
@@ -566,7 +574,7 @@ int runStudy(const StudyOptions& o, const CLI::App& cmd) {
   }
   const auto referencePreview = dir / "reference.png";
   if (o.points.empty()) {
-    image::savePng(referencePreview.string(), image::encodeSrgb8(reference.image));
+    savePreview(referencePreview, reference.image);
     written.add(referencePreview);
   }
   const std::vector<study::StudyRow> rows =

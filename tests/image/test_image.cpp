@@ -23,3 +23,25 @@ TEST_CASE("image: encodeSrgb8 is the sRGB transfer function, clipped", "[image]"
     CHECK(int(out.rgba[4 * x + 3]) == 255);
   }
 }
+
+TEST_CASE("image: centreCrop copies the centre pixels at the image's aspect ratio", "[image]") {
+  // Each pixel holds its own coordinates, so the crop's origin is readable.
+  image::Image img(16, 8);
+  for (uint32_t y = 0; y < 8; ++y)
+    for (uint32_t x = 0; x < 16; ++x) {
+      img.pixel(x, y)[0] = float(x);
+      img.pixel(x, y)[1] = float(y);
+    }
+  const image::Image crop = image::centreCrop(img, 4);
+  REQUIRE(crop.width == 4u);
+  REQUIRE(crop.height == 2u);  // 16:8 kept
+  // The centre 4x2 of 16x8 starts at (6, 3).
+  for (uint32_t y = 0; y < 2; ++y)
+    for (uint32_t x = 0; x < 4; ++x) {
+      CHECK(crop.pixel(x, y)[0] == float(6 + x));
+      CHECK(crop.pixel(x, y)[1] == float(3 + y));
+    }
+  const image::Image same = image::centreCrop(img, 16);
+  CHECK(same.width == 16u);
+  CHECK(same.rgba == img.rgba);
+}

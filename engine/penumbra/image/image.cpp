@@ -22,6 +22,17 @@ Image8 encodeSrgb8(const Image& image) {
   return out;
 }
 
+Image centreCrop(const Image& image, uint32_t maxWidth) {
+  if (image.width <= maxWidth) return image;
+  const uint32_t height =
+      std::max(1u, uint32_t((uint64_t(maxWidth) * image.height + image.width / 2) / image.width));
+  Image out(maxWidth, height);
+  const uint32_t x0 = (image.width - maxWidth) / 2, y0 = (image.height - height) / 2;
+  for (uint32_t y = 0; y < height; ++y)
+    std::copy_n(image.pixel(x0, y0 + y), size_t(maxWidth) * 4, out.pixel(0, y));
+  return out;
+}
+
 uint64_t countNonFinite(const Image& image) {
   uint64_t count = 0;
   for (size_t i = 0; i < image.rgba.size(); i += 4)

@@ -29,6 +29,11 @@ struct Image8 {
 // CPU, for previews of images that live on the host (a study's report).
 Image8 encodeSrgb8(const Image& image);
 
+// The centre of an image, at most maxWidth pixels wide and as high as the
+// image's aspect ratio gives that width; pixels are copied, not filtered, so
+// the crop shows the noise the full image has (a study's previews).
+Image centreCrop(const Image& image, uint32_t maxWidth);
+
 // Pixels with a NaN or infinite channel.
 uint64_t countNonFinite(const Image& image);
 // Mean of each RGB channel over the rectangle [x0, x1) x [y0, y1).
