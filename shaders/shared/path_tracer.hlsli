@@ -286,8 +286,8 @@ MaterialData hitMaterial(InstanceData instance, SurfaceHit hit) {
   MaterialData data = loadMaterial(instance.materialIndex);
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   data = applyMaterialTextures(data, hit.uv);
-#endif
   data.baseColor *= hit.color.xyz;
+#endif
   return data;
 }
 

@@ -65,8 +65,10 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
     hit.uv = barycentricInterpolate4(loadVertexTexCoords(v.x), loadVertexTexCoords(v.y),
                                      loadVertexTexCoords(v.z), b);
   hit.color = float4(1.0, 1.0, 1.0, 1.0);
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   if ((attributes & PT_VERTEX_COLORS) != 0u)
     hit.color = barycentricInterpolate4(loadVertexColor(v.x), loadVertexColor(v.y), loadVertexColor(v.z), b);
+#endif
   float3 worldNormal =
       transformNormal3x4(instance.worldToObject0, instance.worldToObject1, instance.worldToObject2, vertexNormal);
   float3 worldTangent = transformVector3x4(instance.objectToWorld0, instance.objectToWorld1,

@@ -80,7 +80,13 @@ float3 resolveShadingTangent(float3 t, float3 n) {
 // A = |(wo.x, wo.ng)| and phi = atan2(wo.x, wo.ng). The heights at least the
 // margin m lie in 2t - phi in [-acos(m/A), acos(m/A)]; t = 0 (ng) is among
 // them (m <= wo.ng), n's own angle is past them, so the largest, the least
-// turn, is t = (phi + acos(m/A)) / 2.
+// turn, is t = theta / 2 with theta = phi + acos(m/A). No trigonometry is
+// needed: cos and sin of theta follow from those of phi (wo.ng / A,
+// wo.x / A) and of acos(m/A) (m/A, sqrt(1 - (m/A)^2)) by the angle sum, and
+// n(theta/2) is the direction of (sin theta) x + (1 + cos theta) ng (the
+// half-angle identity; theta lies in (-pi/2, pi) because wo.ng > 0 and
+// m >= 0). 1 + cos theta is taken as sin^2 / (1 - cos) where cos < 0, so it
+// does not cancel near theta = pi.
 float3 bendForValidReflection(float3 n, float3 ng, float3 wo) {
   float woZ = dot(wo, ng);
   float margin = min(0.9 * woZ, 0.01);
@@ -92,8 +98,12 @@ float3 bendForValidReflection(float3 n, float3 ng, float3 wo) {
   x = x / lenX;
   float woX = dot(wo, x);
   float a = sqrt(woX * woX + woZ * woZ);
-  float t = 0.5 * (atan2(woX, woZ) + acos(clamp(margin / a, -1.0, 1.0)));
-  return normalize(sin(t) * x + cos(t) * ng);
+  float cosAlpha = clamp(margin / a, 0.0, 1.0);
+  float sinAlpha = sqrt(1.0 - cosAlpha * cosAlpha);
+  float cosTheta = (woZ * cosAlpha - woX * sinAlpha) / a;
+  float sinTheta = (woX * cosAlpha + woZ * sinAlpha) / a;
+  float onePlusCos = cosTheta >= 0.0 ? 1.0 + cosTheta : sinTheta * sinTheta / (1.0 - cosTheta);
+  return normalize(sinTheta * x + onePlusCos * ng);
 }
 
 // The normal to shade with for a viewer in direction `wo` (unit, away from

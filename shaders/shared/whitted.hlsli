@@ -70,8 +70,8 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
     data = applyMaterialTextures(data, hit.uv);
     occlusion = materialOcclusion(data, hit.uv);
-#endif
     data.baseColor *= hit.color.xyz;  // COLOR_0
+#endif
     PhongMaterial p = unpackPhong(data);
 
     bool frontFace = dot(ray.direction, hit.geometricNormal) < 0.0;

@@ -108,6 +108,15 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK));
 
+  // Vertex colours (COLOR_0) share the textures' bit whatever the material:
+  // a mesh with them turns it on, and only a drawn one does.
+  scene::Scene coloured = cornellWithSphere(disney());
+  coloured.meshes.back().colors.assign(coloured.meshes.back().positions.size(),
+                                       glm::vec4(1.0f, 0.5f, 0.25f, 1.0f));
+  REQUIRE(render::deriveEffects(coloured) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
+  coloured.instances.pop_back();
+  REQUIRE(render::deriveEffects(coloured) == PT_EFFECT_AREA_LIGHTS);
+
   REQUIRE(render::effectNames(PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN) ==
           std::vector<std::string>{"area-lights", "sheen"});
 }

@@ -58,6 +58,10 @@ bool hasVertexAlpha(const scene::Mesh& mesh) {
                      [](const glm::vec4& c) { return c.a < 1.0f; });
 }
 
+uint32_t meshEffects(const scene::Mesh& mesh) {
+  return mesh.colors.empty() ? 0u : uint32_t(PT_EFFECT_TEXTURES);
+}
+
 uint32_t deriveMaterialEffects(const scene::Material& material) {
   return materialEffectsOf(material);
 }
@@ -75,6 +79,7 @@ uint32_t deriveEffects(const scene::Scene& scene) {
   for (const auto& instance : scene.instances) {
     const scene::Mesh& mesh = scene.meshes.at(instance.mesh);
     use(mesh.material);
+    effects |= meshEffects(mesh);
     if (alphaMasked(scene.materials.at(mesh.material), hasVertexAlpha(mesh)))
       effects |= PT_EFFECT_ALPHA_MASK;
   }

@@ -21,6 +21,11 @@ uint32_t deriveEffects(const scene::Scene& scene);
 // those follow from emission, which deriveEffects adds).
 uint32_t deriveMaterialEffects(const scene::Material& material);
 
+// The bits one mesh calls for whatever its material: vertex colours (COLOR_0)
+// vary the surface per point, as textures do, and share their bit, so scenes
+// without either keep that code out of their pipelines.
+uint32_t meshEffects(const scene::Mesh& mesh);
+
 // Whether a material's surface is cut by its base colour's alpha: alphaMode
 // MASK with a base-colour texture (per texel) or vertex alpha, or BLEND with
 // alpha below 1 anywhere (stochastic coverage). Its meshes are non-opaque geometry and the

@@ -49,6 +49,7 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
 
   for (const auto& inst : scene.instances) {
     drawnMaterials_.push_back(scene.meshes[inst.mesh].material);
+    meshEffects_ |= meshEffects(scene.meshes[inst.mesh]);
     if (hasVertexAlpha(scene.meshes[inst.mesh]))
       vertexAlphaMaterials_.push_back(scene.meshes[inst.mesh].material);
   }
@@ -210,9 +211,10 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   scene_->writeMaterials(materials_);
   resetAccumulation();
 
-  // Emission is unchanged, so only the material bits can differ.
+  // Emission and meshes are unchanged, so only the material bits can differ.
   uint32_t effects =
-      sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_ENVIRONMENT);
+      (sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_ENVIRONMENT)) |
+      meshEffects_;
   for (uint32_t m : drawnMaterials_) effects |= deriveMaterialEffects(materials_[m]);
   // Vertex alpha cuts a mesh under MASK or BLEND whatever its texture.
   for (uint32_t m : vertexAlphaMaterials_)

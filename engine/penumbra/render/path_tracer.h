@@ -239,6 +239,7 @@ class PathTracer {
   std::vector<scene::Material> materials_;
   std::vector<uint32_t> drawnMaterials_;  // materials of instances and implicit objects
   std::vector<uint32_t> vertexAlphaMaterials_;  // materials of meshes with COLOR_0 alpha below 1
+  uint32_t meshEffects_ = 0;                    // meshEffects of the drawn meshes
   uint32_t accumulatedSamples_ = 0;
   bool guidesWritten_ = false;
   uint32_t firstSample_ = 0;
