@@ -204,3 +204,98 @@ TEST_CASE("implicit probe: infinite and bounded planes, boxes from outside and i
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
+
+namespace {
+
+// The rounded box's exact signed distance in double (the inner box grown by
+// the radius), the reference the closed-form intersection is checked against.
+double roundedBoxDistance(glm::dvec3 p, glm::dvec3 halfExtents, double radius) {
+  const glm::dvec3 q = glm::abs(p) - (halfExtents - glm::dvec3(radius));
+  return glm::length(glm::max(q, glm::dvec3(0))) +
+         std::min(std::max(q.x, std::max(q.y, q.z)), 0.0) - radius;
+}
+
+// The first surface crossing along the ray in double: marched by the
+// distance, which is exact, so no step passes the surface, then bisected to
+// 1e-13; the normal is the distance's central-difference gradient. Nothing of
+// the shader's piecewise solution is used.
+test::ExpectedHit roundedBoxReference(const render::ProbeRay& ray, glm::dvec3 halfExtents,
+                                      double radius, glm::dvec3 centre) {
+  const glm::dvec3 o = glm::dvec3(ray.origin) - centre,
+                   d = glm::normalize(glm::dvec3(ray.direction));
+  const auto f = [&](double t) { return roundedBoxDistance(o + t * d, halfExtents, radius); };
+  const double side = f(0.0) < 0.0 ? -1.0 : 1.0;  // from inside: march to where it leaves
+  double t = 0.0;
+  for (int i = 0; i < 1000000 && side * f(t) > 1e-12 && t < 1e3; ++i)
+    t += std::max(side * f(t), 1e-12);
+  if (t >= 1e3) return {INFINITY, glm::dvec3(0), 0, 0};  // the reference itself misses
+  double lo = std::max(0.0, t - 1e-9), hi = t + 1e-9;
+  for (int i = 0; i < 200 && hi - lo > 1e-13; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (side * f(mid) > 0.0 ? lo : hi) = mid;
+  }
+  t = 0.5 * (lo + hi);
+  const glm::dvec3 p = o + t * d;
+  const double h = 1e-7;
+  const glm::dvec3 gradient(roundedBoxDistance(p + glm::dvec3(h, 0, 0), halfExtents, radius) -
+                                roundedBoxDistance(p - glm::dvec3(h, 0, 0), halfExtents, radius),
+                            roundedBoxDistance(p + glm::dvec3(0, h, 0), halfExtents, radius) -
+                                roundedBoxDistance(p - glm::dvec3(0, h, 0), halfExtents, radius),
+                            roundedBoxDistance(p + glm::dvec3(0, 0, h), halfExtents, radius) -
+                                roundedBoxDistance(p - glm::dvec3(0, 0, h), halfExtents, radius));
+  // float32 puts t within a few 1e-7 of its size; normals from a float hit
+  // point on a corner of radius 0.25 within ~1e-6.
+  return {t, glm::normalize(gradient), 1e-5 * std::max(1.0, t), 2e-5};
+}
+
+}  // namespace
+
+TEST_CASE("implicit probe: rounded boxes in closed form, faces, edges, corners and the far corner",
+          "[render][gpu][implicit]") {
+  auto device = test::makeTestDevice();
+  // A long bar: its x edges run 3.5, so a ray can enter the bounds by one
+  // end, run beside an edge through half the bar and meet it past the middle.
+  const glm::dvec3 bar(2.0, 0.5, 0.5), centre(0, 10, 0);
+  const double radius = 0.25;
+  auto s = test::implicitScene({
+      test::implicitObject("bar", shapes::RoundedBox{glm::vec3(bar), float(radius)},
+                           test::translate(glm::vec3(centre))),
+  });
+  render::PathTracer tracer(*device, s, 1, 1);
+
+  const glm::dvec3 c = centre;
+  // A ray from beyond the -x end, outside the +y+z edge's cylinder (radius
+  // 0.25 round y = z = 0.25) until it touches it at x = 1.
+  const glm::dvec3 alongTarget =
+      c + glm::dvec3(1.0, 0.25 + radius * std::sqrt(0.5), 0.25 + radius * std::sqrt(0.5));
+  const glm::dvec3 alongOrigin = c + glm::dvec3(-3.0, 0.45, 0.45);
+  std::vector<render::ProbeRay> rays = {
+      probeRay(c + glm::dvec3(0.3, 0.1, -4), {0, 0, 1}),      // 0 a face
+      probeRay(c + glm::dvec3(0.5, 4, 4), {0, -1, -1}),       // 1 an x edge, head on
+      probeRay(c + glm::dvec3(5, 5, 5), {-1, -1, -1}),        // 2 a corner, head on
+      probeRay(c + glm::dvec3(1.9, 0.45, -4), {0, 0, 1}),     // 3 the rounded part of a y-z edge
+      probeRay(alongOrigin, alongTarget - alongOrigin),       // 4 along an edge, past the middle
+      probeRay(c, {1, 0.3, 0.2}),                             // 5 from inside, out through an end
+      probeRay(c + glm::dvec3(1.85, 0.35, 0.35), {1, 1, 1}),  // 6 from inside a corner ball
+      probeRay(c + glm::dvec3(-4, 0.45, 0.45), {1, 0, 0}),    // 7 beside the edge, parallel: a miss
+      probeRay(c + glm::dvec3(-4, 0.4, 0.4), {1, 0, 0}),      // 8 inside the edge tube, parallel
+      probeRay(c + glm::dvec3(-4, 0.7, 0), {1, 0, 0}),        // 9 over the top: a miss
+  };
+  const auto hits = tracer.traceProbeRays(rays);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    INFO("ray " << i);
+    if (i == 7 || i == 9) {
+      checkMiss(rays[i], hits[i]);
+      continue;
+    }
+    const test::ExpectedHit expected = roundedBoxReference(rays[i], bar, radius, c);
+    REQUIRE(std::isfinite(expected.t));
+    checkHit(rays[i], hits[i], expected);
+    CHECK(hits[i].instanceIndex == 0u);
+  }
+  // The ray along the edge meets it where it was aimed, past the middle.
+  const test::ExpectedHit along = roundedBoxReference(rays[4], bar, radius, c);
+  const glm::dvec3 alongHit = glm::dvec3(rays[4].origin) + along.t * glm::dvec3(rays[4].direction);
+  CHECK(glm::length(alongHit - alongTarget) < 1e-4);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
