@@ -24,12 +24,22 @@
   [[vk::binding(PENUMBRA_T(t), 0)]] StructuredBuffer<type> name : PENUMBRA_REGISTER_T(t)
 #define PT_RW_BUFFER(type, name, u) \
   [[vk::binding(PENUMBRA_U(u), 0)]] RWStructuredBuffer<type> name : PENUMBRA_REGISTER_U(u)
+// Read-only images are SRVs in DXIL. In SPIR-V from DXC (-spirv) they are
+// the read-only storage images the Vulkan side binds (rhi::BindingSetItem::
+// storageTexture at a t slot, as glsl/prelude.glsl declares them), not
+// sampled images, which the binding set would refuse.
+#if defined(__spirv__) && !defined(PENUMBRA_HLSL_CHECK)
+#define PT_TEXTURE(name, t) \
+  [[vk::binding(PENUMBRA_T(t), 0)]] [[vk::image_format("rgba32f")]] RWTexture2D<float4> name
+#define PT_LOAD_TEXTURE(name, p) name[uint2(p)]
+#else
 #define PT_TEXTURE(name, t) [[vk::binding(PENUMBRA_T(t), 0)]] Texture2D<float4> name : PENUMBRA_REGISTER_T(t)
+#define PT_LOAD_TEXTURE(name, p) name.Load(int3(int2(p), 0))
+#endif
 #define PT_RW_TEXTURE(name, u) \
   [[vk::binding(PENUMBRA_U(u), 0)]] RWTexture2D<float4> name : PENUMBRA_REGISTER_U(u)
 #define PT_RW_TEXTURE_RGBA8(name, u) \
   [[vk::binding(PENUMBRA_U(u), 0)]] RWTexture2D<unorm float4> name : PENUMBRA_REGISTER_U(u)
-#define PT_LOAD_TEXTURE(name, p) name.Load(int3(int2(p), 0))
 #define PT_LOAD_RW_TEXTURE(name, p) name[uint2(p)]
 #define PT_STORE_RW_TEXTURE(name, p, value) name[uint2(p)] = (value)
 #define PT_TEXTURE_ARRAY(name, t) \
