@@ -1,7 +1,7 @@
 // Implicit surfaces (engine/penumbra/scene/implicit_object.h) on the GPU: the world
 // ray moved into an object's space, analytic intersections (sphere, plane,
-// box, rounded box) and the SurfaceHit a closest-hit shader reports. Sphere
-// tracing of the SDF kinds is in sphere_tracing.hlsli.
+// box) and the SurfaceHit a closest-hit shader reports. Sphere tracing of the
+// SDF kinds is in sphere_tracing.hlsli.
 //
 // Object-space rays carry a unit direction, so the distance `s` along them is
 // an object-space length (what SDFs measure); `s * tPerS` is the world ray's
@@ -179,112 +179,6 @@ ImplicitHit intersectBox(float3 origin, float3 direction, float3 halfExtents, fl
     return implicitHitAt(span.sExit, axisVector(span.exitAxis, outward));
   }
   return implicitMiss();
-}
-
-// The rounded box: the box |x| <= halfExtents with its edges and corners
-// rounded off by cornerRadius, i.e. the inner box (halfExtents - radius)
-// grown by a ball. That convex set is the union of convex pieces: three
-// boxes (the inner box grown along one axis), twelve finite cylinders (the
-// edges) and eight balls (the corners). A line meets a convex union in one
-// interval, from the earliest piece's entry to the latest piece's exit, so
-// every piece is solved in closed form and no case analysis of which face,
-// edge or corner comes first is needed; rays from inside get the exit alike.
-// The normal at any surface point is the direction from the nearest
-// inner-box point.
-// Balls and cylinders are solved about the line's closest approach to their
-// centre (axis) -+ the half chord, which does not cancel as b^2 - ac does.
-
-ImplicitHit intersectRoundedBox(float3 origin, float3 direction, float3 halfExtents, float radius,
-                                float sMin, float sMax) {
-  if (radius <= 0.0) return intersectBox(origin, direction, halfExtents, sMin, sMax);
-  float3 inner = halfExtents - splat3(radius);
-  // Outside the outer box is outside every piece.
-  SlabSpan outer = intersectSlabs(origin, direction, -halfExtents, halfExtents);
-  if (outer.sEnter > outer.sExit || outer.sExit < sMin || outer.sEnter > sMax) return implicitMiss();
-
-  float sEnter = 1e38;
-  float sExit = -1e38;
-  // The three boxes: the inner box grown by the radius along one axis.
-  for (uint axis = 0u; axis < 3u; axis += 1u) {
-    float3 grown = inner;
-    grown[axis] = halfExtents[axis];
-    SlabSpan span = intersectSlabs(origin, direction, -grown, grown);
-    if (span.sEnter <= span.sExit) {
-      sEnter = min(sEnter, span.sEnter);
-      sExit = max(sExit, span.sExit);
-    }
-  }
-  // The eight corner balls.
-  for (uint corner = 0u; corner < 8u; corner += 1u) {
-    float3 centre = float3((corner & 1u) != 0u ? inner.x : -inner.x,
-                           (corner & 2u) != 0u ? inner.y : -inner.y,
-                           (corner & 4u) != 0u ? inner.z : -inner.z);
-    float3 o = origin - centre;
-    float along = -dot(o, direction);
-    float3 closest = o + along * direction;
-    float discriminant = radius * radius - dot(closest, closest);
-    if (discriminant < 0.0) continue;
-    float halfChord = sqrt(discriminant);
-    sEnter = min(sEnter, along - halfChord);
-    sExit = max(sExit, along + halfChord);
-  }
-  // The twelve edge cylinders: along `axis`, at (+-inner) on the other two,
-  // cut to |x[axis]| <= inner[axis] (their flat ends lie inside the balls).
-  for (uint edge = 0u; edge < 12u; edge += 1u) {
-    uint axis = edge / 4u;
-    uint u = (axis + 1u) % 3u;
-    uint v = (axis + 2u) % 3u;
-    float2 o = float2(origin[u] - ((edge & 1u) != 0u ? inner[u] : -inner[u]),
-                      origin[v] - ((edge & 2u) != 0u ? inner[v] : -inner[v]));
-    float2 d = float2(direction[u], direction[v]);
-    float rate = dot(d, d);  // squared speed across the axis
-    float cylinderEnter = 1e38;
-    float cylinderExit = -1e38;
-    if (rate > 0.0) {
-      float along = -dot(o, d) / rate;
-      float2 closest = o + along * d;
-      float discriminant = radius * radius - dot(closest, closest);
-      if (discriminant < 0.0) continue;
-      float halfChord = sqrt(discriminant / rate);
-      cylinderEnter = along - halfChord;
-      cylinderExit = along + halfChord;
-    } else if (dot(o, o) <= radius * radius) {
-      cylinderEnter = -1e38;  // along the axis, inside the tube
-      cylinderExit = 1e38;
-    } else {
-      continue;
-    }
-    // The cut along the axis.
-    float lo = -1e38;
-    float hi = 1e38;
-    if (direction[axis] != 0.0) {
-      float s0 = (-inner[axis] - origin[axis]) / direction[axis];
-      float s1 = (inner[axis] - origin[axis]) / direction[axis];
-      lo = min(s0, s1);
-      hi = max(s0, s1);
-    } else if (abs(origin[axis]) > inner[axis]) {
-      continue;
-    }
-    cylinderEnter = max(cylinderEnter, lo);
-    cylinderExit = min(cylinderExit, hi);
-    if (cylinderEnter <= cylinderExit) {
-      sEnter = min(sEnter, cylinderEnter);
-      sExit = max(sExit, cylinderExit);
-    }
-  }
-  if (sEnter > sExit) return implicitMiss();
-  float s;
-  if (sEnter >= sMin && sEnter <= sMax) {
-    s = sEnter;
-  } else if (sExit >= sMin && sExit <= sMax) {
-    s = sExit;
-  } else {
-    return implicitMiss();
-  }
-  float3 p = origin + s * direction;
-  float3 outward = p - clamp(p, -inner, inner);
-  if (dot(outward, outward) == 0.0) return implicitHitAt(s, -direction);
-  return implicitHitAt(s, normalize(outward));
 }
 
 // The closest-hit shaders' report: world position from the world ray (the

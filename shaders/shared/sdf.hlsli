@@ -53,8 +53,7 @@ float sdfBlend(ImplicitData o, float3 p) {
   return d;
 }
 
-// Torus and blend: the sphere-traced kinds of the "sdf" family (a rounded box
-// on its own is intersected in closed form: implicit.hlsli).
+// Torus, rounded box and blend: the sphere-traced kinds of the "sdf" family.
 float sdfObjectDistance(ImplicitData o, float3 p) {
   if (o.kind == IMPLICIT_BLEND) return sdfBlend(o, p);
   return sdfPrimitive(o.kind, o.shape, p);

@@ -38,10 +38,7 @@ inline void addEveryFamily(scene::Scene& s) {
   bool present[4] = {false, false, false, false};
   const auto family = [](scene::ImplicitKind k) {
     using K = scene::ImplicitKind;
-    return k == K::Sphere                                         ? 0
-           : (k == K::Plane || k == K::Box || k == K::RoundedBox) ? 1
-           : k == K::Mandelbulb                                   ? 3
-                                                                  : 2;
+    return k == K::Sphere ? 0 : (k == K::Plane || k == K::Box) ? 1 : k == K::Mandelbulb ? 3 : 2;
   };
   for (const auto& o : s.implicits) present[family(o.kind())] = true;
   const scene::ImplicitShape fillers[4] = {shapes::Sphere{0.1f}, shapes::Box{glm::vec3(0.1f)},

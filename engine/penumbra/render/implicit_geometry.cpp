@@ -153,9 +153,9 @@ ImplicitFamily implicitFamily(ImplicitKind kind) {
       return ImplicitFamily::Sphere;
     case ImplicitKind::Plane:
     case ImplicitKind::Box:
-    case ImplicitKind::RoundedBox:
       return ImplicitFamily::PlaneBox;
     case ImplicitKind::Torus:
+    case ImplicitKind::RoundedBox:
     case ImplicitKind::Blend:
       return ImplicitFamily::Sdf;
     case ImplicitKind::Mandelbulb:
