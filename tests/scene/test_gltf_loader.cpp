@@ -194,6 +194,35 @@ TEST_CASE("glTF normalized integer attributes and byte strides", "[gltf]") {
   REQUIRE(b.tangents[2].w == -1.0f);
 }
 
+TEST_CASE("glTF KHR_mesh_quantization: integer positions scaled by their node and byte normals",
+          "[gltf]") {
+  // Required by the file, so refusing it would fail the load.
+  const auto r = scene::importGltf(gltf("mesh_quantization.gltf"));
+  REQUIRE_FALSE(hasWarning(r, "KHR_mesh_quantization"));
+  const auto& s = r.scene;
+  REQUIRE(s.meshes.size() == 1u);
+  REQUIRE(s.instances.size() == 1u);
+  const auto& m = s.meshes[0];
+  // Shorts 0 or 1000 as they are (not normalized), then the node: x 0.001, + (0, 0, 5).
+  requireNear(m.positions[3], {1000, 1000, 0});
+  requireNear(world(s, s.instances[0], 0), {0, 0, 5});
+  requireNear(world(s, s.instances[0], 1), {1, 0, 5});
+  requireNear(world(s, s.instances[0], 3), {1, 1, 5});
+  REQUIRE(m.indices.size() == 6u);
+  // Normalized signed bytes: 127 / 127 = 1, max(-128 / 127, -1) = -1.
+  for (const auto& n : m.normals) requireNear(n, {0, 0, 1});
+  for (const auto& t : m.tangents) {
+    requireNear(glm::vec3(t), {1, 0, 0});
+    REQUIRE(t.w == -1.0f);
+  }
+  // Unsigned bytes, not normalized: the integers 0 and 1.
+  REQUIRE(m.uv0.size() == 4u);
+  REQUIRE(m.uv0[0] == glm::vec2(0, 0));
+  REQUIRE(m.uv0[1] == glm::vec2(1, 0));
+  REQUIRE(m.uv0[2] == glm::vec2(0, 1));
+  REQUIRE(m.uv0[3] == glm::vec2(1, 1));
+}
+
 TEST_CASE("glTF primitives without normals are flat-shaded", "[gltf]") {
   const auto s = scene::loadGltf(gltf("generated.gltf"));
   const auto& fold = s.meshes[0];

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 #include <random>
 #include <vector>
 
@@ -49,9 +50,11 @@ TEST_CASE("shading normal: bent by the least turn that makes the mirror reflecti
   std::vector<BendCase> cases;
   const glm::dvec3 ng(0, 0, 1);
   for (int i = 0; i < 4096; ++i) {
-    const glm::dvec3 n = unitFromAngles(glm::radians(80.0) * u(rng), 2.0 * M_PI * u(rng));
+    const glm::dvec3 n =
+        unitFromAngles(glm::radians(80.0) * u(rng), glm::two_pi<double>() * u(rng));
     const double woZ = i % 4 == 0 ? std::pow(10.0, -3.0 * u(rng)) : u(rng);
-    const glm::dvec3 wo = unitFromAngles(std::acos(std::max(woZ, 1e-3)), 2.0 * M_PI * u(rng));
+    const glm::dvec3 wo =
+        unitFromAngles(std::acos(std::max(woZ, 1e-3)), glm::two_pi<double>() * u(rng));
     if (glm::dot(wo, n) <= 0.0) continue;  // shadingNormalFor hands these the geometric normal
     cases.push_back(
         {glm::vec4(glm::vec3(n), 0), glm::vec4(glm::vec3(ng), 0), glm::vec4(glm::vec3(wo), 0)});

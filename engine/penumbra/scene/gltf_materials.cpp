@@ -78,16 +78,14 @@ void warnExtensionTextures(const tinygltf::Material& src, const std::string& whe
 }  // namespace
 
 const std::vector<std::string_view>& supportedExtensions() {
-  static const std::vector<std::string_view> names{"KHR_materials_emissive_strength",
-                                                   "KHR_materials_transmission",
-                                                   "KHR_materials_ior",
-                                                   "KHR_materials_volume",
-                                                   "KHR_materials_clearcoat",
-                                                   "KHR_materials_specular",
-                                                   "KHR_materials_sheen",
-                                                   "KHR_texture_transform",
-                                                   "KHR_lights_punctual",       // gltf_lights.h
-                                                   "EXT_mesh_gpu_instancing"};  // gltf_instancing.h
+  static const std::vector<std::string_view> names{
+      "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
+      "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
+      "KHR_materials_sheen", "KHR_texture_transform",
+      "KHR_lights_punctual",      // gltf_lights.h
+      "EXT_mesh_gpu_instancing",  // gltf_instancing.h
+      // gltf_accessors.h decodes every integer type
+      "KHR_mesh_quantization"};
   return names;
 }
 

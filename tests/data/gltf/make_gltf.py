@@ -216,6 +216,35 @@ def vertex_colors():
     b.write_gltf("vertex_colors.gltf")
 
 
+def mesh_quantization():
+    """KHR_mesh_quantization (required): a unit quad stored as integers.
+    POSITION as signed shorts (not normalized) 0 or 1000, stride 8, under a
+    node that scales by 0.001 and moves by (0, 0, 5); NORMAL as normalized
+    signed bytes (0, 0, 127); TANGENT as normalized signed bytes
+    (127, 0, 0, -128); TEXCOORD_0 as unsigned bytes, not normalized, 0 or 1.
+    Vertices: (0,0), (1000,0), (0,1000), (1000,1000); triangles 0 1 2, 1 3 2."""
+    b = Builder()
+    corners = [(0, 0), (1000, 0), (0, 1000), (1000, 1000)]
+    pv = b.view(b"".join(struct.pack("<4h", x, y, 0, 0) for x, y in corners), stride=8)
+    pos = b.accessor([], SHORT, "VEC3", view=pv, count=4)
+    b.doc["accessors"][pos]["min"] = [0, 0, 0]
+    b.doc["accessors"][pos]["max"] = [1000, 1000, 0]
+    nv = b.view(struct.pack("<16b", *([0, 0, 127, 0] * 4)), stride=4)
+    nrm = b.accessor([], BYTE, "VEC3", normalized=True, view=nv, count=4)
+    tan = b.accessor([127, 0, 0, -128] * 4, BYTE, "VEC4", normalized=True)
+    uvv = b.view(struct.pack("<16B", *[c for x, y in corners for c in (x // 1000, y // 1000, 0, 0)]),
+                 stride=4)
+    uv = b.accessor([], UBYTE, "VEC2", view=uvv, count=4)
+    idx = b.accessor([0, 1, 2, 1, 3, 2], UBYTE, "SCALAR")
+    b.add("meshes", {"primitives": [{"attributes": {"POSITION": pos, "NORMAL": nrm, "TANGENT": tan,
+                                                    "TEXCOORD_0": uv}, "indices": idx}]})
+    b.add("nodes", {"mesh": 0, "scale": [0.001, 0.001, 0.001], "translation": [0, 0, 5]})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.doc["extensionsUsed"] = ["KHR_mesh_quantization"]
+    b.doc["extensionsRequired"] = ["KHR_mesh_quantization"]
+    b.write_gltf("mesh_quantization.gltf")
+
+
 def gpu_instancing():
     """EXT_mesh_gpu_instancing: the unit triangle under a node at (10, 0, 0)
     drawn three times: as is; turned 90 degrees about +z and moved by
@@ -879,6 +908,7 @@ if __name__ == "__main__":
     sparse()
     attributes()
     vertex_colors()
+    mesh_quantization()
     gpu_instancing()
     generated()
     containers()
