@@ -178,8 +178,10 @@ SCRIPT
       { cat "$work/viewer.log"; fail "the viewer did not run on D3D12"; }
     "$penumbra" render --settings "$work/shot.json" --out "$work/viewer-vulkan.exr" >/dev/null 2>&1 ||
       fail "penumbra render --settings of the viewer's screenshot"
-    "$penumbra" compare "$work/viewer-vulkan.exr" "$work/shot.exr" --tolerance 1e-3 --max-bias-sigmas 4 \
-      >"$work/viewer-compare.log" 2>&1 ||
+    # As every case above, a path may part between the two compilers' float
+    # rounding: 0.2 % of the pixels may differ (with Sobol, one of 19200 by 0.0015).
+    "$penumbra" compare "$work/viewer-vulkan.exr" "$work/shot.exr" --tolerance 1e-3 --allowed-fraction 0.002 \
+      --max-bias-sigmas 4 >"$work/viewer-compare.log" 2>&1 ||
       { cat "$work/viewer-compare.log"; fail "the D3D12 viewer's screenshot differs from render --settings on Vulkan"; }
     pngtopnm "$work/shown.png" >"$work/shown.ppm" && pngtopnm "$work/menus.png" >"$work/menus.ppm" ||
       fail "the viewer's captures are not PNG files"

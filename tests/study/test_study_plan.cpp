@@ -46,9 +46,9 @@ TEST_CASE("study plan: labels name what differs from the defaults", "[study]") {
   CHECK(t.frameSettings(7).radianceClamp == 10.0f);
   t = {};
   t.settings.tracer.misHeuristic = render::MisHeuristic::Balance;
-  t.settings.tracer.sampler = render::Sampler::Sobol;
+  t.settings.tracer.sampler = render::Sampler::Random;  // Sobol is the default
   t.settings.tracer.maxDepth = 4;
-  CHECK(t.label() == "mis balance sobol depth=4");
+  CHECK(t.label() == "mis balance random depth=4");
 }
 
 TEST_CASE("study plan: Whitted takes no sampling options and no denoiser", "[study]") {

@@ -9,7 +9,7 @@
 //     "camera": { "position": [x,y,z], "forward": [..], "up": [..], "verticalFovDegrees": 39.3,
 //                 "apertureRadius": 0, "focusDistance": 1, "apertureBlades": 0 },
 //     "width": 512, "height": 512, "spp": 64, "sppPerFrame": 4,
-//     "integrator": "path", "strategy": "mis", "misHeuristic": "power", "sampler": "random",
+//     "integrator": "path", "strategy": "mis", "misHeuristic": "power", "sampler": "sobol",
 //     "maxDepth": 8, "russianRoulette": true, "rouletteStartDepth": 3,
 //     "radianceClamp": 0, "seed": 0,
 //     "exposure": 1, "toneMapping": "clamp", "allEffects": false,

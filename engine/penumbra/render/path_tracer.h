@@ -40,7 +40,7 @@ struct PathTracerSettings {
   Integrator integrator = Integrator::Path;
   SamplingStrategy strategy = SamplingStrategy::Mis;
   MisHeuristic misHeuristic = MisHeuristic::Power;
-  Sampler sampler = Sampler::Random;
+  Sampler sampler = Sampler::Sobol;  // docs/study/README.md: 1.2-2x the efficiency from 4 spp on
   uint32_t maxDepth = 8;            // bounces after the camera ray (Whitted: recursion depth)
   uint32_t rouletteStartDepth = 3;  // Russian roulette from this bounce on
   bool russianRoulette = true;
