@@ -10,7 +10,7 @@ set(_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
 # static, so a consumer's link needs the archives of their PRIVATE
 # dependencies too (penumbra_shaders, penumbra_scenes, the D3D12 backend).
 set(_exported penumbra_util penumbra_rhi penumbra_shaders penumbra_scenes penumbra_image penumbra_scene
-    penumbra_render penumbra_batch penumbra_study penumbra_engine penumbra_backends)
+    penumbra_gltf_decoders penumbra_render penumbra_batch penumbra_study penumbra_engine penumbra_backends)
 if(TARGET penumbra_backend_d3d12)
   list(APPEND _exported penumbra_backend_d3d12)
 endif()
@@ -27,7 +27,7 @@ install(EXPORT PenumbraTargets NAMESPACE penumbra:: DESTINATION ${_config_dir})
 # and the device's create info, not by name).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/penumbra DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h"
-  REGEX "/scene/(tinygltf|gltf_accessors|gltf_instancing|gltf_lights|gltf_materials|gltf_primitives|gltf_textures|json_reading)\\.h$" EXCLUDE
+  REGEX "/scene/(tinygltf|gltf_accessors|gltf_instancing|gltf_lights|gltf_materials|gltf_meshopt|gltf_primitives|gltf_textures|json_reading)\\.h$" EXCLUDE
   REGEX "/rhi/(shader_reflection|validation_objects|fault_injection)\\.h$" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/backends/backend_factory.h
   DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}/penumbra)

@@ -2,6 +2,9 @@
 // (tests/data/gltf/make_gltf.py writes them and their PNGs). Expected texels
 // are the values the generator writes; expected matrices follow the
 // KHR_texture_transform specification, evaluated here on their own.
+#include <webp/decode.h>
+#include <webp/encode.h>
+
 #include <algorithm>
 #include <array>
 #include <catch2/catch_approx.hpp>
@@ -620,4 +623,93 @@ TEST_CASE("a PNG ending in an empty IDAT header without its CRC is refused befor
                                0x00, 0x04, 0x08, 0x06, 0x00, 0x00, 0x00, 0x68, 0x00, 0x00, 0x00,
                                0x00, 0x00, 0x00, 0x00, 0x49, 0x44, 0x41, 0x54, 0x78, 0x60, 0x82};
   checkRefusedBeforeDecoding(png, sizeof(png), 2, "empty IDAT chunk");
+}
+
+namespace {
+
+// A lossless WebP of `rgba` (width x height), made by libwebp's encoder.
+std::string losslessWebp(const std::vector<uint8_t>& rgba, int width, int height) {
+  uint8_t* out = nullptr;
+  const size_t size = WebPEncodeLosslessRGBA(rgba.data(), width, height, width * 4, &out);
+  REQUIRE(size > 0);
+  std::string bytes(reinterpret_cast<const char*>(out), size);
+  WebPFree(out);
+  return bytes;
+}
+
+std::string requiringWebp(std::string gltfJson) {
+  const std::string asset = R"({"asset":{"version":"2.0"},)";
+  REQUIRE(gltfJson.rfind(asset, 0) == 0);
+  return asset +
+         R"("extensionsUsed":["EXT_texture_webp"],"extensionsRequired":["EXT_texture_webp"],)" +
+         gltfJson.substr(asset.size());
+}
+
+}  // namespace
+
+TEST_CASE("glTF EXT_texture_webp: the WebP image is read, before the PNG fallback", "[gltf]") {
+  test::TempFolder folder("gltf-webp");
+  folder.write("tri.bin", test::trianglePositions());
+  folder.write("checker.png", fileBytes(gltf("textured_quad_checker.png")));
+  // 3 x 2 texels, every channel different, alpha included (not 0: the
+  // encoder need not keep the colour of a transparent texel).
+  const std::vector<uint8_t> rgba = {255, 0,  0,  255, 0,  255, 0,  128, 0,   0,   255, 1,
+                                     10,  20, 30, 40,  50, 60,  70, 80,  200, 150, 100, 255};
+  folder.write("image.webp", losslessWebp(rgba, 3, 2));
+  auto check = [&](const scene::GltfImport& r) {
+    const auto& t = texture(r.scene, r.scene.materials.at(0).baseColorTexture);
+    REQUIRE(t.width == 3u);
+    REQUIRE(t.height == 2u);
+    CHECK(t.rgba8 == rgba);
+  };
+  // With a PNG fallback as `source`, and alone in a file that requires the extension.
+  check(scene::importGltf(folder.write(
+      "fallback.gltf",
+      test::triangleGltf("tri.bin", kTexturedMaterial,
+                         R"({"uri":"checker.png"},{"uri":"image.webp"})",
+                         R"({"source":0,"extensions":{"EXT_texture_webp":{"source":1}}})"))));
+  check(scene::importGltf(folder.write(
+      "required.gltf",
+      requiringWebp(test::triangleGltf("tri.bin", kTexturedMaterial, R"({"uri":"image.webp"})",
+                                       R"({"extensions":{"EXT_texture_webp":{"source":0}}})")))));
+  // In a .glb's buffer view.
+  const std::string webp = losslessWebp(rgba, 3, 2);
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"extensionsUsed":["EXT_texture_webp"],
+      "buffers":[{"byteLength":)" +
+      std::to_string(36 + webp.size()) + R"(}],
+      "bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":)" +
+      std::to_string(webp.size()) + R"(}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
+      "images":[{"bufferView":1,"mimeType":"image/webp"}],
+      "textures":[{"extensions":{"EXT_texture_webp":{"source":0}}}],
+      "materials":[)" +
+      std::string(kTexturedMaterial) + R"(],
+      "meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],
+      "nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})";
+  check(scene::importGltf(
+      folder.write("view.glb", test::glb(json, test::trianglePositions() + webp))));
+}
+
+TEST_CASE("glTF EXT_texture_webp: a broken or oversized WebP is refused naming the image",
+          "[gltf]") {
+  test::TempFolder folder("gltf-webp-bad");
+  folder.write("tri.bin", test::trianglePositions());
+  const std::string webp = losslessWebp(std::vector<uint8_t>(64 * 32 * 4, 77), 64, 32);
+  folder.write("cut.webp", webp.substr(0, webp.size() / 2));
+  folder.write("wide.webp", webp);
+  auto file = [&](const char* image) {
+    return folder.write(
+        "image.gltf", requiringWebp(test::triangleGltf(
+                          "tri.bin", kTexturedMaterial, std::string(R"({"uri":")") + image + "\"}",
+                          R"({"extensions":{"EXT_texture_webp":{"source":0}}})")));
+  };
+  CHECK_THAT(test::gltfRefusal(file("cut.webp")),
+             ContainsSubstring("image 0 (file 'cut.webp') cannot be decoded"));
+  scene::InputLimits limits;
+  limits.maxImageSide = 63;
+  CHECK_THAT(test::gltfRefusal(file("wide.webp"), limits),
+             ContainsSubstring("image 0 (file 'wide.webp') cannot be decoded (its header says 64 x "
+                               "32 pixels, more than the limit 63 per side"));
+  REQUIRE(scene::importGltf(file("wide.webp")).scene.textures.at(0).width == 64u);
 }

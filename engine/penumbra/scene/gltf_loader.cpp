@@ -19,6 +19,7 @@
 #include "penumbra/scene/gltf_instancing.h"
 #include "penumbra/scene/gltf_lights.h"
 #include "penumbra/scene/gltf_materials.h"
+#include "penumbra/scene/gltf_meshopt.h"
 #include "penumbra/scene/gltf_primitives.h"
 #include "penumbra/scene/gltf_textures.h"
 #include "penumbra/scene/tinygltf.h"
@@ -454,6 +455,7 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
   const bool binary = lower(fs::path(path).extension().string()) == ".glb";
   requireJsonDepth(jsonText(data, binary), limits, at);
   requireSupportedExtensions(jsonText(data, binary), at);
+  if (gltf::meshoptSupported()) gltf::emptyMeshoptFallbacks(data, binary, at);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -475,6 +477,7 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
     const std::string& reason = !err.empty() ? err : warn;
     throw Error(fmt::format("{}: {}", at, oneLine(reason.empty() ? "cannot be read" : reason)));
   }
+  gltf::decodeMeshoptViews(model, limits, at);
   GltfImport result = Importer(model, decoding, path, limits).run();
   if (!warn.empty())
     result.warnings.insert(result.warnings.begin(), fmt::format("{}: {}", at, oneLine(warn)));

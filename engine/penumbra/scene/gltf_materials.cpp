@@ -85,7 +85,14 @@ const std::vector<std::string_view>& supportedExtensions() {
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
       // gltf_accessors.h decodes every integer type
-      "KHR_mesh_quantization"};
+      "KHR_mesh_quantization",
+#ifdef PENUMBRA_HAVE_MESHOPT
+      "EXT_meshopt_compression",  // gltf_meshopt.h
+#endif
+#ifdef PENUMBRA_HAVE_WEBP
+      "EXT_texture_webp",  // gltf_textures.h
+#endif
+  };
   return names;
 }
 

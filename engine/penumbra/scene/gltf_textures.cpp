@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 #include <stb_image.h>
+#ifdef PENUMBRA_HAVE_WEBP
+#include <webp/decode.h>
+#endif
 
 #include <algorithm>
 #include <climits>
@@ -113,12 +116,43 @@ std::optional<std::string> pngProblem(const unsigned char* bytes, size_t size) {
   return std::nullopt;
 }
 
-// Decodes an encoded image (PNG, JPEG, ...) into `image` with the file's
-// channel count and bit depth, once its header's size passes the limits;
-// returns why it failed, or nothing.
+bool isWebp(const unsigned char* bytes, size_t size) {
+  return size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0;
+}
+
+// A WebP image (EXT_texture_webp) as 8-bit RGBA, once its header's size passes
+// the limits. libwebp decodes lossy and lossless files, with or without alpha.
+std::optional<std::string> decodeWebpInto(tinygltf::Image& image, const unsigned char* bytes,
+                                          size_t size, ImageDecoding& decoding) {
+#ifdef PENUMBRA_HAVE_WEBP
+  int width = 0, height = 0;
+  if (!WebPGetInfo(bytes, size, &width, &height)) return std::string("not a valid WebP image");
+  if (auto refused =
+          refusedSize(uint64_t(std::max(width, 0)), uint64_t(std::max(height, 0)), decoding))
+    return refused;
+  uint8_t* pixels = WebPDecodeRGBA(bytes, size, &width, &height);
+  if (!pixels) return std::string("the WebP image does not decode");
+  image.width = width;
+  image.height = height;
+  image.component = 4;
+  image.bits = 8;
+  image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image.image.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
+  WebPFree(pixels);
+  return std::nullopt;
+#else
+  (void)image, (void)bytes, (void)size, (void)decoding;
+  return std::string("a WebP image, which this build cannot decode (no libwebp)");
+#endif
+}
+
+// Decodes an encoded image (PNG, JPEG, WebP, ...) into `image` with the
+// file's channel count and bit depth, once its header's size passes the
+// limits; returns why it failed, or nothing.
 std::optional<std::string> decodeInto(tinygltf::Image& image, const unsigned char* bytes,
                                       size_t size, ImageDecoding& decoding) {
   if (size > size_t(INT_MAX)) return "larger than 2 GiB";
+  if (isWebp(bytes, size)) return decodeWebpInto(image, bytes, size, decoding);
   const int length = int(size);
   int width = 0, height = 0, components = 0, bits = 8;
   if (auto problem = pngProblem(bytes, size)) return problem;
@@ -300,7 +334,7 @@ uint32_t TextureImporter::textureRef(int index, int texCoord, const tinygltf::Va
   const std::string textureName =
       fmt::format("{} {}", at_, named("texture", size_t(index), src.name));
   TextureRef ref;
-  ref.texture = texture(src.source, srgb, textureName);
+  ref.texture = texture(textureSource(src, textureName), srgb, textureName);
   if (src.sampler >= 0) ref.sampler = sampler(src.sampler, textureName);
   if (transform) {
     // The extension's texCoord overrides the texture info's.
@@ -321,6 +355,24 @@ uint32_t TextureImporter::textureRef(int index, int texCoord, const tinygltf::Va
   ref.texCoord = texCoordSet(texCoord, where);
   scene_.textureRefs.push_back(ref);
   return uint32_t(scene_.textureRefs.size() - 1);
+}
+
+int TextureImporter::textureSource(const tinygltf::Texture& src, const std::string& where) const {
+#ifdef PENUMBRA_HAVE_WEBP
+  // EXT_texture_webp's image is preferred where it is read; `source`, if
+  // given, is the fallback for loaders without it.
+  const auto ext = src.extensions.find("EXT_texture_webp");
+  if (ext != src.extensions.end()) {
+    const tinygltf::Value& source = ext->second.Get("source");
+    if (!source.IsNumber() || source.GetNumberAsDouble() < 0.0 ||
+        source.GetNumberAsDouble() > double(INT_MAX))
+      throw Error(fmt::format("{}: EXT_texture_webp has no valid source", where));
+    return int(source.GetNumberAsDouble());
+  }
+#else
+  (void)where;
+#endif
+  return src.source;
 }
 
 uint32_t TextureImporter::texCoordSet(int texCoord, const std::string& where) {

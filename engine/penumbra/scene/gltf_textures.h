@@ -22,6 +22,7 @@ class Model;
 struct Image;
 struct Sampler;
 struct Material;
+struct Texture;
 class Value;
 }  // namespace tinygltf
 
@@ -91,6 +92,8 @@ class TextureImporter {
   uint32_t texture(int image, bool srgb, const std::string& where);
   TextureSampler sampler(int index, const std::string& where);
   uint32_t texCoordSet(int texCoord, const std::string& where);
+  // The image a texture reads: EXT_texture_webp's where this build decodes WebP, else `source`.
+  int textureSource(const tinygltf::Texture& src, const std::string& where) const;
   std::string describeImage(int index) const;
   // Image `image` (stored in a buffer view) decoded into `out`, its view
   // checked against its buffer first.
