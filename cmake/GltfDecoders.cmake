@@ -1,5 +1,6 @@
 # The decoders of glTF's compressed data, Debian's libwebp-dev
-# (EXT_texture_webp) and libmeshoptimizer-dev (EXT_meshopt_compression),
+# (EXT_texture_webp), libmeshoptimizer-dev (EXT_meshopt_compression) and
+# libdraco-dev (KHR_draco_mesh_compression),
 # as penumbra_gltf_decoders: an interface target carrying the libraries and
 # the PENUMBRA_HAVE_* definitions the loader's sources test. Required on
 # Linux (scripts/setup.sh installs them); the mingw cross build has neither,
@@ -17,6 +18,9 @@ if(NOT (CMAKE_CROSSCOMPILING AND MINGW))
     set(_webp PkgConfig::WEBP)
   endif()
   find_package(meshoptimizer CONFIG REQUIRED)
-  target_link_libraries(penumbra_gltf_decoders INTERFACE ${_webp} meshoptimizer::meshoptimizer)
-  target_compile_definitions(penumbra_gltf_decoders INTERFACE PENUMBRA_HAVE_WEBP PENUMBRA_HAVE_MESHOPT)
+  find_package(draco CONFIG REQUIRED)
+  target_link_libraries(penumbra_gltf_decoders INTERFACE ${_webp} meshoptimizer::meshoptimizer
+    draco::draco)
+  target_compile_definitions(penumbra_gltf_decoders INTERFACE PENUMBRA_HAVE_WEBP PENUMBRA_HAVE_MESHOPT
+    PENUMBRA_HAVE_DRACO)
 endif()

@@ -27,7 +27,7 @@ install(EXPORT PenumbraTargets NAMESPACE penumbra:: DESTINATION ${_config_dir})
 # and the device's create info, not by name).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/penumbra DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h"
-  REGEX "/scene/(tinygltf|gltf_accessors|gltf_instancing|gltf_lights|gltf_materials|gltf_meshopt|gltf_primitives|gltf_textures|json_reading)\\.h$" EXCLUDE
+  REGEX "/scene/(tinygltf|gltf_accessors|gltf_instancing|gltf_lights|gltf_materials|gltf_meshopt|gltf_draco|gltf_container|gltf_primitives|gltf_textures|json_reading)\\.h$" EXCLUDE
   REGEX "/rhi/(shader_reflection|validation_objects|fault_injection)\\.h$" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/backends/backend_factory.h
   DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}/penumbra)

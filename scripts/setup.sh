@@ -42,8 +42,9 @@ RENDER_PACKAGES=(
   libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-dev libstb-dev
   libtinyexr-dev libfmt-dev libxxhash-dev
-  # glTF's compressed data: EXT_texture_webp, EXT_meshopt_compression.
-  libwebp-dev libmeshoptimizer-dev
+  # glTF's compressed data: EXT_texture_webp, EXT_meshopt_compression,
+  # KHR_draco_mesh_compression.
+  libwebp-dev libmeshoptimizer-dev libdraco-dev
 )
 # The rest: the viewer, the tests, the sanitizer build and the Windows cross
 # build.

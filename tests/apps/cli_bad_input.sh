@@ -63,7 +63,7 @@ mkdir -p "$work/folder.gltf"
 expect_error "a folder named like a glTF file" "is a folder" render --scene "$work/folder.gltf" --out "$work/out.png"
 expect_error "look-at at the camera" "is the camera's position" render --camera-position 1,2,3 --look-at 1,2,3 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "a camera position of two numbers" "--camera-position" render --camera-position 1,2 --size 8x8 --spp 1 --out "$work/out.png"
-expect_error "a glTF file needing Draco and KTX2" "requires extension KHR_draco_mesh_compression" render --scene "$gltf_data/extension_required_compressed.gltf" --out "$work/out.png"
+expect_error "a glTF file needing KTX2" "requires extension KHR_texture_basisu" render --scene "$gltf_data/extension_required_compressed.gltf" --out "$work/out.png"
 expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
 expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"
 # Out of memory says what the scene needs, in one line: a 4000 x 4000

@@ -437,11 +437,11 @@ TEST_CASE("glTF without cameras frames the scene", "[gltf]") {
 TEST_CASE("glTF extensions: required unsupported fails, optional warns", "[gltf]") {
   REQUIRE_THROWS_WITH(scene::importGltf(gltf("extension_required.gltf")),
                       ContainsSubstring("extension_required.gltf") &&
-                          ContainsSubstring("requires extension KHR_draco_mesh_compression"));
-  // Refused before anything is read, in the same line, where the compressed
-  // data would otherwise fail on what it lacks (a buffer view, a PNG).
+                          ContainsSubstring("requires extension KHR_texture_basisu"));
+  // Refused before anything is read, in the same line, where the texture
+  // would otherwise fail on what it lacks (a PNG or JPEG source).
   REQUIRE_THROWS_WITH(scene::importGltf(gltf("extension_required_compressed.gltf")),
-                      ContainsSubstring("requires extension KHR_draco_mesh_compression, which is "
+                      ContainsSubstring("requires extension KHR_texture_basisu, which is "
                                         "not supported (supported: "));
   const auto r = scene::importGltf(gltf("extension_optional.gltf"));
   REQUIRE(r.warnings.size() == 1u);

@@ -16,6 +16,8 @@
 #include <string_view>
 
 #include "penumbra/scene/camera_placement.h"
+#include "penumbra/scene/gltf_container.h"
+#include "penumbra/scene/gltf_draco.h"
 #include "penumbra/scene/gltf_instancing.h"
 #include "penumbra/scene/gltf_lights.h"
 #include "penumbra/scene/gltf_materials.h"
@@ -455,7 +457,20 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
   const bool binary = lower(fs::path(path).extension().string()) == ".glb";
   requireJsonDepth(jsonText(data, binary), limits, at);
   requireSupportedExtensions(jsonText(data, binary), at);
-  if (gltf::meshoptSupported()) gltf::emptyMeshoptFallbacks(data, binary, at);
+  // Files tinygltf would refuse though valid with the extensions this build reads.
+  const std::string_view json = jsonText(data, binary);
+  const bool meshopt =
+      gltf::meshoptSupported() && json.find("EXT_meshopt_compression") != json.npos;
+  const bool draco = gltf::dracoSupported() && json.find("KHR_draco_mesh_compression") != json.npos;
+  if (meshopt || draco)
+    gltf::editJson(
+        data, binary,
+        [&](nlohmann::json& doc) {
+          const bool emptied = meshopt && gltf::emptyMeshoptFallbacks(doc, binary);
+          const bool pointed = draco && gltf::giveDracoIndicesAView(doc);
+          return emptied || pointed;
+        },
+        at);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -478,6 +493,7 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
     throw Error(fmt::format("{}: {}", at, oneLine(reason.empty() ? "cannot be read" : reason)));
   }
   gltf::decodeMeshoptViews(model, limits, at);
+  gltf::decodeDracoPrimitives(model, limits, at);
   GltfImport result = Importer(model, decoding, path, limits).run();
   if (!warn.empty())
     result.warnings.insert(result.warnings.begin(), fmt::format("{}: {}", at, oneLine(warn)));

@@ -92,6 +92,9 @@ const std::vector<std::string_view>& supportedExtensions() {
 #ifdef PENUMBRA_HAVE_WEBP
       "EXT_texture_webp",  // gltf_textures.h
 #endif
+#ifdef PENUMBRA_HAVE_DRACO
+      "KHR_draco_mesh_compression",  // gltf_draco.h
+#endif
   };
   return names;
 }

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
+#include "penumbra/scene/gltf_container.h"
 #include "penumbra/scene/tinygltf.h"
 #include "penumbra/util/error.h"
 
@@ -16,24 +17,6 @@ namespace penumbra::scene::gltf {
 namespace {
 
 constexpr const char* kExtension = "EXT_meshopt_compression";
-
-bool usesExtension(const nlohmann::json& doc) {
-  const auto used = doc.find("extensionsUsed");
-  if (used == doc.end() || !used->is_array()) return false;
-  for (const auto& name : *used)
-    if (name.is_string() && name.get<std::string>() == kExtension) return true;
-  return false;
-}
-
-uint32_t readU32(const unsigned char* p) {
-  uint32_t v;
-  std::memcpy(&v, p, 4);  // little-endian, as the targets
-  return v;
-}
-
-void appendU32(std::vector<unsigned char>& out, uint32_t v) {
-  for (int i = 0; i < 4; ++i) out.push_back((unsigned char)((v >> (8 * i)) & 0xff));
-}
 
 // The view's extension object, read with the spec's defaults.
 struct CompressedView {
@@ -79,21 +62,10 @@ bool meshoptSupported() {
 #endif
 }
 
-void emptyMeshoptFallbacks(std::vector<unsigned char>& data, bool binary, const std::string& at) {
-  size_t jsonStart = 0, jsonLength = data.size();
-  if (binary) {
-    // The loader checked the header: "glTF", version, length, then the JSON chunk.
-    if (data.size() < 20) return;
-    jsonStart = 20;
-    jsonLength = readU32(data.data() + 12);
-    if (jsonLength > data.size() - 20) return;  // tinygltf reports it
-  }
-  nlohmann::json doc =
-      nlohmann::json::parse(data.begin() + std::ptrdiff_t(jsonStart),
-                            data.begin() + std::ptrdiff_t(jsonStart + jsonLength), nullptr, false);
-  if (doc.is_discarded() || !doc.is_object() || !usesExtension(doc)) return;
+bool emptyMeshoptFallbacks(nlohmann::json& doc, bool binary) {
+  if (!usesExtension(doc, kExtension)) return false;
   auto buffers = doc.find("buffers");
-  if (buffers == doc.end() || !buffers->is_array()) return;
+  if (buffers == doc.end() || !buffers->is_array()) return false;
   bool changed = false;
   for (auto& buffer : *buffers) {
     if (!buffer.is_object() || buffer.contains("uri")) continue;
@@ -106,24 +78,7 @@ void emptyMeshoptFallbacks(std::vector<unsigned char>& data, bool binary, const 
     buffer["byteLength"] = 1;
     changed = true;
   }
-  if (!changed) return;
-  std::string json = doc.dump();
-  if (!binary) {
-    data.assign(json.begin(), json.end());
-    return;
-  }
-  while (json.size() % 4 != 0) json += ' ';
-  const size_t rest = jsonStart + jsonLength;  // the chunks after the JSON
-  std::vector<unsigned char> out(data.begin(), data.begin() + 12);
-  appendU32(out, uint32_t(json.size()));
-  appendU32(out, 0x4E4F534Au);  // "JSON"
-  out.insert(out.end(), json.begin(), json.end());
-  out.insert(out.end(), data.begin() + std::ptrdiff_t(rest), data.end());
-  if (out.size() > UINT32_MAX)
-    throw Error(fmt::format("{}: larger than 4 GiB once its fallback buffers are emptied", at));
-  const uint32_t total = uint32_t(out.size());
-  std::memcpy(out.data() + 8, &total, 4);
-  data = std::move(out);
+  return changed;
 }
 
 void decodeMeshoptViews(tinygltf::Model& model, const InputLimits& limits, const std::string& at) {

@@ -5,8 +5,8 @@
 // write them. Decoded by Debian's libmeshoptimizer; a build without it
 // (PENUMBRA_HAVE_MESHOPT undefined: the mingw cross build) refuses files that
 // require the extension and reads an optional one's uncompressed fallback.
+#include <nlohmann/json_fwd.hpp>
 #include <string>
-#include <vector>
 
 #include "penumbra/scene/input_limits.h"
 
@@ -21,9 +21,9 @@ bool meshoptSupported();
 
 // A file that uses the extension may give buffers without data of their own
 // ("fallback": only loaders without the extension read them), which tinygltf
-// refuses. Makes each such buffer an empty data URI in the JSON (rewriting a
-// .glb's container around it); files without the extension are unchanged.
-void emptyMeshoptFallbacks(std::vector<unsigned char>& data, bool binary, const std::string& at);
+// refuses. Makes each such buffer a one-byte data URI in the file's JSON
+// (gltf_container.h's editJson); returns whether anything changed.
+bool emptyMeshoptFallbacks(nlohmann::json& doc, bool binary);
 
 // Decodes every compressed buffer view into a buffer of its own appended to
 // the model, and points the view at it, so accessors read plain bytes. The
