@@ -47,6 +47,7 @@ struct RenderOptions {
   EnvironmentOptions environment;
   std::string vary;
   std::string set;
+  std::string variant;
   bool allowExternalFiles = false;
   bool printEffects = false;
   std::string settingsFile;
@@ -138,6 +139,7 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   if (given("--scene")) job.scene = o.scene.scene;
   if (given("--vary")) job.vary = o.vary;
   if (given("--set")) job.set = o.set;
+  if (given("--variant")) job.variant = o.variant;
   if (given("--size")) std::tie(job.width, job.height) = parseImageSize(o.scene.size);
   if (given("--spp")) job.spp = o.spp;
   o.settings.apply(cmd, job.settings);
@@ -170,6 +172,7 @@ scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::R
     if (cmd.count("--aperture-blades") > 0) c->apertureBlades = o.apertureBlades;
     scene::validateCamera(*c);
   }
+  if (!job.variant.empty()) scene::selectMaterialVariant(scene, job.variant);
   if (!job.vary.empty() || !job.set.empty()) scene::changeMaterialRow(scene, job.vary, job.set);
   // The viewer's Material-menu edits, on top of the row as the viewer had it.
   render::applyMaterialOverrides(scene, job.materials, o.settingsFile);
@@ -392,6 +395,9 @@ Command addRenderCommand(CLI::App& app) {
          "Aperture blades: 0 round, 3..32 a polygon (the shape of out-of-focus highlights)")
       ->check(CLI::Range(0u, 32u));
   addEnvironmentOptions(*cmd, o->environment);
+  cmd->add_option("--variant", o->variant,
+                  "Draw the glTF file's material variant of this name, or index (0 is the first; "
+                  "KHR_materials_variants; default: the file's own materials)");
   cmd->add_option("--focus-distance", o->focusDistance,
                   "Distance in metres along the view to the plane in focus (with --aperture)")
       ->check(CLI::Range(1e-6f, 1e9f));

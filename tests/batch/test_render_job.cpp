@@ -69,6 +69,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   job.scene = "material-test";
   job.vary = "sheen";
   job.set = "metallic=1";
+  job.variant = "midnight";
   scene::Camera camera;
   camera.position = {0.25, -1.5, 3.75};
   camera.forward = {0.0f, -0.6f, 0.8f};
@@ -87,7 +88,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   t.integrator = render::Integrator::Whitted;
   t.strategy = render::SamplingStrategy::Cosine;
   t.misHeuristic = render::MisHeuristic::Balance;
-  t.sampler = render::Sampler::Sobol;
+  t.sampler = render::Sampler::Random;  // not the default
   t.maxDepth = 13;
   t.russianRoulette = false;
   t.rouletteStartDepth = 5;
@@ -105,6 +106,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   CHECK(back.scene == job.scene);
   CHECK(back.vary == job.vary);
   CHECK(back.set == job.set);
+  CHECK(back.variant == job.variant);
   REQUIRE(back.camera.has_value());
   CHECK(back.camera->position == camera.position);
   CHECK(back.camera->forward == camera.forward);

@@ -652,3 +652,58 @@ TEST_CASE("glTF accessor counts, decoded bytes, triangles, instances and node vi
     CHECK_THAT(test::gltfRefusal(gltf(c.file), limits), ContainsSubstring(c.message));
   }
 }
+
+TEST_CASE("glTF KHR_materials_variants: each variant gives its primitives their materials",
+          "[gltf]") {
+  test::TempFolder folder("gltf-variants");
+  folder.write("tri.bin", test::trianglePositions());
+  // Two primitives and three materials; the first primitive is 'beige' by
+  // default, 'red' under variant 0 and 'blue' under variant 1; the second
+  // is 'beige' except under variant 1 ('red').
+  auto file = [&](const std::string& secondMapping) {
+    return folder.write("variants.gltf", R"({"asset":{"version":"2.0"},
+      "extensionsUsed":["KHR_materials_variants"],
+      "extensions":{"KHR_materials_variants":{"variants":[{"name":"sunset"},{"name":"ocean"}]}},
+      "buffers":[{"uri":"tri.bin","byteLength":36}],"bufferViews":[{"buffer":0,"byteLength":36}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],
+      "materials":[{"name":"beige"},{"name":"red"},{"name":"blue"}],
+      "meshes":[{"primitives":[
+        {"attributes":{"POSITION":0},"material":0,"extensions":{"KHR_materials_variants":{"mappings":[
+          {"material":1,"variants":[0]},{"material":2,"variants":[1]}]}}},
+        {"attributes":{"POSITION":0},"material":0,"extensions":{"KHR_materials_variants":{"mappings":[
+          )" + secondMapping + R"(]}}}]}],
+      "nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})");
+  };
+  const auto loaded = scene::importGltf(file(R"({"material":1,"variants":[1]})"));
+  CHECK(loaded.warnings.empty());
+  const scene::Scene& s = loaded.scene;
+  REQUIRE(s.meshes.size() == 2u);
+  REQUIRE(s.materialVariants.size() == 2u);
+  CHECK(s.materialVariants[0].name == "sunset");
+  CHECK(s.materialVariants[1].name == "ocean");
+  auto materials = [](const scene::Scene& v) {
+    return std::vector<std::string>{v.materials[v.meshes[0].material].name,
+                                    v.materials[v.meshes[1].material].name};
+  };
+  CHECK(materials(s) == std::vector<std::string>{"beige", "beige"});
+  for (const auto& [name, expected] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"sunset", {"red", "beige"}}, {"ocean", {"blue", "red"}}, {"1", {"blue", "red"}}}) {
+    INFO("variant " << name);
+    scene::Scene v = s;
+    scene::selectMaterialVariant(v, name);
+    CHECK(materials(v) == expected);
+    scene::validate(v);
+  }
+  scene::Scene v = s;
+  CHECK_THROWS_WITH(scene::selectMaterialVariant(v, "dusk"),
+                    ContainsSubstring("no material variant 'dusk' (variants by index and name: 0 "
+                                      "'sunset', 1 'ocean')"));
+  CHECK_THROWS_WITH(scene::selectMaterialVariant(v, "2"),
+                    ContainsSubstring("no material variant '2'"));
+  // A mapping to a variant or material the file does not have.
+  CHECK_THAT(test::gltfRefusal(file(R"({"material":1,"variants":[2]})")),
+             ContainsSubstring("mesh 0 primitive 1: KHR_materials_variants variant is not one of "
+                               "the 2 there are"));
+  CHECK_THAT(test::gltfRefusal(file(R"({"material":3,"variants":[0]})")),
+             ContainsSubstring("KHR_materials_variants material is not one of the 3 there are"));
+}

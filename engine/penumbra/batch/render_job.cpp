@@ -331,6 +331,7 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["scene"] = job.scene;
   doc["vary"] = job.vary;
   doc["set"] = job.set;
+  if (!job.variant.empty()) doc["variant"] = job.variant;
   if (job.camera) {
     doc["camera"] = {{"position", toJson(job.camera->position)},
                      {"forward", toJson(job.camera->forward)},
@@ -387,6 +388,7 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source,
   r.read("scene", job.scene);
   r.read("vary", job.vary);
   r.read("set", job.set);
+  r.read("variant", job.variant);
   if (doc.contains("camera")) {
     const json& c = doc["camera"];
     if (!c.is_object()) r.fail("camera", "must be an object");

@@ -76,6 +76,8 @@ scene::Environment chooseEnvironment(const scene::Environment& sceneEnvironment,
 struct RenderJob {
   std::string scene = "cornell-box";    // built-in name or scene file path
   std::string vary, set;                // material-test row (scene::changeMaterialRow)
+  std::string
+      variant;  // material variant by name or index (scene::selectMaterialVariant); empty: none
   std::optional<scene::Camera> camera;  // absent: the scene's camera
   uint32_t width = 512, height = 512;
   uint32_t spp = 64;

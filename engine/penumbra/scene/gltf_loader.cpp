@@ -102,6 +102,7 @@ class Importer {
     out_.scene.name = fs::path(file_).stem().string();
     checkExtensions();
     convertMaterials();
+    readVariants();
     textures_.warnUnusedBrokenImages();
     traverse(sceneRoots());
     if (auto line = gltf::degenerateTrianglesWarning(budget_, at()); !line.empty())
@@ -156,6 +157,47 @@ class Importer {
             fmt::format("{}: material '{}' reads TEXCOORD_{}, which the primitive does not have; "
                         "its textures are sampled at (0, 0)",
                         where, m.name, set));
+  }
+
+  // KHR_materials_variants: the file's variant names, in order.
+  void readVariants() {
+    const auto ext = model_.extensions.find("KHR_materials_variants");
+    if (ext == model_.extensions.end()) return;
+    const tinygltf::Value& variants = ext->second.Get("variants");
+    if (!variants.IsArray())
+      throw Error(fmt::format("{}: KHR_materials_variants has no variants array", at()));
+    for (size_t i = 0; i < variants.ArrayLen(); ++i) {
+      const tinygltf::Value& name = variants.Get(int(i)).Get("name");
+      if (!name.IsString())
+        throw Error(fmt::format("{}: KHR_materials_variants variant {} has no name", at(), i));
+      out_.scene.materialVariants.push_back({name.Get<std::string>(), {}});
+    }
+  }
+
+  // The primitive's materials under each variant that maps it.
+  void addVariantMappings(const tinygltf::Primitive& prim, uint32_t mesh,
+                          const std::string& where) {
+    const auto ext = prim.extensions.find("KHR_materials_variants");
+    if (ext == prim.extensions.end()) return;
+    const tinygltf::Value& mappings = ext->second.Get("mappings");
+    auto index = [&](const tinygltf::Value& v, size_t count, const char* what) {
+      if (!v.IsNumber() || !(v.GetNumberAsDouble() >= 0.0) ||
+          !(v.GetNumberAsDouble() < double(count)) ||
+          std::floor(v.GetNumberAsDouble()) != v.GetNumberAsDouble())
+        throw Error(fmt::format("{}: KHR_materials_variants {} is not one of the {} there are",
+                                where, what, count));
+      return uint32_t(v.GetNumberAsDouble());
+    };
+    for (size_t m = 0; mappings.IsArray() && m < mappings.ArrayLen(); ++m) {
+      const tinygltf::Value& mapping = mappings.Get(int(m));
+      const uint32_t material = index(mapping.Get("material"), model_.materials.size(), "material");
+      const tinygltf::Value& variants = mapping.Get("variants");
+      for (size_t v = 0; variants.IsArray() && v < variants.ArrayLen(); ++v)
+        out_.scene
+            .materialVariants[index(variants.Get(int(v)), out_.scene.materialVariants.size(),
+                                    "variant")]
+            .meshMaterials.push_back({mesh, material});
+    }
   }
 
   uint32_t defaultMaterialIndex() {
@@ -214,6 +256,7 @@ class Importer {
       warnMissingTexCoords(*mesh, name);
       mesh->name =
           fmt::format("{}/{}", src.name.empty() ? fmt::format("mesh{}", index) : src.name, p);
+      addVariantMappings(prim, uint32_t(out_.scene.meshes.size()), name);
       result.push_back(uint32_t(out_.scene.meshes.size()));
       out_.scene.meshes.push_back(std::move(*mesh));
     }

@@ -82,6 +82,7 @@ const std::vector<std::string_view>& supportedExtensions() {
       "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
       "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
       "KHR_materials_sheen", "KHR_texture_transform",
+      "KHR_materials_variants",   // Scene::materialVariants, --variant
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
       // gltf_accessors.h decodes every integer type

@@ -248,6 +248,12 @@ void validate(const Scene& scene) {
   for (const auto& inst : scene.instances)
     if (inst.mesh >= scene.meshes.size())
       fail(fmt::format("an instance refers to mesh {} of {}", inst.mesh, scene.meshes.size()));
+  for (const auto& variant : scene.materialVariants)
+    for (const auto& [mesh, material] : variant.meshMaterials)
+      if (mesh >= scene.meshes.size() || material >= scene.materials.size())
+        fail(fmt::format("material variant '{}' gives mesh {} of {} material {} of {}",
+                         variant.name, mesh, scene.meshes.size(), material,
+                         scene.materials.size()));
   const auto& c = scene.camera;
   if (!(c.verticalFovDegrees > 0.0f && c.verticalFovDegrees < 180.0f))
     fail(fmt::format("camera vertical field of view {} is not in (0, 180)", c.verticalFovDegrees));
@@ -257,6 +263,28 @@ void validate(const Scene& scene) {
     fail("camera forward and up must be non-zero, finite and not parallel");
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(c.position[i])) fail("camera position is not finite");
+}
+
+void selectMaterialVariant(Scene& scene, const std::string& name) {
+  const MaterialVariant* chosen = nullptr;
+  for (const auto& v : scene.materialVariants)
+    if (v.name == name) chosen = &v;
+  size_t index = 0;
+  const auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), index);
+  if (!chosen && ec == std::errc() && end == name.data() + name.size() && !name.empty() &&
+      index < scene.materialVariants.size())
+    chosen = &scene.materialVariants[index];
+  if (!chosen) {
+    std::string names;
+    for (size_t i = 0; i < scene.materialVariants.size(); ++i)
+      names +=
+          fmt::format("{}{} '{}'", names.empty() ? "" : ", ", i, scene.materialVariants[i].name);
+    throw Error(fmt::format("scene '{}': no material variant '{}' ({})", scene.name, name,
+                            names.empty() ? "the scene has no material variants"
+                                          : "variants by index and name: " + names));
+  }
+  for (const auto& [mesh, material] : chosen->meshMaterials)
+    scene.meshes.at(mesh).material = material;
 }
 
 void selectCamera(Scene& scene, const std::string& name) {

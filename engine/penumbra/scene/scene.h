@@ -197,6 +197,13 @@ struct NamedCamera {
   Camera camera;
 };
 
+// A named choice of materials (glTF KHR_materials_variants): under it each
+// listed mesh is drawn with the listed material instead of its own.
+struct MaterialVariant {
+  std::string name;
+  std::vector<std::pair<uint32_t, uint32_t>> meshMaterials;  // (mesh, material)
+};
+
 struct Scene {
   std::string name;
   std::vector<Material> materials;
@@ -210,6 +217,7 @@ struct Scene {
   glm::vec3 ambient{0.0f};           // Whitted's ambient term
   Camera camera;                     // the view rendered
   std::vector<NamedCamera> cameras;  // alternatives for selectCamera
+  std::vector<MaterialVariant> materialVariants;  // alternatives for selectMaterialVariant
   std::optional<MaterialRow> materialRow;
   uint64_t triangleCount() const;
   // The bytes of the meshes' vertex, attribute and index arrays as loaded.
@@ -227,6 +235,11 @@ struct Scene {
 // order) when `name` is a number; throws penumbra::Error listing the cameras
 // by index and name.
 void selectCamera(Scene& scene, const std::string& name);
+
+// Gives each mesh the variant's material (by name, or by index when `name` is
+// a number that names no variant); meshes the variant does not list keep
+// theirs. Throws penumbra::Error listing the variants by index and name.
+void selectMaterialVariant(Scene& scene, const std::string& name);
 
 // Checks indices, materials, texture references and instances refer to
 // things that exist, that positions, texture coordinates and texture
