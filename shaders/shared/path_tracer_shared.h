@@ -198,9 +198,12 @@ struct InstanceData {
 // Disney parameters (docs/materials.md) and the Phong parameters of Whitted.
 struct MaterialData {
   float3 baseColor;  // Phong: kd
-  float unused0;
+  // The KHR_materials_* textures (TextureRefData indices or PT_NO_TEXTURE;
+  // scene::Material says which channel scales what) fill the padding after
+  // the float3s and in the uint rows, so the struct keeps its 176 bytes.
+  uint clearcoatTexture;
   float3 emission;  // radiance, emitted from the front (counter-clockwise) face
-  float unused1;
+  uint clearcoatRoughnessTexture;
   float metallic;
   float roughness;
   float anisotropic;
@@ -219,8 +222,8 @@ struct MaterialData {
   float transparency;  // Phong: refraction
   uint model;          // MATERIAL_MODEL_*
   uint flags;          // MATERIAL_FLAG_* bits
-  uint unused2;
-  uint unused3;
+  uint transmissionTexture;
+  uint sheenColorTexture;
   // TextureRefData indices, PT_NO_TEXTURE where there is none.
   uint baseColorTexture;
   uint metallicRoughnessTexture;
@@ -228,8 +231,8 @@ struct MaterialData {
   uint emissionTexture;
   uint occlusionTexture;
   uint alphaMode;  // MATERIAL_ALPHA_*
-  uint unused4;
-  uint unused5;
+  uint specularTexture;
+  uint specularColorTexture;
   float normalScale;
   float occlusionStrength;
   float alpha;        // base-colour alpha (the texture's alpha multiplies it)

@@ -18,6 +18,26 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
   return sampleTextureLod0(ref.textureIndex, ref.samplerIndex, textureCoordinates(ref, uv));
 }
 
+// The KHR_materials_* textures, as gltf_materials.cpp maps their factors
+// (docs/materials.md): clearcoat by red; the coat's roughness r by green,
+// where clearcoatGloss g stands for r^2 = lerp(0.1, 0.001, g); specTrans by
+// the transmission's red; sheen (the sheen colour's largest channel) by the
+// texture's largest channel; specular (F0 / 0.08) by the specular texture's
+// alpha and the specular colour's largest channel.
+void applyExtensionTextures(inout MaterialData d, float4 uv) {
+  if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
+  if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
+    float r = sqrt(lerp(0.1, 0.001, d.clearcoatGloss)) * sampleTextureRef(d.clearcoatRoughnessTexture, uv).y;
+    d.clearcoatGloss = saturate((0.1 - r * r) / 0.099);
+  }
+  if (d.transmissionTexture != PT_NO_TEXTURE) d.specTrans *= sampleTextureRef(d.transmissionTexture, uv).x;
+  if (d.sheenColorTexture != PT_NO_TEXTURE)
+    d.sheen *= maxComponent(sampleTextureRef(d.sheenColorTexture, uv).xyz);
+  if (d.specularTexture != PT_NO_TEXTURE) d.specular *= sampleTextureRef(d.specularTexture, uv).w;
+  if (d.specularColorTexture != PT_NO_TEXTURE)
+    d.specular *= maxComponent(sampleTextureRef(d.specularColorTexture, uv).xyz);
+}
+
 // The material at a surface point: each texture multiplies its factor
 // (glTF 2.0 3.9.2): base colour rgb, metallic from blue and roughness from
 // green, emission rgb. sRGB textures arrive decoded to linear by the sampler.
@@ -29,6 +49,7 @@ MaterialData applyMaterialTextures(MaterialData d, float4 uv) {
     d.roughness *= mr.y;
   }
   if (d.emissionTexture != PT_NO_TEXTURE) d.emission *= sampleTextureRef(d.emissionTexture, uv).xyz;
+  applyExtensionTextures(d, uv);
   return d;
 }
 

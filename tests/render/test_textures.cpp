@@ -3,6 +3,7 @@
 // texture's effect against the untextured material it stands for, normal
 // maps against the vertex normals they encode, alpha masks for camera and
 // shadow rays, and textured emitters under next-event estimation.
+#include <algorithm>
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <functional>
@@ -283,6 +284,106 @@ TEST_CASE(
   const auto image = test::renderScene(*device, withTexture, kSize, kSize, 4, oneBounce());
   // 8-bit and sRGB decoding on the GPU against the host's float arithmetic.
   REQUIRE(relativeMaxDifference(image, reference) < 2e-3f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor would",
+          "[render][gpu][textures]") {
+  // Each case: the textured material against the same material with the
+  // parameter scaled on the host as docs/materials.md says the texture
+  // scales it, and against the material with the texture ignored, which must
+  // look different (so a texture the shader skips fails).
+  auto device = test::makeTestDevice();
+  scene::Material plain = glossyMaterial();
+  std::vector<scene::Texture> textures;
+  std::function<void(scene::Material&)> attach;
+  std::function<void(scene::Scene&)> stage = [](scene::Scene&) {};
+  auto uniform = [](glm::u8vec4 texel, bool srgb) {
+    return makeTexture(2, 2, srgb, [=](uint32_t, uint32_t) { return texel; });
+  };
+  scene::Material untextured;
+  SECTION("clearcoat from red") {
+    plain.clearcoat = 1.0f;
+    plain.clearcoatGloss = 0.9f;
+    untextured = plain;
+    textures = {uniform({60, 250, 250, 255}, false)};
+    attach = [](scene::Material& m) { m.clearcoatTexture = 0; };
+    plain.clearcoat *= 60.0f / 255.0f;
+  }
+  SECTION("the coat's roughness from green") {
+    plain.clearcoat = 1.0f;
+    plain.clearcoatGloss = 0.2f;
+    untextured = plain;
+    textures = {uniform({255, 40, 255, 255}, false)};
+    attach = [](scene::Material& m) { m.clearcoatRoughnessTexture = 0; };
+    // gltf_materials.cpp: clearcoatGloss g stands for roughness r with
+    // r^2 = lerp(0.1, 0.001, g); glTF scales r by the texture's green.
+    const float r = std::sqrt(0.1f + (0.001f - 0.1f) * 0.2f) * (40.0f / 255.0f);
+    plain.clearcoatGloss = std::clamp((0.1f - r * r) / 0.099f, 0.0f, 1.0f);
+  }
+  SECTION("transmission from red") {
+    plain.specTrans = 0.9f;
+    plain.thin = true;
+    untextured = plain;
+    textures = {uniform({30, 255, 255, 255}, false)};
+    attach = [](scene::Material& m) { m.transmissionTexture = 0; };
+    plain.specTrans *= 30.0f / 255.0f;
+  }
+  SECTION("sheen from the sheen colour's largest channel (sRGB)") {
+    // Sheen is a grazing effect (Schlick weight of the half angle): the
+    // camera and the light low over opposite edges of the quad.
+    stage = [](scene::Scene& s) {
+      s.camera.position = {2.5, 0.0, 0.5};
+      s.camera.forward = glm::normalize(glm::vec3(-2.5f, 0.0f, -0.5f));
+      s.pointLights[0].position = {-3.0, 0.0, 0.3};
+      s.pointLights[0].intensity = glm::vec3(40.0f);
+    };
+    plain.sheen = 1.0f;
+    plain.sheenTint = 0.0f;
+    plain.baseColor = glm::vec3(0.05f);
+    plain.specular = 0.0f;  // no glossy highlight, which the grazing light would put in view
+    plain.metallic = 0.0f;
+    untextured = plain;
+    textures = {uniform({20, 188, 40, 255}, true)};
+    attach = [](scene::Material& m) { m.sheenColorTexture = 0; };
+    plain.sheen *= srgbToLinear(188.0f / 255.0f);
+  }
+  SECTION("specular from the specular texture's alpha and the specular colour's largest channel") {
+    plain.specular = 1.0f;
+    plain.metallic = 0.0f;
+    untextured = plain;
+    textures = {uniform({255, 255, 255, 90}, false), uniform({30, 140, 60, 255}, true)};
+    attach = [](scene::Material& m) {
+      m.specularTexture = 0;
+      m.specularColorTexture = 1;
+    };
+    plain.specular *= (90.0f / 255.0f) * srgbToLinear(140.0f / 255.0f);
+  }
+  scene::Material textured = untextured;
+  attach(textured);
+  auto staged = [&](const scene::Material& m) {
+    auto s = litQuadScene(m);
+    stage(s);
+    return s;
+  };
+  auto withTextures = staged(textured);
+  withTextures.textures = textures;
+  for (uint32_t i = 0; i < textures.size(); ++i) {
+    scene::TextureRef ref;
+    ref.texture = i;
+    withTextures.textureRefs.push_back(ref);
+  }
+  const auto reference = test::renderScene(*device, staged(plain), kSize, kSize, 4, oneBounce());
+  const auto ignored = test::renderScene(*device, staged(untextured), kSize, kSize, 4, oneBounce());
+  const auto image = test::renderScene(*device, withTextures, kSize, kSize, 4, oneBounce());
+  const float difference = relativeMaxDifference(image, reference);
+  const float ignoredDifference = relativeMaxDifference(ignored, reference);
+  INFO("textured against host-scaled: " << difference
+                                        << "; texture ignored: " << ignoredDifference);
+  // 8-bit and sRGB decoding on the GPU against the host's float arithmetic,
+  // as for the core textures; ignoring the texture is 10x that or more.
+  REQUIRE(difference < 2e-3f);
+  REQUIRE(ignoredDifference > 2e-2f);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 

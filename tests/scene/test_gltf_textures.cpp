@@ -190,12 +190,14 @@ TEST_CASE("glTF textures: one per image and colour space, sRGB for colour", "[gl
   REQUIRE(ref(s, materialNamed(s, "transformed").baseColorTexture).texture == base.texture);
   REQUIRE(std::count_if(s.textures.begin(), s.textures.end(),
                         [](const scene::Texture& t) { return t.name == "checker"; }) == 2);
-  // The checker twice, grey, greyAlpha, rgb, rgba16, grey16.
-  REQUIRE(s.textures.size() == 7u);
-  // Materials without textures keep every slot empty.
+  // The checker twice, grey, greyAlpha twice (sRGB as a base colour, linear
+  // as 'layered''s specular strength), rgb, rgba16, grey16.
+  REQUIRE(s.textures.size() == 8u);
+  // Slots a material gives no texture stay empty.
   const auto& coated = materialNamed(s, "coated");
   for (uint32_t slot : {coated.baseColorTexture, coated.metallicRoughnessTexture,
-                        coated.normalTexture, coated.emissiveTexture, coated.occlusionTexture})
+                        coated.normalTexture, coated.emissiveTexture, coated.occlusionTexture,
+                        coated.sheenColorTexture, coated.transmissionTexture})
     REQUIRE(slot == scene::Material::kNoTexture);
 }
 
@@ -308,13 +310,45 @@ TEST_CASE("glTF alpha modes, normal scale and occlusion strength", "[gltf]") {
   for (const auto& w : r.warnings) REQUIRE(w.find("BLEND") == std::string::npos);
 }
 
-TEST_CASE("glTF textures of material extensions are ignored with a warning", "[gltf]") {
+TEST_CASE("glTF KHR_materials_* textures fill their slots; unread ones are warned about",
+          "[gltf]") {
   const auto r = scene::importGltf(gltf("textures.gltf"));
-  REQUIRE(hasWarning(r,
-                     "material 8 'coated': KHR_materials_clearcoat textures "
-                     "(clearcoatRoughnessTexture, clearcoatTexture) are not supported; "
-                     "factors used"));
-  REQUIRE(materialNamed(r.scene, "coated").clearcoat == Approx(0.5f));
+  const auto& s = r.scene;
+  // 'coated': clearcoat and its roughness from texture 1 (image 0), linear;
+  // its normal map is not read.
+  const auto& coated = materialNamed(s, "coated");
+  CHECK(coated.clearcoat == Approx(0.5f));
+  for (uint32_t slot : {coated.clearcoatTexture, coated.clearcoatRoughnessTexture}) {
+    requireChecker2x2(texture(s, slot));
+    CHECK_FALSE(texture(s, slot).srgb);
+  }
+  CHECK(hasWarning(r,
+                   "material 8 'coated': KHR_materials_clearcoat textures "
+                   "(clearcoatNormalTexture) are not supported; factors used"));
+  // 'layered': sheen and specular colour are colours (sRGB), the specular
+  // strength and transmission data; the transmission's texCoord and
+  // transform are its own.
+  const auto& layered = materialNamed(s, "layered");
+  CHECK(texture(s, layered.sheenColorTexture).srgb);
+  CHECK(texture(s, layered.specularColorTexture).srgb);
+  CHECK_FALSE(texture(s, layered.specularTexture).srgb);
+  CHECK_FALSE(texture(s, layered.transmissionTexture).srgb);
+  CHECK(texture(s, layered.sheenColorTexture).name ==
+        texture(s, materialNamed(s, "grey").baseColorTexture).name);
+  CHECK(texture(s, layered.specularTexture).name ==
+        texture(s, materialNamed(s, "greyAlpha").baseColorTexture).name);
+  CHECK(texture(s, layered.specularColorTexture).name ==
+        texture(s, materialNamed(s, "rgb").baseColorTexture).name);
+  const auto& transmission = ref(s, layered.transmissionTexture);
+  CHECK(transmission.texCoord == 1u);
+  CHECK(transmission.transform2 == glm::vec2(0.5f, 0.0f));
+  CHECK(transmission.transform0 == glm::vec2(1.0f, 0.0f));
+  CHECK(layered.specTrans == Approx(1.0f));
+  CHECK(hasWarning(r,
+                   "material 9 'layered': KHR_materials_sheen textures "
+                   "(sheenRoughnessTexture) are not supported; factors used"));
+  CHECK_FALSE(hasWarning(r, "KHR_materials_specular textures"));
+  CHECK_FALSE(hasWarning(r, "KHR_materials_transmission textures"));
 }
 
 TEST_CASE("glTF images in a .glb buffer view and in data URIs", "[gltf]") {
@@ -433,7 +467,7 @@ TEST_CASE("scene validation checks textures and texture references", "[gltf]") {
                       ContainsSubstring("texture 1"));
   REQUIRE_THROWS_WITH(
       scene::validate(broken([](scene::Scene& s) { s.textureRefs[0].texture = 99; })),
-      ContainsSubstring("texture reference 0 uses texture 99 of 7"));
+      ContainsSubstring("texture reference 0 uses texture 99 of 8"));
   REQUIRE_THROWS_WITH(
       scene::validate(broken([](scene::Scene& s) { s.textureRefs[2].transform1.y = NAN; })),
       ContainsSubstring("texture reference 2 has a non-finite texture transform"));

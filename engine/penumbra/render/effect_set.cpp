@@ -23,12 +23,8 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   // metallic, ks -> specular, transparency -> specTrans).
   if (m.reflectivity > 0.0f || m.ks > 0.0f) effects |= PT_EFFECT_SPECULAR;
   if (m.transparency > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
-  const bool textured = m.baseColorTexture != scene::Material::kNoTexture ||
-                        m.metallicRoughnessTexture != scene::Material::kNoTexture ||
-                        m.normalTexture != scene::Material::kNoTexture ||
-                        m.emissiveTexture != scene::Material::kNoTexture ||
-                        m.occlusionTexture != scene::Material::kNoTexture;
-  if (textured) effects |= PT_EFFECT_TEXTURES;
+  for (uint32_t ref : m.textures())
+    if (ref != scene::Material::kNoTexture) effects |= PT_EFFECT_TEXTURES;
   if (alphaMasked(m)) effects |= PT_EFFECT_ALPHA_MASK;
   if (m.model == scene::MaterialModel::Phong) return effects;
   if (m.metallic > 0.0f || m.specular > 0.0f) effects |= PT_EFFECT_SPECULAR;

@@ -199,6 +199,12 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.normalTexture = m.normalTexture;
   d.emissionTexture = m.emissiveTexture;
   d.occlusionTexture = m.occlusionTexture;
+  d.clearcoatTexture = m.clearcoatTexture;
+  d.clearcoatRoughnessTexture = m.clearcoatRoughnessTexture;
+  d.transmissionTexture = m.transmissionTexture;
+  d.sheenColorTexture = m.sheenColorTexture;
+  d.specularTexture = m.specularTexture;
+  d.specularColorTexture = m.specularColorTexture;
   d.alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
                 : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND
                                                          : MATERIAL_ALPHA_OPAQUE;

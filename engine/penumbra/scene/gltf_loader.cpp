@@ -147,8 +147,7 @@ class Importer {
   void warnMissingTexCoords(const Mesh& mesh, const std::string& where) {
     const Material& m = out_.scene.materials[mesh.material];
     bool reads[2] = {false, false};
-    for (uint32_t ref : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
-                         m.emissiveTexture, m.occlusionTexture})
+    for (uint32_t ref : m.textures())
       if (ref != Material::kNoTexture) reads[out_.scene.textureRefs[ref].texCoord] = true;
     const bool has[2] = {!mesh.uv0.empty(), !mesh.uv1.empty()};
     for (int set = 0; set < 2; ++set)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/scene/gltf_textures.h"
 #include "penumbra/scene/tinygltf.h"
 #include "penumbra/util/error.h"
 
@@ -61,14 +62,20 @@ void convertAlpha(const tinygltf::Material& src, float alpha, const std::string&
   }
 }
 
-// Material extensions may carry textures of their own (clearcoatTexture,
-// transmissionTexture, ...); only their factors are read.
+// Material extensions' textures that are not read (gltf_textures.h's
+// extensionTextures lists those that are): only their factors apply.
 void warnExtensionTextures(const tinygltf::Material& src, const std::string& where,
                            std::vector<std::string>& warnings) {
+  auto read = [](const std::string& extension, const std::string& key) {
+    for (const ExtensionTexture& t : extensionTextures())
+      if (extension == t.extension && key == t.key) return true;
+    return false;
+  };
   for (const auto& [name, value] : src.extensions) {
     std::string textures;
     for (const auto& key : value.Keys())
-      if (member(value.Get(key), "index")) textures += (textures.empty() ? "" : ", ") + key;
+      if (member(value.Get(key), "index") && !read(name, key))
+        textures += (textures.empty() ? "" : ", ") + key;
     if (!textures.empty())
       warnings.push_back(fmt::format("{}: {} textures ({}) are not supported; factors used", where,
                                      name, textures));

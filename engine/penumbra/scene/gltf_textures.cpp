@@ -299,6 +299,18 @@ void setTextureTransform(TextureRef& ref, glm::vec2 offset, float rotation, glm:
   ref.transform2 = offset;
 }
 
+const std::vector<ExtensionTexture>& extensionTextures() {
+  static const std::vector<ExtensionTexture> table{
+      {"KHR_materials_clearcoat", "clearcoatTexture", false, &Material::clearcoatTexture},
+      {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", false,
+       &Material::clearcoatRoughnessTexture},
+      {"KHR_materials_transmission", "transmissionTexture", false, &Material::transmissionTexture},
+      {"KHR_materials_sheen", "sheenColorTexture", true, &Material::sheenColorTexture},
+      {"KHR_materials_specular", "specularTexture", false, &Material::specularTexture},
+      {"KHR_materials_specular", "specularColorTexture", true, &Material::specularColorTexture}};
+  return table;
+}
+
 TextureImporter::TextureImporter(const tinygltf::Model& model, ImageDecoding& decoding,
                                  std::string at, Scene& scene, std::vector<std::string>& warnings)
     : model_(model),
@@ -323,6 +335,27 @@ void TextureImporter::attach(const tinygltf::Material& src, Material& material,
   material.normalTexture = slot(src.normalTexture, "normalTexture", false);
   material.emissiveTexture = slot(src.emissiveTexture, "emissiveTexture", true);
   material.occlusionTexture = slot(src.occlusionTexture, "occlusionTexture", false);
+  for (const ExtensionTexture& t : extensionTextures()) {
+    const auto ext = src.extensions.find(t.extension);
+    if (ext == src.extensions.end() || !ext->second.Get(t.key).IsObject()) continue;
+    const tinygltf::Value& info = ext->second.Get(t.key);
+    const std::string name = fmt::format("{} {}.{}", where, t.extension, t.key);
+    auto whole = [&](const char* what, bool required) -> int {
+      const tinygltf::Value& v = info.Get(what);
+      if (!v.IsNumber() && !required) return 0;
+      const double d = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+      if (!(d >= 0.0 && d <= double(INT_MAX)) || std::floor(d) != d)
+        throw Error(fmt::format("{}: {} is not a whole number from 0 to {}", name, what, INT_MAX));
+      return int(d);
+    };
+    const int index = whole("index", true);
+    const tinygltf::Value& infoExtensions = info.Get("extensions");
+    const tinygltf::Value* transform =
+        infoExtensions.IsObject() && infoExtensions.Has("KHR_texture_transform")
+            ? &infoExtensions.Get("KHR_texture_transform")
+            : nullptr;
+    material.*t.slot = textureRef(index, whole("texCoord", false), transform, t.srgb, name);
+  }
 }
 
 uint32_t TextureImporter::textureRef(int index, int texCoord, const tinygltf::Value* transform,

@@ -70,6 +70,18 @@ TextureSampler convertSampler(const tinygltf::Sampler& sampler, const std::strin
 // v axis points down).
 void setTextureTransform(TextureRef& ref, glm::vec2 offset, float rotation, glm::vec2 scale);
 
+// The KHR_materials_* textures read, each with the Material slot it fills
+// (scene.h says which channel scales which parameter) and its colour space.
+// Others (clearcoatNormalTexture, sheenRoughnessTexture, thicknessTexture,
+// those of extensions not read) are warned about and their factors used.
+struct ExtensionTexture {
+  const char* extension;
+  const char* key;
+  bool srgb;
+  uint32_t Material::*slot;
+};
+const std::vector<ExtensionTexture>& extensionTextures();
+
 // Builds the scene's textures and texture references from the materials'
 // texture infos, deduplicating textures by (image, sRGB).
 class TextureImporter {

@@ -199,8 +199,7 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
   if (!(m.attenuationDistance > 0.0f))
     fail(fmt::format("material '{}': attenuationDistance {} must be > 0", m.name,
                      m.attenuationDistance));
-  for (uint32_t ref : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
-                       m.emissiveTexture, m.occlusionTexture})
+  for (uint32_t ref : m.textures())
     if (ref != Material::kNoTexture && ref >= scene.textureRefs.size())
       fail(fmt::format("material '{}' uses texture reference {} of {}", m.name, ref,
                        scene.textureRefs.size()));

@@ -1,6 +1,7 @@
 #pragma once
 // The API-neutral scene: meshes with materials, instances, a camera. Units are
 // metres once loaded (scene files may state a unitScale).
+#include <array>
 #include <glm/glm.hpp>
 #include <limits>
 #include <optional>
@@ -99,6 +100,17 @@ struct Material {
   uint32_t normalTexture = kNoTexture;  // tangent space, scaled xy by normalScale
   uint32_t emissiveTexture = kNoTexture;
   uint32_t occlusionTexture = kNoTexture;  // red channel; only Whitted's ambient term uses it
+  // The KHR_materials_* textures (docs/materials.md), each multiplying the
+  // parameter its factor became: clearcoat by red, the coat's roughness by
+  // green (clearcoatGloss follows), specTrans by the transmission's red,
+  // sheen by the sheen colour's largest channel, specular by the specular
+  // texture's alpha and the specular colour's largest channel.
+  uint32_t clearcoatTexture = kNoTexture;
+  uint32_t clearcoatRoughnessTexture = kNoTexture;
+  uint32_t transmissionTexture = kNoTexture;
+  uint32_t sheenColorTexture = kNoTexture;  // sRGB
+  uint32_t specularTexture = kNoTexture;
+  uint32_t specularColorTexture = kNoTexture;  // sRGB
   float normalScale = 1.0f;
   float occlusionStrength = 1.0f;
   float alpha = 1.0f;  // base colour alpha factor
@@ -114,6 +126,20 @@ struct Material {
   bool emissionIsLighting = true;
 
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
+  // Every texture slot above, for code that treats them alike (validation,
+  // merging scenes, hashing, the textures' effect bit).
+  std::array<uint32_t, 11> textures() const {
+    return {baseColorTexture,          metallicRoughnessTexture, normalTexture,
+            emissiveTexture,           occlusionTexture,         clearcoatTexture,
+            clearcoatRoughnessTexture, transmissionTexture,      sheenColorTexture,
+            specularTexture,           specularColorTexture};
+  }
+  std::array<uint32_t*, 11> textureSlots() {
+    return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,
+            &emissiveTexture,           &occlusionTexture,         &clearcoatTexture,
+            &clearcoatRoughnessTexture, &transmissionTexture,      &sheenColorTexture,
+            &specularTexture,           &specularColorTexture};
+  }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));
 };

@@ -14,7 +14,7 @@ namespace {
 // then update the count.
 // Material::emissionIsLighting only decides whether the default environment
 // is added, and the environment is hashed: not hashed.
-static_assert(fieldCount<Material>() == 34, "a Material field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Material>() == 40, "a Material field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Camera>() == 8, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
@@ -40,9 +40,7 @@ void hashMaterial(ContentHash& h, const Material& m) {
   h.value(m.attenuationColor);
   h.value(m.attenuationDistance);
   for (float v : {m.ks, m.exponent, m.reflectivity, m.transparency}) h.value(v);
-  for (uint32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
-                     m.emissiveTexture, m.occlusionTexture})
-    h.value(t);
+  for (uint32_t t : m.textures()) h.value(t);
   for (float v : {m.normalScale, m.occlusionStrength, m.alpha}) h.value(v);
   h.value(m.alphaMode);
   h.value(m.alphaCutoff);

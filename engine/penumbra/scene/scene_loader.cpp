@@ -149,8 +149,7 @@ void merge(Scene& scene, const Scene& part, const glm::dmat4& t) {
     scene.textureRefs.push_back(ref);
   }
   for (Material m : part.materials) {
-    for (uint32_t* ref : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                          &m.emissiveTexture, &m.occlusionTexture})
+    for (uint32_t* ref : m.textureSlots())
       if (*ref != Material::kNoTexture) *ref += textureRefBase;
     scene.materials.push_back(std::move(m));
   }

@@ -666,9 +666,19 @@ def textures():
         {"name": "blend", "alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
         {"name": "coated", "extensions": {"KHR_materials_clearcoat": {
             "clearcoatFactor": 0.5, "clearcoatTexture": {"index": 1},
-            "clearcoatRoughnessTexture": {"index": 1}}}},
+            "clearcoatRoughnessTexture": {"index": 1}, "clearcoatNormalTexture": {"index": 1}}}},
+        {"name": "layered", "extensions": {
+            "KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenColorTexture": {"index": 3},
+                                    "sheenRoughnessTexture": {"index": 1}},
+            "KHR_materials_specular": {"specularTexture": {"index": 4},
+                                       "specularColorTexture": {"index": 5}},
+            "KHR_materials_transmission": {
+                "transmissionFactor": 1,
+                "transmissionTexture": {"index": 1, "texCoord": 1, "extensions": {
+                    "KHR_texture_transform": {"offset": [0.5, 0]}}}}}},
     ]
-    b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_texture_transform"]
+    b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
+                               "KHR_materials_transmission", "KHR_texture_transform"]
     b.write_gltf("textures.gltf")
 
     # The checker again, stored in the .glb's binary chunk.
