@@ -9,6 +9,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -706,4 +707,59 @@ TEST_CASE("glTF KHR_materials_variants: each variant gives its primitives their 
                                "the 2 there are"));
   CHECK_THAT(test::gltfRefusal(file(R"({"material":3,"variants":[0]})")),
              ContainsSubstring("KHR_materials_variants material is not one of the 3 there are"));
+}
+
+TEST_CASE("glTF morph targets: the mesh's default weights shape what is drawn", "[gltf]") {
+  test::TempFolder folder("gltf-morph");
+  // Base triangle (0,0,0) (1,0,0) (0,1,0) with normals +z; target 0 lifts
+  // vertex 0 by 1 in z; target 1 moves vertex 1 by 1 in x and tilts every
+  // normal by +x. Weights 0.5 and 0.25: vertex 0 at (0, 0, 0.5), vertex 1 at
+  // (1.25, 0, 0), normals (0.25, 0, 1) normalised.
+  const std::vector<float> floats = {
+      0, 0, 0, 1, 0, 0, 0, 1, 0,  // POSITION
+      0, 0, 1, 0, 0, 1, 0, 0, 1,  // NORMAL
+      0, 0, 1, 0, 0, 0, 0, 0, 0,  // target 0 POSITION
+      0, 0, 0, 1, 0, 0, 0, 0, 0,  // target 1 POSITION
+      1, 0, 0, 1, 0, 0, 1, 0, 0,  // target 1 NORMAL
+  };
+  std::string bin(floats.size() * 4, '\0');
+  std::memcpy(bin.data(), floats.data(), bin.size());
+  folder.write("morph.bin", bin);
+  auto file = [&](const std::string& weights, const std::string& nodeWeights) {
+    std::string views, accessors;
+    for (int i = 0; i < 5; ++i) {
+      views +=
+          fmt::format(R"({}{{"buffer":0,"byteOffset":{},"byteLength":36}})", i ? "," : "", 36 * i);
+      accessors +=
+          fmt::format(R"({}{{"bufferView":{},"componentType":5126,"count":3,"type":"VEC3"{}}})",
+                      i ? "," : "", i, i == 0 ? R"(,"min":[0,0,0],"max":[1,1,0])" : "");
+    }
+    return folder.write("morph.gltf", fmt::format(R"({{"asset":{{"version":"2.0"}},
+      "buffers":[{{"uri":"morph.bin","byteLength":180}}],"bufferViews":[{}],"accessors":[{}],
+      "meshes":[{{"primitives":[{{"attributes":{{"POSITION":0,"NORMAL":1}},
+        "targets":[{{"POSITION":2}},{{"POSITION":3,"NORMAL":4}}]}}]{}}}],
+      "nodes":[{{"mesh":0{}}}],"scenes":[{{"nodes":[0]}}]}})",
+                                                  views, accessors, weights, nodeWeights));
+  };
+  const auto r = scene::importGltf(file(R"(,"weights":[0.5,0.25])", ""));
+  CHECK(r.warnings.empty());
+  const scene::Mesh& mesh = r.scene.meshes.at(0);
+  auto find = [&](glm::vec3 p) {
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+      if (glm::length(mesh.positions[v] - p) <= 1e-6f) return v;
+    FAIL("no vertex at (" << p.x << ", " << p.y << ", " << p.z << ")");
+    return size_t(0);
+  };
+  find({0.0f, 0.0f, 0.5f});
+  find({1.25f, 0.0f, 0.0f});
+  find({0.0f, 1.0f, 0.0f});
+  for (const glm::vec3& n : mesh.normals)
+    requireNear(n, glm::normalize(glm::vec3(0.25f, 0.0f, 1.0f)));
+  // Without weights the base shape; a node's own weights are not applied
+  // (the mesh is shared), and say so.
+  const auto base = scene::importGltf(file("", ""));
+  CHECK(hasWarning(base, "2 morph targets but 0 default weights"));
+  requireNear(base.scene.meshes.at(0).normals.at(0), glm::vec3(0.0f, 0.0f, 1.0f));
+  CHECK(hasWarning(scene::importGltf(file(R"(,"weights":[0.5,0.25])", R"(,"weights":[1,0])")),
+                   "node 0: its morph target weights are not applied"));
 }

@@ -250,7 +250,8 @@ class Importer {
         throw Error(fmt::format("{}: material {} does not exist ({} materials)", name,
                                 prim.material, model_.materials.size()));
       }
-      auto mesh = gltf::convertPrimitive(model_, prim, material, name, out_.warnings, budget_);
+      auto mesh =
+          gltf::convertPrimitive(model_, prim, material, src.weights, name, out_.warnings, budget_);
       if (!mesh) continue;
       warnMissingTexCoords(*mesh, name);
       mesh->name =
@@ -344,6 +345,13 @@ class Importer {
              gltf::gpuInstanceTransforms(model_, node, where, budget_.limits))
           placements.push_back(world * copy);
         if (placements.empty()) placements.push_back(world);
+        // Meshes are converted once, at their own default morph weights.
+        if (!node.weights.empty() && size_t(node.mesh) < model_.meshes.size() &&
+            node.weights != model_.meshes[size_t(node.mesh)].weights)
+          warn(
+              fmt::format("{}: its morph target weights are not applied (the mesh's default "
+                          "weights are drawn)",
+                          where));
         for (uint32_t mesh : meshesOf(node.mesh, where))
           for (const glm::dmat4& placement : placements) {
             requireAtMost(out_.scene.instances.size() + 1, budget_.limits.maxInstances,

@@ -61,6 +61,9 @@ void charge(const tinygltf::Model& model, const tinygltf::Primitive& p, int posi
   for (const char* name : kAttributes)
     if (const int index = attribute(p, name); index >= 0)
       bytes += decodedBytes(model, index, limits, fmt::format("{} {}", where, name));
+  for (size_t t = 0; t < p.targets.size(); ++t)
+    for (const auto& [name, index] : p.targets[t])
+      bytes += decodedBytes(model, index, limits, fmt::format("{} target {} {}", where, t, name));
   budget.decodedBytes = saturatingAdd(budget.decodedBytes, bytes);
   requireAtMost(budget.decodedBytes, limits.maxDecodedBytes, "maxDecodedBytes",
                 where + ": the file's decoded accessor bytes");
@@ -97,9 +100,32 @@ std::string degenerateTrianglesWarning(const DecodeBudget& budget, const std::st
       budget.degenerateTriangles, budget.primitivesWithDegenerate, budget.firstWithDegenerate);
 }
 
+// Adds each morph target's displacements of `name` (POSITION, NORMAL or
+// TANGENT, xyz), times its weight, to `values` (glTF 3.7.2.2).
+template <class Vec>
+void addMorphDisplacements(const tinygltf::Model& model, const tinygltf::Primitive& p,
+                           const std::vector<double>& weights, const char* name,
+                           std::vector<Vec>& values, const std::string& where,
+                           const InputLimits& limits) {
+  if (values.empty()) return;
+  for (size_t t = 0; t < p.targets.size() && t < weights.size(); ++t) {
+    const auto found = p.targets[t].find(name);
+    if (found == p.targets[t].end() || weights[t] == 0.0) continue;
+    const std::string what = fmt::format("{} target {} {}", where, t, name);
+    const std::vector<float> d = readFloats(model, found->second, 3, what, limits);
+    if (d.size() != values.size() * 3)
+      throw Error(fmt::format("{} (accessor {}): has {} elements but POSITION has {}", what,
+                              found->second, d.size() / 3, values.size()));
+    const float w = float(weights[t]);
+    for (size_t v = 0; v < values.size(); ++v)
+      for (int c = 0; c < 3; ++c) values[v][c] += w * d[v * 3 + size_t(c)];
+  }
+}
+
 std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p,
-                                     uint32_t material, const std::string& where,
-                                     std::vector<std::string>& warnings, DecodeBudget& budget) {
+                                     uint32_t material, const std::vector<double>& morphWeights,
+                                     const std::string& where, std::vector<std::string>& warnings,
+                                     DecodeBudget& budget) {
   if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
       p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
     warnings.push_back(fmt::format("{}: mode {} is not made of triangles; skipped", where, p.mode));
@@ -118,6 +144,10 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   mesh.positions = toVectors<glm::vec3>(readFloats(model, position, 3, at, limits),
                                         fmt::format("{} (accessor {})", at, position));
   const size_t vertexCount = mesh.positions.size();
+  for (double w : morphWeights)
+    if (!std::isfinite(w))
+      throw Error(fmt::format("{}: a morph target weight is not finite", where));
+  addMorphDisplacements(model, p, morphWeights, "POSITION", mesh.positions, where, limits);
 
   const std::vector<uint32_t> sequence =
       p.indices >= 0 ? readIndices(model, p.indices, where + " indices", limits)
@@ -167,6 +197,7 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     return fmt::format("{} {} (accessor {})", where, name, attribute(p, name));
   };
   mesh.normals = toVectors<glm::vec3>(readAttribute("NORMAL", 3), accessorName("NORMAL"));
+  addMorphDisplacements(model, p, morphWeights, "NORMAL", mesh.normals, where, limits);
   for (auto& n : mesh.normals) {
     const float len = glm::length(n);
     n = len > 0.0f ? n / len : glm::vec3(0.0f);
@@ -174,6 +205,7 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   mesh.uv0 = toVectors<glm::vec2>(readAttribute("TEXCOORD_0", 2), accessorName("TEXCOORD_0"));
   mesh.uv1 = toVectors<glm::vec2>(readAttribute("TEXCOORD_1", 2), accessorName("TEXCOORD_1"));
   mesh.tangents = toVectors<glm::vec4>(readAttribute("TANGENT", 4), accessorName("TANGENT"));
+  addMorphDisplacements(model, p, morphWeights, "TANGENT", mesh.tangents, where, limits);
   for (auto& t : mesh.tangents) {
     const float len = glm::length(glm::vec3(t));
     t = glm::vec4(len > 0.0f ? glm::vec3(t) / len : glm::vec3(0.0f), t.w < 0.0f ? -1.0f : 1.0f);
@@ -190,8 +222,9 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
       mesh.colors = toVectors<glm::vec4>(readAttribute("COLOR_0", 4), accessorName("COLOR_0"));
     for (auto& c : mesh.colors) c = glm::clamp(c, 0.0f, 1.0f);
   }
-  if (!p.targets.empty())
-    warnings.push_back(fmt::format("{}: morph targets are ignored (base shape only)", where));
+  if (p.targets.size() > morphWeights.size())
+    warnings.push_back(fmt::format("{}: {} morph targets but {} default weights; the rest weigh 0",
+                                   where, p.targets.size(), morphWeights.size()));
 
   if (mesh.normals.empty()) {
     makeFlatNormals(mesh);

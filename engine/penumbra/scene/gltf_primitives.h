@@ -33,12 +33,15 @@ std::string degenerateTrianglesWarning(const DecodeBudget& budget, const std::st
 
 // The primitive as a triangle list, or nothing (with a warning) when it is
 // not made of triangles or has no positions. `material` is the scene
-// material index to give it; `where` names it in errors. Before reading
+// material index to give it; `morphWeights` the mesh's default morph
+// target weights (glTF mesh.weights: the shape drawn without animation);
+// `where` names it in errors. Before reading
 // anything, the accessors it reads and the triangles its index sequence can
 // make are charged to `budget`, and a primitive that would pass its limits
 // is an error naming the accessor or the count and the limit.
 std::optional<Mesh> convertPrimitive(const tinygltf::Model& model,
                                      const tinygltf::Primitive& primitive, uint32_t material,
+                                     const std::vector<double>& morphWeights,
                                      const std::string& where, std::vector<std::string>& warnings,
                                      DecodeBudget& budget);
 
