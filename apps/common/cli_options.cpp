@@ -63,6 +63,21 @@ void EnvironmentOptions::apply(const CLI::App& cmd, render::EnvironmentChoice& c
   if (cmd.count("--env-background") > 0) choice.visibleBackground = background == "visible";
 }
 
+void addAnimationOptions(CLI::App& cmd, AnimationOptions& o) {
+  cmd.add_option("--animation", o.animation,
+                 "Draw the glTF files' animation of this name, or index (0 is the first), or "
+                 "'all' of them at once, at --time (default 0 s)");
+  cmd.add_option("--time", o.seconds,
+                 "Seconds into the animation (the first one without --animation): nodes, morph "
+                 "weights and skins as it sets them then; default: the file's own pose")
+      ->check(CLI::Range(-1e9, 1e9));
+}
+
+void AnimationOptions::apply(const CLI::App& cmd, scene::AnimationChoice& choice) const {
+  if (cmd.count("--animation") > 0) choice.animation = animation;
+  if (cmd.count("--time") > 0) choice.seconds = seconds;
+}
+
 void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
   cmd.add_option("--camera", o.camera,
                  "Render from the scene's camera of this name (glTF camera or node name) or "

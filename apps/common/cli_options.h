@@ -49,6 +49,16 @@ struct EnvironmentOptions {
 };
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentOptions& options);
 
+// --animation, --time: the moment of the glTF files' animations to draw
+// (scene::AnimationChoice).
+struct AnimationOptions {
+  std::string animation;
+  double seconds = 0.0;
+  // Applies the options given on the command line to `choice`.
+  void apply(const CLI::App& cmd, scene::AnimationChoice& choice) const;
+};
+void addAnimationOptions(CLI::App& cmd, AnimationOptions& options);
+
 // --camera, --camera-position, --look-at, --fov: the view over the scene's
 // camera (scene::CameraPlacement).
 struct CameraOptions {

@@ -38,6 +38,7 @@ struct RenderOptions {
   DeviceOptions device;
   SettingOptions settings;  // --max-depth, --strategy, ... (batch/render_settings.h)
   CameraOptions camera;     // --camera, --camera-position, --look-at, --fov
+  AnimationOptions animation;  // --animation, --time
   uint32_t spp = 64;
   std::string out = "render.png";
   float aperture = 0.0f;
@@ -140,6 +141,7 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   if (given("--vary")) job.vary = o.vary;
   if (given("--set")) job.set = o.set;
   if (given("--variant")) job.variant = o.variant;
+  o.animation.apply(cmd, job.animation);
   if (given("--size")) std::tie(job.width, job.height) = parseImageSize(o.scene.size);
   if (given("--spp")) job.spp = o.spp;
   o.settings.apply(cmd, job.settings);
@@ -157,7 +159,7 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
 // chosen and given its lens options, the material row, the viewer's
 // material edits and the environment applied.
 scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job) {
-  scene::Scene scene = scene::loadScene(job.scene, {o.allowExternalFiles});
+  scene::Scene scene = scene::loadScene(job.scene, {o.allowExternalFiles}, {}, job.animation);
   // The view and the thin lens given on the command line, on whichever
   // camera renders (a record's, or the scene's after --camera picked one).
   const scene::CameraPlacement placement = o.camera.placement(cmd);
@@ -398,6 +400,7 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--variant", o->variant,
                   "Draw the glTF file's material variant of this name, or index (0 is the first; "
                   "KHR_materials_variants; default: the file's own materials)");
+  addAnimationOptions(*cmd, o->animation);
   cmd->add_option("--focus-distance", o->focusDistance,
                   "Distance in metres along the view to the plane in focus (with --aperture)")
       ->check(CLI::Range(1e-6f, 1e9f));

@@ -43,6 +43,11 @@ int main(int argc, char** argv) {
   app::addEnvironmentOptions(app, environment);
   app::CameraOptions camera;
   app::addCameraOptions(app, camera);
+  app.add_option("--variant", o.variant,
+                 "Draw the glTF file's material variant of this name, or index (0 is the first; "
+                 "KHR_materials_variants)");
+  app::AnimationOptions animation;
+  app::addAnimationOptions(app, animation);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -67,6 +72,7 @@ int main(int argc, char** argv) {
   if (renderScale > 0) o.renderScale = renderScale;
   environment.apply(app, o.environment);
   o.camera = camera.placement(app);
+  animation.apply(app, o.animation);
   o.vsync = !noVsync;
   try {
     viewer::Viewer viewer(o);

@@ -87,7 +87,7 @@ Viewer::Viewer(const ViewerOptions& options)
         device_->createCommandList(fmt::format("viewer frame {}", frameLists_.size())));
 
   if (!options_.script.empty()) script_ = loadScript(options_.script);
-  loadScene(options_.scene, options_.camera);
+  loadScene(options_.scene, options_.camera, options_.variant, options_.animation);
   const auto& adapter = device_->adapter();
   fmt::print("device: {} ({}) via {}, {}\n", adapter.name, rhi::adapterTypeName(adapter.type),
              device_->backendName(),
@@ -103,10 +103,12 @@ Viewer::~Viewer() {
   ImGui::DestroyContext();
 }
 
-void Viewer::loadScene(const std::string& nameOrPath, const scene::CameraPlacement& placement) {
+void Viewer::loadScene(const std::string& nameOrPath, const scene::CameraPlacement& placement,
+                       const std::string& variant, const scene::AnimationChoice& animation) {
   // Throws before anything changes.
-  scene::Scene scene = scene::loadScene(nameOrPath, {options_.allowExternalFiles});
+  scene::Scene scene = scene::loadScene(nameOrPath, {options_.allowExternalFiles}, {}, animation);
   scene::placeCamera(scene, placement);
+  if (!variant.empty()) scene::selectMaterialVariant(scene, variant);
   const scene::Environment own = scene.environment;
   render::applyEnvironmentChoice(scene, options_.environment);
   if (device_) device_->waitForIdle();
@@ -134,6 +136,8 @@ void Viewer::loadScene(const std::string& nameOrPath, const scene::CameraPlaceme
     throw;
   }
   sceneName_ = nameOrPath;
+  sceneVariant_ = variant;
+  sceneAnimation_ = animation;
   vary_ = scene_.materialRow ? scene_.materialRow->vary : "";
   set_.clear();
   loadedMaterials_ = scene_.materials;
@@ -389,6 +393,8 @@ void Viewer::takeScreenshot(const std::string& path) {
   // and the Material menu's edits as overrides on top of both.
   render::RenderJob job = makeRenderJob(settings_, sceneName_, vary_, set_, camera_->camera(), size,
                                         tracer_->accumulatedSamples());
+  job.variant = sceneVariant_;
+  job.animation = sceneAnimation_;
   job.materials = render::materialOverrides(uneditedMaterials(), scene_.materials);
   job.environment = environment_;
   render::saveRenderJob(record, job);

@@ -43,6 +43,10 @@ struct ViewerOptions {
   // --camera, --camera-position, --look-at, --fov: the first scene's view
   // (a scene opened later starts from its own camera).
   scene::CameraPlacement camera;
+  // --variant, --animation, --time: the first scene's material variant and
+  // animation pose (a scene opened later has its own materials and pose).
+  std::string variant;
+  scene::AnimationChoice animation;
   // No window and no swapchain: width x height is the size the window would
   // have; a script drives the session (nothing else ends it).
   bool offscreen = false;
@@ -60,7 +64,8 @@ class Viewer {
   int run();
 
  private:
-  void loadScene(const std::string& nameOrPath, const scene::CameraPlacement& placement = {});
+  void loadScene(const std::string& nameOrPath, const scene::CameraPlacement& placement = {},
+                 const std::string& variant = "", const scene::AnimationChoice& animation = {});
   void createTracer();
   void resizeRender();
   void applyEffect(SettingEffect effect);
@@ -116,6 +121,8 @@ class Viewer {
   uint64_t frameNumber_ = 0;
 
   std::string sceneName_;
+  std::string sceneVariant_;               // as loadScene chose it, for the screenshot's record
+  scene::AnimationChoice sceneAnimation_;  // likewise
   render::EnvironmentChoice environment_;  // as the screenshot records it
   scene::Environment sceneEnvironment_;    // the scene file's own
   char environmentPath_[512] = "";

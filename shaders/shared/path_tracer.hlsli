@@ -373,6 +373,20 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     p.throughput *= exp(-data.absorption * hit.hitT);
 #endif
 
+  // KHR_materials_unlit: the base colour is what every ray sees, from both
+  // sides; the surface reflects and transmits nothing, so the path ends. It
+  // is emission to the denoiser (kept out of the filter).
+  if (data.model == MATERIAL_MODEL_UNLIT) {
+    p.radiance += clampContribution(p.throughput * data.baseColor, clampLimit);
+    if (p.guidesOpen) {
+      p.chainLength += hit.hitT;
+      p.chainEmission += p.radiance - radianceBefore;
+      float3 facing = dot(hit.geometricNormal, direction) > 0.0 ? -hit.geometricNormal : hit.geometricNormal;
+      guides = closeGuides(p, zero3(), facing);
+    }
+    return false;
+  }
+
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
   // Emission: one-sided, from the front face (counter-clockwise; outside
   // of an implicit surface).

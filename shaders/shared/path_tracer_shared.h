@@ -115,6 +115,7 @@ namespace penumbra::gpu {
 // MaterialData.model
 #define MATERIAL_MODEL_DISNEY 0u
 #define MATERIAL_MODEL_PHONG 1u
+#define MATERIAL_MODEL_UNLIT 2u  // KHR_materials_unlit: baseColor is the radiance seen
 // MaterialData.flags bits
 #define MATERIAL_FLAG_THIN 1u
 #define MATERIAL_FLAG_LAMBERT_DIFFUSE 2u

@@ -64,6 +64,8 @@ expect_error "a folder named like a glTF file" "is a folder" render --scene "$wo
 expect_error "look-at at the camera" "is the camera's position" render --camera-position 1,2,3 --look-at 1,2,3 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "a camera position of two numbers" "--camera-position" render --camera-position 1,2 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "an unknown material variant" "no material variant 'dusk'" render --scene "$gltf_data/materials.gltf" --variant dusk --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "an unknown animation" "no animation 'Walk' (animations by index and name: 0 'Bend', 1 'Slide')" render --scene "$gltf_data/animated.gltf" --animation Walk --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "a time for a file without animations" "the file has no animations to draw at a time" render --scene "$gltf_data/cameras.gltf" --time 1 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "a glTF file needing KTX2" "requires extension KHR_texture_basisu" render --scene "$gltf_data/extension_required_compressed.gltf" --out "$work/out.png"
 expect_error "cyclic glTF node graph" "cyclic" render --scene "$gltf_data/invalid_cycle.gltf" --out "$work/out.png"
 expect_error "unknown glTF camera" "no camera named 'nope'" render --scene "$gltf_data/emissive_quad.gltf" --camera nope --out "$work/out.png"

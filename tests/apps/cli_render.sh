@@ -53,6 +53,17 @@ gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 "$penumbra" render --scene "$gltf_data/cameras.gltf" --camera 1 --size 16x16 --spp 2 \
   --out "$work/indexed.exr" >/dev/null
 "$penumbra" compare "$work/indexed.exr" "$work/named.exr" --tolerance 0 >/dev/null
+# An animation at a chosen time: --time alone is the first animation's
+# ("Bend"), the same image as naming it; at 0 s the strip stands straight,
+# another image.
+for pose in "--time 1" "--animation Bend --time 1" "--animation Bend"; do
+  "$penumbra" render --scene "$gltf_data/animated.gltf" $pose --camera-position 0,1,6 --look-at 0,1,0 \
+    --size 16x16 --spp 2 --validation --out "$work/pose-${pose//[ -]/}.exr" >/dev/null
+done
+"$penumbra" compare "$work/pose-time1.exr" "$work/pose-animationBendtime1.exr" --tolerance 0 >/dev/null
+if "$penumbra" compare "$work/pose-time1.exr" "$work/pose-animationBend.exr" --tolerance 1e-3 >/dev/null; then
+  echo "the animation did not move the skinned strip"; exit 1
+fi
 # A glTF file without lights is lit by the default environment and says so
 # (one line); --env none leaves it black, and says nothing.
 "$penumbra" render --scene "$gltf_data/attributes.gltf" --size 16x16 --spp 4 --validation \

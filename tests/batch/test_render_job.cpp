@@ -70,6 +70,7 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   job.vary = "sheen";
   job.set = "metallic=1";
   job.variant = "midnight";
+  job.animation = {"Walk", 1.0 / 3.0};  // not exact in decimal: read back bit for bit
   scene::Camera camera;
   camera.position = {0.25, -1.5, 3.75};
   camera.forward = {0.0f, -0.6f, 0.8f};
@@ -107,6 +108,8 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   CHECK(back.vary == job.vary);
   CHECK(back.set == job.set);
   CHECK(back.variant == job.variant);
+  CHECK(back.animation.animation == job.animation.animation);
+  CHECK(back.animation.seconds == job.animation.seconds);
   REQUIRE(back.camera.has_value());
   CHECK(back.camera->position == camera.position);
   CHECK(back.camera->forward == camera.forward);
@@ -246,8 +249,9 @@ TEST_CASE("render job: bad material overrides name the file and the field", "[re
       "h.json: \"materials[0].metallic\" must be a number");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"index\": 0", "\"index\": -1"), "i.json"),
                       "i.json: \"materials[0].index\" must be a whole number >= 0");
-  REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"lambert\"", "\"glass\""), "j.json"),
-                      "j.json: \"materials[0].model\" must be one of disney, lambert, phong");
+  REQUIRE_THROWS_WITH(
+      render::renderJobFromJson(broken("\"lambert\"", "\"glass\""), "j.json"),
+      "j.json: \"materials[0].model\" must be one of disney, lambert, phong, unlit");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(broken("\"thin\": false,", ""), "k.json"),
                       "k.json: \"materials[0].thin\" is missing");
 }
@@ -275,6 +279,8 @@ TEST_CASE("render job: out-of-range numbers and wrong types name the file and th
                       "s.json: \"radianceClamp\" must be a finite number");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("radianceClamp":-1)"), "s.json"),
                       ContainsSubstring("s.json: \"radianceClamp\" -1 is outside 0.."));
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("time":"soon")"), "s.json"),
+                      "s.json: \"time\" must be a finite number (seconds)");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("scene":["a"])"), "s.json"),
                       "s.json: \"scene\" must be a string (got an array)");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(record(R"("allEffects":"yes")"), "s.json"),

@@ -6,6 +6,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 
+#include "penumbra/scene/environment.h"
 #include "penumbra/scene/gltf_loader.h"
 #include "penumbra/scene/scene_loader.h"
 #include "render_test_utils.h"
@@ -140,6 +141,42 @@ TEST_CASE("glTF: leaning shading normals leak no light and stay finite", "[rende
     REQUIRE(image::meanRgb(above).g > 0.05);
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("glTF KHR_materials_unlit: the base colour is what is seen, under any light",
+          "[render][gpu][gltf]") {
+  auto device = test::makeTestDevice();
+  // unlit.gltf: base colour 0.5 times COLOR_0 (0.2, 0.4, 0.8), emission
+  // (1, 1, 1) to be ignored, framed by the loader. Under a white
+  // environment of radiance 2 a lit surface of that colour would show at
+  // least its albedo times 2 plus its reflection; an unlit one shows
+  // (0.1, 0.2, 0.4) exactly, and every sample agrees (no noise).
+  scene::Scene scene = scene::loadGltf(gltf("unlit.gltf"));
+  REQUIRE(scene.materials.at(0).model == scene::MaterialModel::Unlit);
+  scene.environment = scene::constantEnvironment(glm::vec3(2.0f));
+  const float expected[3] = {0.1f, 0.2f, 0.4f};
+  for (const auto integrator : {render::Integrator::Path, render::Integrator::Whitted}) {
+    render::PathTracerSettings settings;
+    settings.integrator = integrator;
+    settings.seed = 5;
+    const auto img = test::renderScene(*device, scene, 16, 16, 4, settings);
+    REQUIRE(image::countNonFinite(img) == 0);
+    const float* centre = img.pixel(8, 8);
+    for (int k = 0; k < 3; ++k) {
+      INFO("integrator " << int(integrator) << " channel " << k << ": " << centre[k]);
+      // float32 products of the colour factors: 1e-6 is rounding, not light.
+      CHECK(std::abs(centre[k] - expected[k]) <= 1e-6f);
+    }
+  }
+  // A black unlit surface stays black where a black Lambert one reflects
+  // the environment through its specular layer.
+  scene.materials.at(0).baseColor = glm::vec3(0.0f);
+  render::PathTracerSettings settings;
+  settings.seed = 6;
+  const auto black = test::renderScene(*device, scene, 16, 16, 4, settings);
+  CHECK(black.pixel(8, 8)[0] == 0.0f);
+  CHECK(black.pixel(8, 8)[1] == 0.0f);
+  CHECK(black.pixel(8, 8)[2] == 0.0f);
 }
 
 TEST_CASE("scene files merge glTF files with their transforms and cameras", "[scene][gltf]") {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "penumbra/scene/gltf_loader.h"
 #include "penumbra/util/error.h"
@@ -18,9 +19,10 @@
 namespace penumbra::test {
 
 // importGltf's error for `path`, checked to be one line naming the file.
-inline std::string gltfRefusal(const std::string& path, const scene::InputLimits& limits = {}) {
+inline std::string gltfRefusal(const std::string& path, const scene::InputLimits& limits = {},
+                               const scene::AnimationChoice& animation = {}) {
   try {
-    scene::importGltf(path, {}, limits);
+    scene::importGltf(path, {}, limits, animation);
   } catch (const Error& e) {
     const std::string message = e.what();
     CHECK(message.find(std::filesystem::path(path).filename().string()) != std::string::npos);
@@ -29,6 +31,11 @@ inline std::string gltfRefusal(const std::string& path, const scene::InputLimits
   }
   FAIL("no error for " << path);
   return "";
+}
+
+inline std::string gltfRefusalWith(const std::string& path,
+                                   const scene::AnimationChoice& animation) {
+  return gltfRefusal(path, {}, animation);
 }
 
 // A folder of its own under the system's temporary folder, removed with it.
@@ -122,5 +129,51 @@ inline std::string tgaHeader(uint32_t width, uint32_t height) {
   return std::string("\0\0\x0a", 3) + std::string(9, '\0') + littleEndian(width, 2) +
          littleEndian(height, 2) + std::string("\x20\0", 2) + std::string(172, '\xff');
 }
+
+// A glTF file's binary buffer and its views and accessors, one view per
+// accessor, written beside the JSON as "<name>.bin".
+class GltfWriter {
+ public:
+  // Float accessor of `type` (SCALAR, VEC3, VEC4, MAT4) holding `values`.
+  int floats(const std::vector<float>& values, const std::string& type, int components,
+             const std::string& extra = "") {
+    std::string bytes(values.size() * 4, '\0');
+    std::memcpy(bytes.data(), values.data(), bytes.size());
+    return add(bytes, 5126, type, int(values.size()) / components, extra);
+  }
+  // Unsigned byte VEC4 accessor (JOINTS_0).
+  int bytes4(const std::vector<uint8_t>& values) {
+    return add(std::string(values.begin(), values.end()), 5121, "VEC4", int(values.size() / 4), "");
+  }
+  std::string write(const test::TempFolder& folder, const std::string& name,
+                    const std::string& rest) const {
+    folder.write(name + ".bin", bin_);
+    return folder.write(name + ".gltf",
+                        fmt::format(R"({{"asset":{{"version":"2.0"}},
+          "buffers":[{{"uri":"{}.bin","byteLength":{}}}],
+          "bufferViews":[{}],"accessors":[{}],{}}})",
+                                    name, bin_.size(), join(views_), join(accessors_), rest));
+  }
+
+ private:
+  int add(const std::string& bytes, int componentType, const std::string& type, int count,
+          const std::string& extra) {
+    while (bin_.size() % 4) bin_ += '\0';
+    views_.push_back(fmt::format(R"({{"buffer":0,"byteOffset":{},"byteLength":{}}})", bin_.size(),
+                                 bytes.size()));
+    bin_ += bytes;
+    accessors_.push_back(
+        fmt::format(R"({{"bufferView":{},"componentType":{},"count":{},"type":"{}"{}}})",
+                    views_.size() - 1, componentType, count, type, extra));
+    return int(accessors_.size()) - 1;
+  }
+  static std::string join(const std::vector<std::string>& parts) {
+    std::string s;
+    for (const auto& p : parts) s += (s.empty() ? "" : ",") + p;
+    return s;
+  }
+  std::string bin_;
+  std::vector<std::string> views_, accessors_;
+};
 
 }  // namespace penumbra::test

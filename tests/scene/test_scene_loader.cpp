@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "gltf_test_files.h"
 #include "penumbra/image/image_io.h"
 #include "penumbra/scene/input_limits.h"
 #include "penumbra/scene/mesh_builders.h"
@@ -429,4 +430,42 @@ TEST_CASE("environment maps whose header claims more than 16384x8192 are refused
             ContainsSubstring("more than 16384x8192"));
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("scene files choose a glTF file's animation and time; the caller's choice wins",
+          "[gltf]") {
+  test::TempFolder folder("scene-animation");
+  // A triangle at node 0, moved LINEAR from x = 0 at 0 s to x = 4 at 2 s: at
+  // 1 s its corner (1,0,0) is at (3,0,0); at 0.5 s at (2,0,0).
+  test::GltfWriter w;
+  const int position =
+      w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3, R"(,"min":[0,0,0],"max":[1,1,0])");
+  const int times = w.floats({0, 2}, "SCALAR", 1);
+  const int moves = w.floats({0, 0, 0, 4, 0, 0}, "VEC3", 3);
+  w.write(folder, "moving",
+          fmt::format(R"(
+    "meshes":[{{"primitives":[{{"attributes":{{"POSITION":{}}}}}]}}],
+    "nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}],
+    "animations":[{{"name":"Slide","samplers":[{{"input":{},"output":{}}}],
+      "channels":[{{"sampler":0,"target":{{"node":0,"path":"translation"}}}}]}}])",
+                      position, times, moves));
+  auto cornerX = [](const scene::Scene& s) {
+    double most = -1e9;
+    for (const glm::vec3& p : s.meshes.at(0).positions)
+      most = std::max(most, (s.instances.at(0).transform * glm::dvec4(glm::dvec3(p), 1.0)).x);
+    return most;
+  };
+  const std::string text = R"({"format":"penumbra-scene","version":1,
+    "gltf":[{"file":"moving.gltf","animation":"Slide","time":1}]})";
+  CHECK(cornerX(scene::parseScene(text, "s.json", folder.path(""))) == Catch::Approx(3.0));
+  // The caller's choice (the command line's) over the entry's.
+  CHECK(cornerX(scene::parseScene(text, "s.json", folder.path(""), {}, {}, {"0", 0.5})) ==
+        Catch::Approx(2.0));
+  CHECK_THROWS_WITH(scene::parseScene(R"({"format":"penumbra-scene","version":1,
+    "gltf":[{"file":"moving.gltf","time":"soon"}]})",
+                                      "s.json", folder.path("")),
+                    ContainsSubstring("gltf[0]: \"time\" must be a number (seconds)"));
+  // A scene with no glTF file has nothing to animate.
+  CHECK_THROWS_WITH(scene::loadScene("cornell-box", {}, {}, {"", 1.0}),
+                    ContainsSubstring("has no glTF files, so no animations to draw at a time"));
 }

@@ -31,7 +31,8 @@ struct Named {
 };
 constexpr Named<scene::MaterialModel> kModels[] = {{scene::MaterialModel::Disney, "disney"},
                                                    {scene::MaterialModel::Lambert, "lambert"},
-                                                   {scene::MaterialModel::Phong, "phong"}};
+                                                   {scene::MaterialModel::Phong, "phong"},
+                                                   {scene::MaterialModel::Unlit, "unlit"}};
 
 // The Material menu's scalar parameters (the Disney ones, then Phong's).
 struct FloatField {
@@ -216,7 +217,7 @@ MaterialOverride overrideFromJson(const json& j, const std::string& key, const R
   const json& model = field("model");
   std::optional<scene::MaterialModel> parsed;
   if (model.is_string()) parsed = parseMaterialModel(model.get<std::string>());
-  if (!parsed) r.fail(key + ".model", "must be one of disney, lambert, phong");
+  if (!parsed) r.fail(key + ".model", "must be one of disney, lambert, phong, unlit");
   m.model = *parsed;
   const json& color = field("baseColor");
   if (!color.is_array() || color.size() != 3)
@@ -332,6 +333,8 @@ std::string renderJobToJson(const RenderJob& job) {
   doc["vary"] = job.vary;
   doc["set"] = job.set;
   if (!job.variant.empty()) doc["variant"] = job.variant;
+  if (!job.animation.animation.empty()) doc["animation"] = job.animation.animation;
+  if (job.animation.seconds) doc["time"] = *job.animation.seconds;
   if (job.camera) {
     doc["camera"] = {{"position", toJson(job.camera->position)},
                      {"forward", toJson(job.camera->forward)},
@@ -389,6 +392,12 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source,
   r.read("vary", job.vary);
   r.read("set", job.set);
   r.read("variant", job.variant);
+  r.read("animation", job.animation.animation);
+  if (doc.contains("time")) {
+    if (!doc["time"].is_number() || !std::isfinite(doc["time"].get<double>()))
+      r.fail("time", "must be a finite number (seconds)");
+    job.animation.seconds = doc["time"].get<double>();
+  }
   if (doc.contains("camera")) {
     const json& c = doc["camera"];
     if (!c.is_object()) r.fail("camera", "must be an object");

@@ -6,6 +6,7 @@
 //
 //   { "format": "penumbra-render", "version": 1,
 //     "scene": "cornell-box", "vary": "", "set": "",
+//     "animation": "Walk", "time": 1.5,       // optional (scene::AnimationChoice)
 //     "camera": { "position": [x,y,z], "forward": [..], "up": [..], "verticalFovDegrees": 39.3,
 //                 "apertureRadius": 0, "focusDistance": 1, "apertureBlades": 0 },
 //     "width": 512, "height": 512, "spp": 64, "sppPerFrame": 4,
@@ -38,6 +39,7 @@
 
 #include "penumbra/batch/render_settings.h"
 #include "penumbra/render/path_tracer.h"
+#include "penumbra/scene/gltf_loader.h"
 #include "penumbra/scene/input_limits.h"
 #include "penumbra/scene/scene.h"
 
@@ -78,6 +80,7 @@ struct RenderJob {
   std::string vary, set;                // material-test row (scene::changeMaterialRow)
   std::string
       variant;  // material variant by name or index (scene::selectMaterialVariant); empty: none
+  scene::AnimationChoice animation;     // the moment of the glTF files' animations; empty: none
   std::optional<scene::Camera> camera;  // absent: the scene's camera
   uint32_t width = 512, height = 512;
   uint32_t spp = 64;

@@ -190,7 +190,9 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.phongExponent = m.exponent;
   d.reflectivity = m.reflectivity;
   d.transparency = m.transparency;
-  d.model = m.model == scene::MaterialModel::Phong ? MATERIAL_MODEL_PHONG : MATERIAL_MODEL_DISNEY;
+  d.model = m.model == scene::MaterialModel::Phong   ? MATERIAL_MODEL_PHONG
+            : m.model == scene::MaterialModel::Unlit ? MATERIAL_MODEL_UNLIT
+                                                     : MATERIAL_MODEL_DISNEY;
   d.flags = 0;
   if (m.thin) d.flags |= MATERIAL_FLAG_THIN;
   if (m.model == scene::MaterialModel::Lambert) d.flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;

@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "penumbra/scene/camera_placement.h"
+#include "penumbra/scene/gltf_animation.h"
 #include "penumbra/scene/gltf_container.h"
 #include "penumbra/scene/gltf_draco.h"
 #include "penumbra/scene/gltf_instancing.h"
@@ -23,6 +24,7 @@
 #include "penumbra/scene/gltf_materials.h"
 #include "penumbra/scene/gltf_meshopt.h"
 #include "penumbra/scene/gltf_primitives.h"
+#include "penumbra/scene/gltf_skin.h"
 #include "penumbra/scene/gltf_textures.h"
 #include "penumbra/scene/tinygltf.h"
 #include "penumbra/util/error.h"
@@ -57,28 +59,37 @@ std::string named(const char* kind, size_t index, const std::string& name) {
 
 // In double, as glTF stores it: a big root translation (georeferenced data)
 // must survive composition (scene.h says why).
-glm::dmat4 localTransform(const tinygltf::Node& node, const std::string& where) {
+// `pose`: what an animation sets on the node, in place of its own values.
+glm::dmat4 localTransform(const tinygltf::Node& node, const gltf::NodePose& pose,
+                          const std::string& where) {
   glm::dmat4 m(1.0);
   auto sizeIs = [&](const std::vector<double>& v, size_t n, const char* what) {
     if (!v.empty() && v.size() != n)
       throw Error(fmt::format("{}: {} has {} numbers, expected {}", where, what, v.size(), n));
     return !v.empty();
   };
-  if (sizeIs(node.matrix, 16, "matrix")) {
+  const bool animated = pose.translation || pose.rotation || pose.scale;
+  if (sizeIs(node.matrix, 16, "matrix") && !animated) {
     for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = node.matrix[size_t(i)];  // column-major
   } else {
     glm::dmat4 t(1.0), r(1.0), s(1.0);
-    if (sizeIs(node.translation, 3, "translation"))
+    if (pose.translation)
+      t = glm::translate(glm::dmat4(1.0), *pose.translation);
+    else if (sizeIs(node.translation, 3, "translation"))
       t = glm::translate(glm::dmat4(1.0),
                          glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
-    if (sizeIs(node.rotation, 4, "rotation")) {
+    if (pose.rotation) {
+      r = glm::mat4_cast(*pose.rotation);
+    } else if (sizeIs(node.rotation, 4, "rotation")) {
       // glTF stores (x, y, z, w); glm::quat's constructor takes w first.
       glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
       const double len = glm::length(q);
       if (!(len > 0.0)) throw Error(fmt::format("{}: rotation is not a unit quaternion", where));
       r = glm::mat4_cast(q / len);
     }
-    if (sizeIs(node.scale, 3, "scale"))
+    if (pose.scale)
+      s = glm::scale(glm::dmat4(1.0), *pose.scale);
+    else if (sizeIs(node.scale, 3, "scale"))
       s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     m = t * r * s;
   }
@@ -96,11 +107,13 @@ class Importer {
         file_(std::move(file)),
         textures_(model, decoding, at(), out_.scene, out_.warnings) {
     budget_.limits = limits;
+    pose_.nodes.resize(model.nodes.size());
   }
 
-  GltfImport run() {
+  GltfImport run(const AnimationChoice& animation) {
     out_.scene.name = fs::path(file_).stem().string();
     checkExtensions();
+    pose(animation);
     convertMaterials();
     readVariants();
     textures_.warnUnusedBrokenImages();
@@ -128,6 +141,90 @@ class Importer {
     for (const auto& name : model_.extensionsUsed)
       if (!gltf::isSupportedExtension(name))
         warn(fmt::format("{}: optional extension {} is not supported; ignored", at(), name));
+  }
+
+  // The animation's values at the chosen time, in place of the nodes' own.
+  void pose(const AnimationChoice& choice) {
+    if (choice.empty()) return;
+    if (choice.animation.empty() && model_.animations.empty())
+      throw Error(fmt::format("{}: the file has no animations to draw at a time", at()));
+    const double seconds = choice.seconds.value_or(0.0);
+    if (!std::isfinite(seconds))
+      throw Error(fmt::format("{}: the animation time {} is not a finite number", at(), seconds));
+    // "all": every animation at once, a later one winning where two animate
+    // the same property (files whose animations are parts of one motion).
+    const bool all = choice.animation == "all" &&
+                     std::none_of(model_.animations.begin(), model_.animations.end(),
+                                  [](const auto& a) { return a.name == "all"; });
+    std::vector<size_t> chosen;
+    if (all)
+      for (size_t i = 0; i < model_.animations.size(); ++i) chosen.push_back(i);
+    else
+      chosen.push_back(
+          choice.animation.empty() ? 0 : gltf::findAnimation(model_, choice.animation, at()));
+    pose_.start = INFINITY;
+    pose_.end = -INFINITY;
+    for (size_t index : chosen) {
+      const gltf::AnimationPose one =
+          gltf::evaluateAnimation(model_, index, seconds, at(), budget_.limits, out_.warnings);
+      for (size_t n = 0; n < one.nodes.size(); ++n) {
+        const gltf::NodePose& from = one.nodes[n];
+        gltf::NodePose& to = pose_.nodes[n];
+        if (from.translation) to.translation = from.translation;
+        if (from.rotation) to.rotation = from.rotation;
+        if (from.scale) to.scale = from.scale;
+        if (from.weights) to.weights = from.weights;
+      }
+      pose_.start = std::min(pose_.start, one.start);
+      pose_.end = std::max(pose_.end, one.end);
+    }
+    const std::string name = all ? std::string("the animations")
+                                 : named("animation", chosen[0], model_.animations[chosen[0]].name);
+    if (seconds < pose_.start || seconds > pose_.end)
+      warn(fmt::format(
+          "{}: {:g} s is outside the keyframes of {} ({:g} to {:g} s); the {} pose is "
+          "drawn",
+          at(), seconds, name, pose_.start, pose_.end, seconds < pose_.start ? "first" : "last"));
+  }
+
+  // Node `index`'s world transform in the drawn pose, through its first
+  // parent (for skin joints, which need not lie on the path being
+  // traversed).
+  glm::dmat4 worldOf(int index) {
+    if (parents_.empty()) {
+      parents_.assign(model_.nodes.size(), -1);
+      worlds_.resize(model_.nodes.size());
+      for (size_t n = model_.nodes.size(); n-- > 0;)
+        for (int c : model_.nodes[n].children)
+          if (c >= 0 && size_t(c) < parents_.size()) parents_[size_t(c)] = int(n);
+    }
+    std::vector<int> chain;
+    int n = index;
+    while (n >= 0 && !worlds_[size_t(n)]) {
+      chain.push_back(n);
+      if (chain.size() > model_.nodes.size())
+        throw Error(fmt::format("{} {}: cyclic node graph (the node is its own ancestor)", at(),
+                                named("node", size_t(index), model_.nodes[size_t(index)].name)));
+      n = parents_[size_t(n)];
+    }
+    glm::dmat4 world = n >= 0 ? *worlds_[size_t(n)] : glm::dmat4(1.0);
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+      const auto& node = model_.nodes[size_t(*it)];
+      world =
+          world * localTransform(node, pose_.nodes[size_t(*it)],
+                                 fmt::format("{} {}", at(), named("node", size_t(*it), node.name)));
+      worlds_[size_t(*it)] = world;
+    }
+    return world;
+  }
+
+  // The morph weights node `index` draws its mesh with: the animation's,
+  // else the node's own, else the mesh's defaults.
+  std::vector<double> morphWeightsOf(size_t index) const {
+    const auto& node = model_.nodes[index];
+    if (pose_.nodes[index].weights) return *pose_.nodes[index].weights;
+    if (!node.weights.empty()) return node.weights;
+    return model_.meshes[size_t(node.mesh)].weights;
   }
 
   void convertMaterials() {
@@ -226,14 +323,18 @@ class Importer {
     return model_.scenes[size_t(index)].nodes;
   }
 
-  // The scene meshes of glTF mesh `index`, one per triangle primitive,
-  // converted the first time a node uses it.
-  const std::vector<uint32_t>& meshesOf(int index, const std::string& where) {
-    if (index < 0 || size_t(index) >= model_.meshes.size())
-      throw Error(fmt::format("{}: mesh {} does not exist ({} meshes)", where, index,
-                              model_.meshes.size()));
-    auto it = meshes_.find(index);
-    if (it != meshes_.end()) return it->second;
+  // The scene meshes of glTF mesh `index` in `shape`, one per triangle
+  // primitive. Unskinned ones are converted the first time a node draws the
+  // mesh with those morph weights, and shared after.
+  std::vector<uint32_t> meshesOf(int index, const gltf::PrimitiveShape& shape) {
+    if (!shape.joints.empty()) return convertMesh(index, shape);
+    auto key = std::make_pair(index, shape.morphWeights);
+    auto it = meshes_.find(key);
+    if (it == meshes_.end()) it = meshes_.emplace(key, convertMesh(index, shape)).first;
+    return it->second;
+  }
+
+  std::vector<uint32_t> convertMesh(int index, const gltf::PrimitiveShape& shape) {
     std::vector<uint32_t> result;
     const auto& src = model_.meshes[size_t(index)];
     for (size_t p = 0; p < src.primitives.size(); ++p) {
@@ -251,7 +352,7 @@ class Importer {
                                 prim.material, model_.materials.size()));
       }
       auto mesh =
-          gltf::convertPrimitive(model_, prim, material, src.weights, name, out_.warnings, budget_);
+          gltf::convertPrimitive(model_, prim, material, shape, name, out_.warnings, budget_);
       if (!mesh) continue;
       warnMissingTexCoords(*mesh, name);
       mesh->name =
@@ -260,7 +361,7 @@ class Importer {
       result.push_back(uint32_t(out_.scene.meshes.size()));
       out_.scene.meshes.push_back(std::move(*mesh));
     }
-    return meshes_.emplace(index, std::move(result)).first->second;
+    return result;
   }
 
   void addCamera(size_t nodeIndex, const glm::dmat4& world) {
@@ -336,8 +437,18 @@ class Importer {
       onPath[index] = 1;
       stack.push_back({step.node, glm::dmat4(1.0), true});
 
-      const glm::dmat4 world = step.parent * localTransform(node, where);
+      const glm::dmat4 world = step.parent * localTransform(node, pose_.nodes[index], where);
       if (node.mesh >= 0) {
+        if (size_t(node.mesh) >= model_.meshes.size())
+          throw Error(fmt::format("{}: mesh {} does not exist ({} meshes)", where, node.mesh,
+                                  model_.meshes.size()));
+        gltf::PrimitiveShape shape{morphWeightsOf(index), {}};
+        // A skinned mesh is placed by its joints alone; its vertices are
+        // taken into the node's space, which the instance keeps (gltf_skin.h).
+        const bool skinned = node.skin >= 0 && glm::determinant(world) != 0.0;
+        if (skinned)
+          shape.joints = gltf::jointMatrices(
+              model_, node.skin, world, [&](int n) { return worldOf(n); }, where, budget_.limits);
         // EXT_mesh_gpu_instancing: a copy of the mesh per instance, in the
         // node's space; otherwise the one at the node.
         std::vector<glm::dmat4> placements;
@@ -345,14 +456,7 @@ class Importer {
              gltf::gpuInstanceTransforms(model_, node, where, budget_.limits))
           placements.push_back(world * copy);
         if (placements.empty()) placements.push_back(world);
-        // Meshes are converted once, at their own default morph weights.
-        if (!node.weights.empty() && size_t(node.mesh) < model_.meshes.size() &&
-            node.weights != model_.meshes[size_t(node.mesh)].weights)
-          warn(
-              fmt::format("{}: its morph target weights are not applied (the mesh's default "
-                          "weights are drawn)",
-                          where));
-        for (uint32_t mesh : meshesOf(node.mesh, where))
+        for (uint32_t mesh : meshesOf(node.mesh, shape))
           for (const glm::dmat4& placement : placements) {
             requireAtMost(out_.scene.instances.size() + 1, budget_.limits.maxInstances,
                           "maxInstances", at() + " instance count");
@@ -362,10 +466,8 @@ class Importer {
       if (node.camera >= 0) addCamera(index, world);
       if (auto light = gltf::nodeLight(model_, node, world, where))
         out_.scene.pointLights.push_back(*light);
-      if (node.skin >= 0 && !warnedSkin_) {
-        warn(fmt::format("{}: skins are ignored (bind pose only)", at()));
-        warnedSkin_ = true;
-      }
+      if (node.skin >= 0 && node.mesh >= 0 && glm::determinant(world) == 0.0)
+        warn(fmt::format("{}: its transform is singular; its skin is not applied", where));
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
         stack.push_back({*it, world, false});
     }
@@ -378,9 +480,11 @@ class Importer {
   gltf::DecodeBudget budget_;
   std::vector<bool> invisible_;
   std::optional<uint32_t> defaultMaterial_;
-  std::map<int, std::vector<uint32_t>> meshes_;
+  std::map<std::pair<int, std::vector<double>>, std::vector<uint32_t>> meshes_;
   std::vector<std::pair<size_t, NamedCamera>> cameras_;
-  bool warnedSkin_ = false;
+  gltf::AnimationPose pose_;
+  std::vector<int> parents_;                       // each node's first parent, -1 for none
+  std::vector<std::optional<glm::dmat4>> worlds_;  // worldOf's results
 };
 
 }  // namespace
@@ -444,9 +548,20 @@ std::string expandNothing(const std::string& path, void*) {
 // before tinygltf reads it: a compressed mesh or image would otherwise fail
 // in tinygltf with a message about what it found instead (an accessor
 // without a buffer view, an unknown image type).
+//
+// Skins without "joints" (files from before glTF 2.0 was final, which had
+// "jointNames") are refused here too: tinygltf fails them without a reason.
 void requireSupportedExtensions(std::string_view jsonText, const std::string& at) {
   const auto doc = nlohmann::json::parse(jsonText, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return;  // tinygltf says what is wrong
+  if (const auto skins = doc.find("skins"); skins != doc.end() && skins->is_array())
+    for (size_t i = 0; i < skins->size(); ++i)
+      if (!(*skins)[i].is_object() || !(*skins)[i].contains("joints") ||
+          !(*skins)[i].at("joints").is_array())
+        throw Error(fmt::format("{}: skin {} has no \"joints\" array{}", at, i,
+                                (*skins)[i].is_object() && (*skins)[i].contains("jointNames")
+                                    ? " (it has \"jointNames\", from a draft before glTF 2.0)"
+                                    : ""));
   if (!doc.contains("extensionsRequired")) return;
   const nlohmann::json& required = doc.at("extensionsRequired");
   if (!required.is_array()) return;
@@ -478,8 +593,8 @@ std::string_view jsonText(const std::vector<unsigned char>& data, bool binary) {
 
 }  // namespace
 
-GltfImport importGltf(const std::string& path, const FileAccess& access,
-                      const InputLimits& limits) {
+GltfImport importGltf(const std::string& path, const FileAccess& access, const InputLimits& limits,
+                      const AnimationChoice& animation) {
   const std::string at = fmt::format("glTF '{}'", path);
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw Error(fmt::format("{}: is a folder, not a file", at));
@@ -544,14 +659,15 @@ GltfImport importGltf(const std::string& path, const FileAccess& access,
   }
   gltf::decodeMeshoptViews(model, limits, at);
   gltf::decodeDracoPrimitives(model, limits, at);
-  GltfImport result = Importer(model, decoding, path, limits).run();
+  GltfImport result = Importer(model, decoding, path, limits).run(animation);
   if (!warn.empty())
     result.warnings.insert(result.warnings.begin(), fmt::format("{}: {}", at, oneLine(warn)));
   return result;
 }
 
-Scene loadGltf(const std::string& path, const FileAccess& access, const InputLimits& limits) {
-  GltfImport result = importGltf(path, access, limits);
+Scene loadGltf(const std::string& path, const FileAccess& access, const InputLimits& limits,
+               const AnimationChoice& animation) {
+  GltfImport result = importGltf(path, access, limits, animation);
   for (const auto& w : result.warnings) log::warning("{}", w);
   return std::move(result.scene);
 }

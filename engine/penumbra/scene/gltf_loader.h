@@ -12,6 +12,10 @@
 // - Without NORMAL a primitive gets flat normals (its vertices are unshared);
 //   without TANGENT, tangents are generated from TEXCOORD_0
 //   (scene/mesh_attributes.h).
+// - Skinned meshes follow their joints (gltf_skin.h); nodes and morph
+//   weights take an animation's values at a chosen time (AnimationChoice,
+//   gltf_animation.h). A mesh drawn with other morph weights, or skinned, is
+//   a scene Mesh of its own.
 // - Perspective cameras become Scene::cameras; the scene's view is the
 //   camera of the lowest-numbered node in the scene, or, without one, a view
 //   down -z that frames the scene's bounds.
@@ -22,6 +26,7 @@
 //   unsupported one that is only used gives a warning naming it.
 // Every failure on bad input is one penumbra::Error line naming the file and
 // the part of it at fault.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +44,18 @@ struct FileAccess {
   bool allowOutsideFolder = false;  // --allow-external-files
 };
 
+// The moment of the file's animations to draw. By default none: the
+// nodes' own transforms and morph weights (skins follow their joints there,
+// the rest pose). With `seconds` and no `animation`, the file's first
+// animation; with `animation` and no `seconds`, its time 0.
+struct AnimationChoice {
+  // Name, or index ("0" the first) where no animation has that name; "all":
+  // every animation at once (later ones win on shared targets).
+  std::string animation;
+  std::optional<double> seconds;
+  bool empty() const { return animation.empty() && !seconds; }
+};
+
 struct GltfImport {
   Scene scene;
   std::vector<std::string> warnings;  // one line each, already naming the file
@@ -48,12 +65,13 @@ struct GltfImport {
 // `limits` bound what the file may make it allocate (input_limits.h): JSON
 // nesting, accessor element counts, decoded bytes, triangles, instances,
 // node visits and image sizes (read from each image's header first).
+// `animation`: the moment drawn (AnimationChoice).
 GltfImport importGltf(const std::string& path, const FileAccess& access = {},
-                      const InputLimits& limits = {});
+                      const InputLimits& limits = {}, const AnimationChoice& animation = {});
 
 // importGltf, with its warnings written to the log.
 Scene loadGltf(const std::string& path, const FileAccess& access = {},
-               const InputLimits& limits = {});
+               const InputLimits& limits = {}, const AnimationChoice& animation = {});
 
 // Whether `path` names a glTF file by its extension (.gltf, .glb; any case).
 bool isGltfPath(const std::string& path);

@@ -88,7 +88,7 @@ const std::vector<std::string_view>& supportedExtensions() {
   static const std::vector<std::string_view> names{
       "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
       "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
-      "KHR_materials_sheen", "KHR_texture_transform",
+      "KHR_materials_sheen", "KHR_materials_unlit", "KHR_texture_transform",
       "KHR_materials_variants",   // Scene::materialVariants, --variant
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
@@ -218,6 +218,13 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     const glm::vec3 color = glm::clamp(vec3(*e, "sheenColorFactor", glm::vec3(0.0f)), 0.0f, 1.0f);
     m.sheen = std::max({color.x, color.y, color.z});
     m.sheenTint = 0.0f;
+  }
+
+  // Only the base colour (factor, texture, COLOR_0) of an unlit material
+  // counts; its emission would otherwise be tabulated as a light.
+  if (extension(src, "KHR_materials_unlit")) {
+    m.model = MaterialModel::Unlit;
+    m.emission = glm::vec3(0.0f);
   }
   return out;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "penumbra/scene/gltf_accessors.h"
+#include "penumbra/scene/gltf_skin.h"
 #include "penumbra/scene/mesh_attributes.h"
 #include "penumbra/scene/tinygltf.h"
 #include "penumbra/scene/triangle_order.h"
@@ -48,7 +49,7 @@ constexpr const char* kAttributes[] = {"NORMAL", "TEXCOORD_0", "TEXCOORD_1", "TA
 
 // Charges what converting `p` reads and makes to `budget`, from the
 // accessors' declared counts, before any of it is allocated.
-void charge(const tinygltf::Model& model, const tinygltf::Primitive& p, int position,
+void charge(const tinygltf::Model& model, const tinygltf::Primitive& p, int position, bool skinned,
             const std::string& where, DecodeBudget& budget) {
   const InputLimits& limits = budget.limits;
   uint64_t bytes = decodedBytes(model, position, limits, where + " POSITION");
@@ -61,6 +62,10 @@ void charge(const tinygltf::Model& model, const tinygltf::Primitive& p, int posi
   for (const char* name : kAttributes)
     if (const int index = attribute(p, name); index >= 0)
       bytes += decodedBytes(model, index, limits, fmt::format("{} {}", where, name));
+  if (skinned)
+    for (const std::string& name : skinAttributes(p))
+      bytes += decodedBytes(model, attribute(p, name.c_str()), limits,
+                            fmt::format("{} {}", where, name));
   for (size_t t = 0; t < p.targets.size(); ++t)
     for (const auto& [name, index] : p.targets[t])
       bytes += decodedBytes(model, index, limits, fmt::format("{} target {} {}", where, t, name));
@@ -123,7 +128,7 @@ void addMorphDisplacements(const tinygltf::Model& model, const tinygltf::Primiti
 }
 
 std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& p,
-                                     uint32_t material, const std::vector<double>& morphWeights,
+                                     uint32_t material, const PrimitiveShape& shape,
                                      const std::string& where, std::vector<std::string>& warnings,
                                      DecodeBudget& budget) {
   if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -136,7 +141,8 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     warnings.push_back(fmt::format("{}: has no POSITION; skipped", where));
     return std::nullopt;
   }
-  charge(model, p, position, where, budget);
+  charge(model, p, position, !shape.joints.empty(), where, budget);
+  const std::vector<double>& morphWeights = shape.morphWeights;
   const InputLimits& limits = budget.limits;
   Mesh mesh;
   mesh.material = material;
@@ -148,6 +154,13 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
     if (!std::isfinite(w))
       throw Error(fmt::format("{}: a morph target weight is not finite", where));
   addMorphDisplacements(model, p, morphWeights, "POSITION", mesh.positions, where, limits);
+  // Skinning follows morphing (glTF 2.0, 3.7.3.3).
+  const std::vector<glm::mat4> skin =
+      shape.joints.empty()
+          ? std::vector<glm::mat4>()
+          : vertexSkinMatrices(model, p, shape.joints, vertexCount, where, limits, warnings);
+  for (size_t v = 0; v < skin.size(); ++v)
+    mesh.positions[v] = glm::vec3(skin[v] * glm::vec4(mesh.positions[v], 1.0f));
 
   const std::vector<uint32_t> sequence =
       p.indices >= 0 ? readIndices(model, p.indices, where + " indices", limits)
@@ -198,6 +211,8 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   };
   mesh.normals = toVectors<glm::vec3>(readAttribute("NORMAL", 3), accessorName("NORMAL"));
   addMorphDisplacements(model, p, morphWeights, "NORMAL", mesh.normals, where, limits);
+  for (size_t v = 0; v < skin.size() && !mesh.normals.empty(); ++v)
+    mesh.normals[v] = glm::transpose(glm::inverse(glm::mat3(skin[v]))) * mesh.normals[v];
   for (auto& n : mesh.normals) {
     const float len = glm::length(n);
     n = len > 0.0f ? n / len : glm::vec3(0.0f);
@@ -206,6 +221,9 @@ std::optional<Mesh> convertPrimitive(const tinygltf::Model& model, const tinyglt
   mesh.uv1 = toVectors<glm::vec2>(readAttribute("TEXCOORD_1", 2), accessorName("TEXCOORD_1"));
   mesh.tangents = toVectors<glm::vec4>(readAttribute("TANGENT", 4), accessorName("TANGENT"));
   addMorphDisplacements(model, p, morphWeights, "TANGENT", mesh.tangents, where, limits);
+  for (size_t v = 0; v < skin.size() && !mesh.tangents.empty(); ++v)
+    mesh.tangents[v] =
+        glm::vec4(glm::mat3(skin[v]) * glm::vec3(mesh.tangents[v]), mesh.tangents[v].w);
   for (auto& t : mesh.tangents) {
     const float len = glm::length(glm::vec3(t));
     t = glm::vec4(len > 0.0f ? glm::vec3(t) / len : glm::vec3(0.0f), t.w < 0.0f ? -1.0f : 1.0f);

@@ -31,18 +31,25 @@ struct DecodeBudget {
 // The line telling what `budget` dropped (file `at`), or "" when nothing was.
 std::string degenerateTrianglesWarning(const DecodeBudget& budget, const std::string& at);
 
+// The shape a primitive is drawn in: its morph target weights (the mesh's
+// default weights, its node's, or an animation's at the chosen time) and,
+// for a node with a skin, the skin's joint matrices in the node's space
+// (gltf_skin.h); empty for an unskinned node.
+struct PrimitiveShape {
+  std::vector<double> morphWeights;
+  std::vector<glm::mat4> joints;
+};
+
 // The primitive as a triangle list, or nothing (with a warning) when it is
 // not made of triangles or has no positions. `material` is the scene
-// material index to give it; `morphWeights` the mesh's default morph
-// target weights (glTF mesh.weights: the shape drawn without animation);
+// material index to give it; `shape` the morph weights and skin to apply;
 // `where` names it in errors. Before reading
 // anything, the accessors it reads and the triangles its index sequence can
 // make are charged to `budget`, and a primitive that would pass its limits
 // is an error naming the accessor or the count and the limit.
 std::optional<Mesh> convertPrimitive(const tinygltf::Model& model,
                                      const tinygltf::Primitive& primitive, uint32_t material,
-                                     const std::vector<double>& morphWeights,
-                                     const std::string& where, std::vector<std::string>& warnings,
-                                     DecodeBudget& budget);
+                                     const PrimitiveShape& shape, const std::string& where,
+                                     std::vector<std::string>& warnings, DecodeBudget& budget);
 
 }  // namespace penumbra::scene::gltf

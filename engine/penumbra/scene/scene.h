@@ -59,6 +59,7 @@ enum class MaterialModel {
   Disney,   // the principled BSDF with Burley diffuse
   Lambert,  // Disney parameters, but Lambertian diffuse (glTF, the Cornell box)
   Phong,    // Whitted's Phong model; the path tracer maps it onto Disney
+  Unlit,    // glTF KHR_materials_unlit: baseColor is the radiance seen; it reflects no light
 };
 
 struct Material {

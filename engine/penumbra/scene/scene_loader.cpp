@@ -38,8 +38,11 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
     material = Material::lambert(name, glm::vec3(0.8f));
   } else if (model == "phong") {
     material.model = MaterialModel::Phong;
+  } else if (model == "unlit") {
+    material.model = MaterialModel::Unlit;
   } else if (model != "disney") {
-    throw Error(fmt::format("{}: unknown model '{}' (disney, lambert, phong)", where, model));
+    throw Error(
+        fmt::format("{}: unknown model '{}' (disney, lambert, phong, unlit)", where, model));
   }
   material.name = name;
   if (m.contains("baseColor"))
@@ -166,9 +169,31 @@ void merge(Scene& scene, const Scene& part, const glm::dmat4& t) {
 }
 
 // The "gltf" list; returns the view the first file suggests.
+// The moment of a "gltf" entry's animations: the caller's choice where
+// given, else the entry's "animation" and "time".
+AnimationChoice entryAnimation(const json& g, const std::string& where,
+                               const AnimationChoice& given) {
+  if (!given.empty()) return given;
+  AnimationChoice choice;
+  if (g.contains("animation")) {
+    const json& a = g.at("animation");
+    if (a.is_string())
+      choice.animation = a.get<std::string>();
+    else if (a.is_number_unsigned())
+      choice.animation = std::to_string(a.get<uint64_t>());
+    else
+      throw Error(where + ": \"animation\" must be a name or an index >= 0");
+  }
+  if (g.contains("time")) {
+    if (!g.at("time").is_number()) throw Error(where + ": \"time\" must be a number (seconds)");
+    choice.seconds = g.at("time").get<double>();
+  }
+  return choice;
+}
+
 std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::string& at,
                                     const std::string& baseDirectory, const FileAccess& access,
-                                    const InputLimits& limits) {
+                                    const InputLimits& limits, const AnimationChoice& animation) {
   if (!list.is_array()) throw Error(at + ": \"gltf\" must be an array");
   std::optional<Camera> view;
   for (size_t i = 0; i < list.size(); ++i) {
@@ -178,7 +203,7 @@ std::optional<Camera> loadGltfParts(Scene& scene, const json& list, const std::s
     if (path.is_relative() && !baseDirectory.empty())
       path = std::filesystem::path(baseDirectory) / path;
     const glm::dmat4 t = readTransform(g, where);
-    Scene part = loadGltf(path.string(), access, limits);
+    Scene part = loadGltf(path.string(), access, limits, entryAnimation(g, where, animation));
     if (g.contains("camera")) selectCamera(part, requireString(g, "camera", where));
     // Each file is bounded on its own; together they must fit too.
     requireAtMost(storedTriangles(scene) + storedTriangles(part), limits.maxTriangles,
@@ -342,7 +367,8 @@ Mesh parseQuadMesh(const json& m, const std::string& numbered, const std::string
 }  // namespace
 
 Scene parseScene(std::string_view text, const std::string& source, const std::string& baseDirectory,
-                 const FileAccess& access, const InputLimits& limits) {
+                 const FileAccess& access, const InputLimits& limits,
+                 const AnimationChoice& animation) {
   const std::string at = "scene '" + source + "'";
   // Bounded before parsing: the tree takes many times the text, and
   // copying or destroying it recurses per level.
@@ -370,6 +396,8 @@ Scene parseScene(std::string_view text, const std::string& source, const std::st
   if (!(scale > 0.0f)) throw Error(fmt::format("{}: \"unitScale\" {} must be > 0", at, scale));
 
   const bool hasGltf = doc.contains("gltf");
+  if (!hasGltf && !animation.empty())
+    throw Error(at + ": has no glTF files, so no animations to draw at a time");
   if (!hasGltf || doc.contains("camera")) {
     scene.camera = parseCamera(require(doc, "camera", at), at, scale);
   }
@@ -419,24 +447,24 @@ Scene parseScene(std::string_view text, const std::string& source, const std::st
     addMaterialRow(
         scene, parseMaterialRow(doc.at("materialTest"), scene, materialIndex, scale, at, limits));
   if (hasGltf) {
-    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory, access, limits);
+    auto view = loadGltfParts(scene, doc.at("gltf"), at, baseDirectory, access, limits, animation);
     if (!doc.contains("camera") && view) scene.camera = *view;
   }
   validate(scene);
   return scene;
 }
 
-Scene loadScene(const std::string& nameOrPath, const FileAccess& access,
-                const InputLimits& limits) {
+Scene loadScene(const std::string& nameOrPath, const FileAccess& access, const InputLimits& limits,
+                const AnimationChoice& animation) {
   if (auto builtIn = embedded::find(nameOrPath + ".json"))
-    return parseScene(*builtIn, nameOrPath, "", access, limits);
+    return parseScene(*builtIn, nameOrPath, "", access, limits, animation);
   std::error_code ec;
   if (std::filesystem::is_directory(nameOrPath, ec))
     throw Error(fmt::format(
         "scene '{}': is a folder; give a scene file (.json), a glTF file (.gltf, .glb) or a "
         "built-in scene name",
         nameOrPath));
-  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access, limits);
+  if (isGltfPath(nameOrPath)) return loadGltf(nameOrPath, access, limits, animation);
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) {
     std::string names;
     for (const auto& n : builtInSceneNames()) names += (names.empty() ? "" : ", ") + n;
@@ -456,7 +484,8 @@ Scene loadScene(const std::string& nameOrPath, const FileAccess& access,
   if (!file.good() && !file.eof())
     throw Error(fmt::format("scene '{}': cannot read the file", nameOrPath));
   return parseScene(text.str(), nameOrPath,
-                    std::filesystem::path(nameOrPath).parent_path().string(), access, limits);
+                    std::filesystem::path(nameOrPath).parent_path().string(), access, limits,
+                    animation);
 }
 
 std::vector<std::string> builtInSceneNames() {

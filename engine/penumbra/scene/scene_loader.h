@@ -12,7 +12,8 @@
 //       model "disney" (default): baseColor, metallic, roughness, anisotropic,
 //         specular, specularTint, sheen, sheenTint, clearcoat, clearcoatGloss,
 //         specTrans, ior, subsurface, thin; "lambert": albedo (= baseColor);
-//       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior
+//       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior;
+//       "unlit": baseColor, the radiance seen (glTF KHR_materials_unlit)
 //     "lights": [ { "type": "point", "position": [..], "intensity": [..],  // W/sr
 //                   "range": 10 },                       // optional: no light beyond
 //                 { "type": "spot", ..., "direction": [..], "outerConeDegrees": 30,
@@ -42,7 +43,8 @@
 //     "gltf": [ { "file": "models/x.glb",        // relative to the scene file
 //                 "transform": [16 numbers],    // column-major 4x4, as glTF's "matrix"
 //                 "translation": [x,y,z], "rotation": [x,y,z,w], "scale": [x,y,z],
-//                 "camera": "NAME" } ]          // all optional but "file"
+//                 "camera": "NAME",             // all optional but "file"
+//                 "animation": "NAME" or index, "time": seconds } ]  // AnimationChoice
 //   "transform" and translation/rotation/scale are alternatives (T * R * S),
 //   applied on top of the file's own node transforms; glTF files are in
 //   metres, so "unitScale" does not apply to them. With a "gltf" list,
@@ -78,13 +80,15 @@ namespace penumbra::scene {
 // scene file, or a glTF file (.gltf, .glb) loaded as a scene on its own.
 // `access`: what the glTF files it loads may read besides themselves.
 // `limits`: what the file may make the loader allocate (input_limits.h);
-// the glTF files it names are held to them too.
+// the glTF files it names are held to them too. `animation`: the moment of
+// every glTF file's animations to draw, over a "gltf" entry's own; a scene
+// with no glTF file to animate is an error.
 Scene loadScene(const std::string& nameOrPath, const FileAccess& access = {},
-                const InputLimits& limits = {});
+                const InputLimits& limits = {}, const AnimationChoice& animation = {});
 // `baseDirectory`: where the "gltf" files' relative paths start.
 Scene parseScene(std::string_view json, const std::string& source,
                  const std::string& baseDirectory = "", const FileAccess& access = {},
-                 const InputLimits& limits = {});
+                 const InputLimits& limits = {}, const AnimationChoice& animation = {});
 std::vector<std::string> builtInSceneNames();
 
 }  // namespace penumbra::scene

@@ -368,7 +368,7 @@ def extensions():
     b.doc["meshes"][0]["primitives"][0]["material"] = 0
     b.write_gltf("extension_required_compressed.gltf")
     b = triangle_file()
-    b.doc["extensionsUsed"] = ["KHR_materials_unlit", "KHR_materials_clearcoat"]
+    b.doc["extensionsUsed"] = ["KHR_materials_iridescence", "KHR_materials_clearcoat"]
     b.write_gltf("extension_optional.gltf")
 
 
@@ -855,6 +855,65 @@ def large_world():
     b.write_gltf("far_translation.gltf")
 
 
+def animated():
+    """A skinned strip for the command line: two quads up the y axis, 1 m
+    wide and 2 m tall, facing +z; the bottom row of vertices on joint 0 (node
+    1, at the origin), the middle half on each joint, the top on joint 1
+    (node 2, child of node 1 at (0,1,0)). Animation "Bend" turns joint 1 by 90
+    degrees about +z from 0 s to 1 s; "Slide" moves joint 0 from x = 0 to
+    x = 2 in 2 s."""
+    b = Builder()
+    pos = b.accessor([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0, 1, 2, 0], minmax=True)
+    nrm = b.accessor([0, 0, 1] * 6)
+    idx = b.accessor([0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4], USHORT, "SCALAR")
+    joints = b.accessor([0, 0, 0, 0] * 2 + [0, 1, 0, 0] * 2 + [1, 0, 0, 0] * 2, UBYTE, "VEC4")
+    weights = b.accessor([1, 0, 0, 0] * 2 + [0.5, 0.5, 0, 0] * 2 + [1, 0, 0, 0] * 2, atype="VEC4")
+    b.doc["accessors"].append({"bufferView": b.view(struct.pack("<32f", *(
+        [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1] +
+        [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1]))),
+        "componentType": FLOAT, "type": "MAT4", "count": 2})
+    bind = len(b.doc["accessors"]) - 1
+    b.add("meshes", {"name": "strip", "primitives": [
+        {"attributes": {"POSITION": pos, "NORMAL": nrm, "JOINTS_0": joints, "WEIGHTS_0": weights},
+         "indices": idx}]})
+    b.add("skins", {"joints": [1, 2], "inverseBindMatrices": bind})
+    b.add("nodes", {"name": "strip", "mesh": 0, "skin": 0})
+    b.add("nodes", {"name": "root", "children": [2]})
+    b.add("nodes", {"name": "tip", "translation": [0, 1, 0]})
+    s45 = math.sin(math.pi / 4)
+    times1 = b.accessor([0, 1], atype="SCALAR")
+    times2 = b.accessor([0, 2], atype="SCALAR")
+    turn = b.accessor([0, 0, 0, 1, 0, 0, s45, s45], atype="VEC4")
+    slide = b.accessor([0, 0, 0, 2, 0, 0])
+    b.add("animations", {"name": "Bend", "samplers": [{"input": times1, "output": turn}],
+                         "channels": [{"sampler": 0, "target": {"node": 2, "path": "rotation"}}]})
+    b.add("animations", {"name": "Slide", "samplers": [{"input": times2, "output": slide}],
+                         "channels": [{"sampler": 0, "target": {"node": 1, "path": "translation"}}]})
+    b.doc["scenes"] = [{"nodes": [0, 1]}]
+    b.doc["scene"] = 0
+    b.write_gltf("animated.gltf")
+
+
+def unlit():
+    """KHR_materials_unlit: a 2 m square facing +z at z = 0 (no camera: the
+    loader frames it), baseColorFactor (0.5, 0.5, 0.5) times COLOR_0
+    (0.2, 0.4, 0.8) at every vertex, so (0.1, 0.2, 0.4) wherever it is seen;
+    its emissiveFactor (1, 1, 1) must be ignored, as the extension says."""
+    b = Builder()
+    b.doc["materials"] = [
+        {"name": "unlit", "emissiveFactor": [1, 1, 1],
+         "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]},
+         "extensions": {"KHR_materials_unlit": {}}}]
+    b.doc["extensionsUsed"] = ["KHR_materials_unlit"]
+    prim = quad(b, [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)], (0, 0, 1))
+    prim["attributes"]["COLOR_0"] = b.accessor([0.2, 0.4, 0.8] * 4)
+    prim["material"] = 0
+    b.add("meshes", {"name": "unlit", "primitives": [prim]})
+    b.add("nodes", {"mesh": 0})
+    b.doc["scenes"] = [{"nodes": [0]}]
+    b.write_gltf("unlit.gltf")
+
+
 def punctual_lights():
     """KHR_lights_punctual over a grey floor (albedo 0.5, no specular layer,
     40 m square at y = 0), seen by a camera 3 m above the origin looking
@@ -933,3 +992,5 @@ if __name__ == "__main__":
     scene_files()
     large_world()
     punctual_lights()
+    animated()
+    unlit()
