@@ -230,6 +230,7 @@ bool PathTracer::rebuildPipelinesFor(uint32_t effects) {
   // Pipelines of the old effect set go; each is rebuilt when next used.
   for (auto& p : pipelines_) p = RayGenerationPipeline{};
   for (auto& b : bindings_) b.reset();
+  for (bool& d : dispatched_) d = false;
   pipelineFor(RayGeneration::Path);
   return true;
 }
@@ -329,15 +330,28 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
   c.ambient = {ambient_.x, ambient_.y, ambient_.z};
   c.radianceClamp = settings.radianceClamp;
 
-  // One counter serves every frame: the queue runs the frames' clear,
-  // dispatch and copy in order, and each frame copies it to its own readback.
-  cmd.clearBufferUint(rayCounter_.get(), 0);
   const RayGeneration rayGeneration = settings.integrator == Integrator::Whitted
                                           ? RayGeneration::Whitted
                                       : settings.writeGuides ? RayGeneration::PathWithGuides
                                                              : RayGeneration::Path;
   auto& p = pipelineFor(rayGeneration);
-  cmd.setRayTracingState({p.pipeline.get(), p.table.get(), {bindings_[int(rayGeneration)].get()}});
+  const rhi::RayTracingState state{
+      p.pipeline.get(), p.table.get(), {bindings_[int(rayGeneration)].get()}};
+  // lavapipe compiles a pipeline's shaders at its first dispatch, which the
+  // timer would count as tracing (seconds, against milliseconds once
+  // compiled). One pixel is traced untimed first, while the accumulation is
+  // empty: the frame rewrites that pixel after the barrier the second
+  // setRayTracingState records.
+  if (!dispatched_[int(rayGeneration)] && accumulatedSamples_ == 0) {
+    cmd.setRayTracingState(state);
+    cmd.setPushConstants(&c, sizeof(c));
+    cmd.dispatchRays(1, 1);
+    dispatched_[int(rayGeneration)] = true;
+  }
+  // One counter serves every frame: the queue runs the frames' clear,
+  // dispatch and copy in order, and each frame copies it to its own readback.
+  cmd.clearBufferUint(rayCounter_.get(), 0);
+  cmd.setRayTracingState(state);
   cmd.setPushConstants(&c, sizeof(c));
   cmd.beginTimerQuery(queries.timer.get());
   cmd.dispatchRays(width_, height_);

@@ -254,6 +254,7 @@ class PathTracer {
   rhi::BufferHandle rayCounter_;
   RayGenerationPipeline pipelines_[kRayGenerationCount];
   rhi::BindingSetHandle bindings_[kRayGenerationCount];  // for rendering; the probe binds its own
+  bool dispatched_[kRayGenerationCount] = {};            // recordFrame's untimed first dispatch
   rhi::CommandListHandle commandList_;
   FrameQueries ownFrame_;  // renderFrame's
 };
