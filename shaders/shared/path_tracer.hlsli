@@ -373,19 +373,16 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     p.throughput *= exp(-data.absorption * hit.hitT);
 #endif
 
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   // KHR_materials_unlit: the base colour is what every ray sees, from both
-  // sides; the surface reflects and transmits nothing, so the path ends. It
-  // is emission to the denoiser (kept out of the filter).
-  if (data.model == MATERIAL_MODEL_UNLIT) {
-    p.radiance += clampContribution(p.throughput * data.baseColor, clampLimit);
-    if (p.guidesOpen) {
-      p.chainLength += hit.hitT;
-      p.chainEmission += p.radiance - radianceBefore;
-      float3 facing = dot(hit.geometricNormal, direction) > 0.0 ? -hit.geometricNormal : hit.geometricNormal;
-      guides = closeGuides(p, zero3(), facing);
-    }
-    return false;
-  }
+  // sides; the surface reflects and transmits nothing, so the path ends
+  // below, as at the maximum depth. Part of the surface-detail effect, and
+  // left out of the other variants' code altogether: even this branch cost
+  // 1.2 % of the Cornell box's frame with guides on the H100 when every
+  // variant had it (docs/results.md).
+  bool unlit = data.model == MATERIAL_MODEL_UNLIT;
+  if (unlit) p.radiance += clampContribution(p.throughput * data.baseColor, clampLimit);
+#endif
 
 #if PT_HAS_EFFECT(PT_EFFECT_AREA_LIGHTS)
   // Emission: one-sided, from the front face (counter-clockwise; outside
@@ -425,8 +422,12 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   float3 ng = hit.geometricNormal;
   Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction), material);
   float3 wo = frameToLocal(frame, -direction);
-  // At the maximum depth, or exactly grazing (no side to scatter into).
+  // Unlit, at the maximum depth, or exactly grazing (no side to scatter into).
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  if (unlit || p.depth >= c.maxDepth || wo.z == 0.0 || dot(direction, ng) == 0.0) {
+#else
   if (p.depth >= c.maxDepth || wo.z == 0.0 || dot(direction, ng) == 0.0) {
+#endif
     if (p.guidesOpen) guides = closeGuides(p, guideAlbedo, guideNormal);
     return false;
   }

@@ -72,11 +72,14 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     occlusion = materialOcclusion(data, hit.uv);
     data.baseColor *= hit.color.xyz;  // COLOR_0
 #endif
-    // KHR_materials_unlit: the base colour as seen; nothing reflects or refracts.
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+    // KHR_materials_unlit (a surface-detail effect): the base colour as seen;
+    // nothing reflects or refracts.
     if (data.model == MATERIAL_MODEL_UNLIT) {
       radiance += ray.weight * data.baseColor;
       continue;
     }
+#endif
     PhongMaterial p = unpackPhong(data);
 
     bool frontFace = dot(ray.direction, hit.geometricNormal) < 0.0;

@@ -88,6 +88,15 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
   REQUIRE(render::deriveEffects(cornellWithSphere(phong)) ==
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TRANSMISSION));
 
+  // Unlit: only the surface-detail code, whose variants hold the unlit
+  // branch; its Disney fields are ignored.
+  scene::Material unlit = disney();
+  unlit.model = scene::MaterialModel::Unlit;
+  unlit.metallic = 1.0f;
+  unlit.specTrans = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(unlit)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TEXTURES));
+
   // A material no instance uses calls for nothing.
   auto unused = scene::loadScene("cornell-box");
   scene::Material glass = disney();

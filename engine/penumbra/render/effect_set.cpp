@@ -26,8 +26,9 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   for (uint32_t ref : m.textures())
     if (ref != scene::Material::kNoTexture) effects |= PT_EFFECT_TEXTURES;
   if (alphaMasked(m)) effects |= PT_EFFECT_ALPHA_MASK;
-  if (m.model == scene::MaterialModel::Phong || m.model == scene::MaterialModel::Unlit)
-    return effects;
+  // An unlit material's code lives with the surface detail (effects.h).
+  if (m.model == scene::MaterialModel::Unlit) return effects | PT_EFFECT_TEXTURES;
+  if (m.model == scene::MaterialModel::Phong) return effects;
   if (m.metallic > 0.0f || m.specular > 0.0f) effects |= PT_EFFECT_SPECULAR;
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
   if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
