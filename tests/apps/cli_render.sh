@@ -71,7 +71,11 @@ fi
 [ "$(grep -c "has no light: lit by the default studio environment" "$work/studio.err")" = 1 ]
 "$penumbra" render --scene "$gltf_data/attributes.gltf" --env none --size 16x16 --spp 4 \
   --out "$work/dark.exr" 2>"$work/dark.err" >/dev/null
-[ ! -s "$work/dark.err" ]
+# (A render past a second reports its progress there too: a loaded machine
+# or a cold shader cache makes this one that slow.)
+if grep -v '^progress: ' "$work/dark.err" | grep -q .; then
+  echo "--env none still said something:"; cat "$work/dark.err"; exit 1
+fi
 # Emissive materials of a glTF file are not its lighting: it is lit too, and
 # the line says why.
 "$penumbra" render --scene "$gltf_data/emissive_quad.gltf" --size 16x16 --spp 1 \

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,14 @@ inline std::string gltfRefusal(const std::string& path, const scene::InputLimits
   }
   FAIL("no error for " << path);
   return "";
+}
+
+// The whole text of the file at `path`.
+inline std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 inline std::string gltfRefusalWith(const std::string& path,
@@ -142,8 +151,9 @@ class GltfWriter {
     return add(bytes, 5126, type, int(values.size()) / components, extra);
   }
   // Unsigned byte VEC4 accessor (JOINTS_0).
-  int bytes4(const std::vector<uint8_t>& values) {
-    return add(std::string(values.begin(), values.end()), 5121, "VEC4", int(values.size() / 4), "");
+  int bytes4(const std::vector<uint8_t>& values, const std::string& extra = "") {
+    return add(std::string(values.begin(), values.end()), 5121, "VEC4", int(values.size() / 4),
+               extra);
   }
   std::string write(const test::TempFolder& folder, const std::string& name,
                     const std::string& rest) const {

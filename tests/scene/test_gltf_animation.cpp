@@ -137,8 +137,9 @@ TEST_CASE("glTF animation choices that do not exist are one clear error", "[gltf
              ContainsSubstring("no animation 'Walk' (animations by index and name: 0 'Move', 1 "
                                "'Cubic')"));
   CHECK_THAT(test::gltfRefusalWith(file, at("2", 0.0)), ContainsSubstring("no animation '2'"));
-  CHECK_THAT(test::gltfRefusalWith(test::dataPath("gltf/cameras.gltf"), {"", 1.0}),
-             ContainsSubstring("the file has no animations to draw at a time"));
+  for (const char* choice : {"", "all"})
+    CHECK_THAT(test::gltfRefusalWith(test::dataPath("gltf/cameras.gltf"), {choice, 1.0}),
+               ContainsSubstring("the file has no animations to draw at a time"));
 }
 
 TEST_CASE("glTF animation samplers are checked before they are used", "[gltf]") {
@@ -167,6 +168,14 @@ TEST_CASE("glTF animation samplers are checked before they are used", "[gltf]") 
                                "keyframe)"));
   CHECK_THAT(test::gltfRefusalWith(file({0, 1}, {0, 0, 0, 1, 0, 0}, "SMOOTH"), {"", 0.5}),
              ContainsSubstring("unknown interpolation 'SMOOTH'"));
+  // A node given by a matrix may not be animated (glTF 2.0, 3.11).
+  std::string text = test::readText(file({0, 1}, {0, 0, 0, 1, 0, 0}, "LINEAR"));
+  const std::string node = R"("nodes":[{"mesh":0}])";
+  REQUIRE(text.find(node) != std::string::npos);
+  text.replace(text.find(node), node.size(),
+               R"("nodes":[{"mesh":0,"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]}])");
+  CHECK_THAT(test::gltfRefusalWith(folder.write("matrix.gltf", text), {"", 0.5}),
+             ContainsSubstring("node 0: is animated but has a matrix"));
 }
 
 TEST_CASE("glTF morph weights: a node's own, or an animation's at the chosen time", "[gltf]") {
@@ -175,14 +184,15 @@ TEST_CASE("glTF morph weights: a node's own, or an animation's at the chosen tim
   // z, target 1 moves vertex 1 by 1 in x. Weights animated LINEAR from (0, 0)
   // at 0 s to (1, 0.5) at 1 s: at 0.5 s (0.5, 0.25), so vertex 0 at
   // (0, 0, 0.5) and vertex 1 at (1.25, 0, 0).
-  auto file = [&](const std::string& nodeWeights) {
+  auto file = [&](const std::string& nodeWeights,
+                  const std::vector<float>& keyedWeights = {0, 0, 1, 0.5f}) {
     test::GltfWriter w;
     const int position =
         w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3, R"(,"min":[0,0,0],"max":[1,1,0])");
     const int t0 = w.floats({0, 0, 1, 0, 0, 0, 0, 0, 0}, "VEC3", 3);
     const int t1 = w.floats({0, 0, 0, 1, 0, 0, 0, 0, 0}, "VEC3", 3);
     const int times = w.floats({0, 1}, "SCALAR", 1);
-    const int weights = w.floats({0, 0, 1, 0.5f}, "SCALAR", 1);
+    const int weights = w.floats(keyedWeights, "SCALAR", 1);
     return w.write(folder, "morph",
                    fmt::format(R"(
       "meshes":[{{"primitives":[{{"attributes":{{"POSITION":{}}},
@@ -210,6 +220,9 @@ TEST_CASE("glTF morph weights: a node's own, or an animation's at the chosen tim
   CHECK(own.scene.meshes.size() == 2);
   // Nodes with equal weights share the converted mesh.
   CHECK(scene::importGltf(file("")).scene.meshes.size() == 1);
+  // One weight per target per keyframe: three per keyframe is refused.
+  CHECK_THAT(test::gltfRefusalWith(file("", {0, 0, 0, 1, 0.5f, 0}), {"", 0.5}),
+             ContainsSubstring("output: 6 values for 2 keyframes of 2 morph weights"));
 }
 
 namespace {
@@ -221,30 +234,32 @@ namespace {
 // matrices undo the joints' rest placements: translate(0,0,-5) and
 // translate(0,-1,-5). Animation "Bend" turns joint 1 by 90 degrees about +z
 // at 1 s (LINEAR from none at 0 s).
-std::string skinFile(const test::TempFolder& folder, const std::vector<uint8_t>& joints) {
+std::string skinFile(const test::TempFolder& folder, const std::vector<uint8_t>& joints,
+                     const std::string& nodePlace = R"("translation":[100,0,0])",
+                     const std::string& jointsExtra = "") {
   test::GltfWriter w;
   const int position =
       w.floats({0, 0, 0, 1, 1, 0, 0, 2, 0}, "VEC3", 3, R"(,"min":[0,0,0],"max":[1,2,0])");
   const int normal = w.floats({0, 0, 1, 1, 0, 0, 1, 0, 0}, "VEC3", 3);
-  const int jointIndices = w.bytes4(joints);
+  const int jointIndices = w.bytes4(joints, jointsExtra);
   const int weights = w.floats({1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 1, 0, 0, 0}, "VEC4", 4);
   const int inverseBind = w.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  -5, 1,  //
                                     1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, -5, 1},
                                    "MAT4", 16);
   const int times = w.floats({0, 1}, "SCALAR", 1);
   const int rotations = w.floats({0, 0, 0, 1, 0, 0, kSin45, kSin45}, "VEC4", 4);
-  return w.write(
-      folder, "skin",
-      fmt::format(R"(
+  return w.write(folder, "skin",
+                 fmt::format(R"(
     "meshes":[{{"primitives":[{{"attributes":{{"POSITION":{},"NORMAL":{},"JOINTS_0":{},
       "WEIGHTS_0":{}}}}}]}}],
     "skins":[{{"joints":[1,2],"inverseBindMatrices":{}}}],
-    "nodes":[{{"mesh":0,"skin":0,"translation":[100,0,0]}},
+    "nodes":[{{"mesh":0,"skin":0,{}}},
              {{"translation":[0,0,5],"children":[2]}},{{"translation":[0,1,0]}}],
     "scenes":[{{"nodes":[0,1]}}],
     "animations":[{{"name":"Bend","samplers":[{{"input":{},"output":{}}}],
       "channels":[{{"sampler":0,"target":{{"node":2,"path":"rotation"}}}}]}}])",
-                  position, normal, jointIndices, weights, inverseBind, times, rotations));
+                             position, normal, jointIndices, weights, inverseBind, nodePlace, times,
+                             rotations));
 }
 
 }  // namespace
@@ -288,6 +303,17 @@ TEST_CASE("glTF skins: vertices follow their joints, the skinned node's transfor
   CHECK(glm::length(normalAt({0.5, 1.5, 0}) - glm::dvec3(std::sqrt(0.5), std::sqrt(0.5), 0)) <
         1e-5);
   CHECK(glm::length(normalAt({0, 0, 0}) - glm::dvec3(0, 0, 1)) < 1e-5);
+  // A skinned node whose own transform collapses (scale 0) is still drawn
+  // by its joints.
+  const auto flat = scene::importGltf(
+      skinFile(folder, {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0}, R"("scale":[0,0,0])"));
+  for (glm::dvec3 p : {glm::dvec3(0, 0, 0), glm::dvec3(1, 1, 0), glm::dvec3(0, 2, 0)})
+    requireVertex(worldVertices(flat.scene), p);
+  // Joint indices must be plain unsigned integers.
+  CHECK_THAT(test::gltfRefusal(skinFile(folder, {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0},
+                                        R"("translation":[100,0,0])", R"(,"normalized":true)")),
+             ContainsSubstring("JOINTS_0 (accessor 2): joint indices must be unsigned bytes or "
+                               "shorts, not normalised"));
   // A joint index past the skin's two joints.
   CHECK_THAT(test::gltfRefusal(skinFile(folder, {0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 0, 0})),
              ContainsSubstring("mesh 0 primitive 0 JOINTS_0: vertex 2 names joint 2, not one of "

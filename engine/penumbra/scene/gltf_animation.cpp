@@ -78,10 +78,11 @@ Interpolation interpolationOf(const std::string& name, const std::string& where)
       fmt::format("{}: unknown interpolation '{}' (STEP, LINEAR, CUBICSPLINE)", where, name));
 }
 
-// The sampler's keyframes; `width` numbers per value, or 0 to take as many
-// as the output holds per keyframe (morph weights: one per target).
+// The sampler's keyframes, `width` numbers per value: VEC3 or VEC4 elements,
+// or with `scalars` that many SCALAR elements (morph weights, one per target).
 Keyframes readKeyframes(const tinygltf::Model& model, const tinygltf::AnimationSampler& s,
-                        size_t width, const std::string& where, const InputLimits& limits) {
+                        size_t width, bool scalars, const std::string& where,
+                        const InputLimits& limits) {
   Keyframes k;
   k.interpolation = interpolationOf(s.interpolation, where);
   k.times = readFloats(model, s.input, 1, where + " input", limits);
@@ -94,12 +95,12 @@ Keyframes readKeyframes(const tinygltf::Model& model, const tinygltf::AnimationS
                               where, i, k.times[i], k.times[i - 1]));
   }
   const size_t perKey = k.interpolation == Interpolation::CubicSpline ? 3 : 1;
-  const size_t count = accessorCount(model, s.output, where + " output");
-  k.width = width > 0 ? width : count / (k.times.size() * perKey);
-  k.values = readFloats(model, s.output, width > 0 ? int(width) : 1, where + " output", limits);
-  if (k.width == 0 || k.values.size() != k.times.size() * perKey * k.width)
-    throw Error(fmt::format("{} output: {} values for {} keyframes{}", where,
-                            k.values.size() / std::max<size_t>(width, 1), k.times.size(),
+  k.width = width;
+  k.values = readFloats(model, s.output, scalars ? 1 : int(width), where + " output", limits);
+  if (k.values.size() != k.times.size() * perKey * k.width)
+    throw Error(fmt::format("{} output: {} values for {} keyframes{}{}", where,
+                            k.values.size() / (scalars ? 1 : width), k.times.size(),
+                            scalars ? fmt::format(" of {} morph weights", width) : "",
                             perKey == 3 ? " (CUBICSPLINE keeps 3 per keyframe)" : ""));
   for (size_t i = 0; i < k.values.size(); ++i)
     if (!std::isfinite(k.values[i]))
@@ -160,9 +161,25 @@ AnimationPose evaluateAnimation(const tinygltf::Model& model, size_t animation, 
     if (channel.sampler < 0 || size_t(channel.sampler) >= a.samplers.size())
       throw Error(fmt::format("{}: sampler {} does not exist ({} samplers)", here, channel.sampler,
                               a.samplers.size()));
-    const size_t width = path == "rotation" ? 4 : path == "weights" ? 0 : 3;
-    const Keyframes k = readKeyframes(model, a.samplers[size_t(channel.sampler)], width,
-                                      fmt::format("{} sampler {}", here, channel.sampler), limits);
+    size_t width = path == "rotation" ? 4 : 3;
+    if (path == "weights") {
+      // One weight per morph target of the node's mesh.
+      const tinygltf::Node& node = model.nodes[size_t(channel.target_node)];
+      if (node.mesh < 0 || size_t(node.mesh) >= model.meshes.size())
+        throw Error(fmt::format("{}: animates the morph weights of node {}, which has no mesh",
+                                here, channel.target_node));
+      width = 0;
+      for (const auto& primitive : model.meshes[size_t(node.mesh)].primitives)
+        width = std::max(width, primitive.targets.size());
+      if (width == 0)
+        throw Error(
+            fmt::format("{}: animates the morph weights of node {}, whose mesh has no "
+                        "morph targets",
+                        here, channel.target_node));
+    }
+    const Keyframes k =
+        readKeyframes(model, a.samplers[size_t(channel.sampler)], width, path == "weights",
+                      fmt::format("{} sampler {}", here, channel.sampler), limits);
     pose.start = std::min(pose.start, double(k.times.front()));
     pose.end = std::max(pose.end, double(k.times.back()));
     const std::vector<double> v = sample(k, seconds, path == "rotation");
@@ -182,8 +199,7 @@ AnimationPose evaluateAnimation(const tinygltf::Model& model, size_t animation, 
       node.rotation = q / length;
     }
   }
-  if (!(pose.start <= pose.end)) pose.start = pose.end = 0.0;
-  return pose;
+  return pose;  // start > end: no channel was drawn
 }
 
 }  // namespace penumbra::scene::gltf

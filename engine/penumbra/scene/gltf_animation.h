@@ -28,7 +28,9 @@ struct NodePose {
 
 struct AnimationPose {
   std::vector<NodePose> nodes;    // one per glTF node
-  double start = 0.0, end = 0.0;  // the animation's first and last keyframe times, seconds
+  // The first and last keyframe times of the channels drawn, seconds;
+  // start > end when no channel was.
+  double start = 0.0, end = 0.0;
 };
 
 // The animation `choice` names: its name, or its index ("0" the first) when

@@ -69,7 +69,12 @@ glm::dmat4 localTransform(const tinygltf::Node& node, const gltf::NodePose& pose
     return !v.empty();
   };
   const bool animated = pose.translation || pose.rotation || pose.scale;
-  if (sizeIs(node.matrix, 16, "matrix") && !animated) {
+  if (sizeIs(node.matrix, 16, "matrix")) {
+    if (animated)
+      throw Error(fmt::format(
+          "{}: is animated but has a matrix (glTF allows animating only translation, rotation "
+          "and scale)",
+          where));
     for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = node.matrix[size_t(i)];  // column-major
   } else {
     glm::dmat4 t(1.0), r(1.0), s(1.0);
@@ -146,7 +151,7 @@ class Importer {
   // The animation's values at the chosen time, in place of the nodes' own.
   void pose(const AnimationChoice& choice) {
     if (choice.empty()) return;
-    if (choice.animation.empty() && model_.animations.empty())
+    if ((choice.animation.empty() || choice.animation == "all") && model_.animations.empty())
       throw Error(fmt::format("{}: the file has no animations to draw at a time", at()));
     const double seconds = choice.seconds.value_or(0.0);
     if (!std::isfinite(seconds))
@@ -175,12 +180,15 @@ class Importer {
         if (from.scale) to.scale = from.scale;
         if (from.weights) to.weights = from.weights;
       }
-      pose_.start = std::min(pose_.start, one.start);
-      pose_.end = std::max(pose_.end, one.end);
+      if (one.start <= one.end) {  // an animation with no channel drawn has no keyframes
+        pose_.start = std::min(pose_.start, one.start);
+        pose_.end = std::max(pose_.end, one.end);
+      }
     }
     const std::string name = all ? std::string("the animations")
                                  : named("animation", chosen[0], model_.animations[chosen[0]].name);
-    if (seconds < pose_.start || seconds > pose_.end)
+    // (start > end: no channel was drawn, so no time is outside.)
+    if (pose_.start <= pose_.end && (seconds < pose_.start || seconds > pose_.end))
       warn(fmt::format(
           "{}: {:g} s is outside the keyframes of {} ({:g} to {:g} s); the {} pose is "
           "drawn",
@@ -444,18 +452,21 @@ class Importer {
                                   model_.meshes.size()));
         gltf::PrimitiveShape shape{morphWeightsOf(index), {}};
         // A skinned mesh is placed by its joints alone; its vertices are
-        // taken into the node's space, which the instance keeps (gltf_skin.h).
-        const bool skinned = node.skin >= 0 && glm::determinant(world) != 0.0;
-        if (skinned)
+        // taken into the node's space, which the instance keeps (gltf_skin.h),
+        // or into world space where that space collapses (a zero scale).
+        glm::dmat4 place = world;
+        if (node.skin >= 0) {
+          if (glm::determinant(world) == 0.0) place = glm::dmat4(1.0);
           shape.joints = gltf::jointMatrices(
-              model_, node.skin, world, [&](int n) { return worldOf(n); }, where, budget_.limits);
+              model_, node.skin, place, [&](int n) { return worldOf(n); }, where, budget_.limits);
+        }
         // EXT_mesh_gpu_instancing: a copy of the mesh per instance, in the
         // node's space; otherwise the one at the node.
         std::vector<glm::dmat4> placements;
         for (const glm::dmat4& copy :
              gltf::gpuInstanceTransforms(model_, node, where, budget_.limits))
-          placements.push_back(world * copy);
-        if (placements.empty()) placements.push_back(world);
+          placements.push_back(place * copy);
+        if (placements.empty()) placements.push_back(place);
         for (uint32_t mesh : meshesOf(node.mesh, shape))
           for (const glm::dmat4& placement : placements) {
             requireAtMost(out_.scene.instances.size() + 1, budget_.limits.maxInstances,
@@ -466,8 +477,6 @@ class Importer {
       if (node.camera >= 0) addCamera(index, world);
       if (auto light = gltf::nodeLight(model_, node, world, where))
         out_.scene.pointLights.push_back(*light);
-      if (node.skin >= 0 && node.mesh >= 0 && glm::determinant(world) == 0.0)
-        warn(fmt::format("{}: its transform is singular; its skin is not applied", where));
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
         stack.push_back({*it, world, false});
     }

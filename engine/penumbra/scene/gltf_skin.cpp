@@ -82,6 +82,17 @@ std::vector<glm::mat4> vertexSkinMatrices(const tinygltf::Model& model,
                                 vertexCount));
       return v;
     };
+    // Joint indices are unsigned bytes or shorts, not normalised (3.7.3.1).
+    const int jointAccessor = primitive.attributes.at(names[n]);
+    if (jointAccessor >= 0 && size_t(jointAccessor) < model.accessors.size()) {
+      const tinygltf::Accessor& a = model.accessors[size_t(jointAccessor)];
+      if ((a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) ||
+          a.normalized)
+        throw Error(fmt::format(
+            "{} {} (accessor {}): joint indices must be unsigned bytes or shorts, not normalised",
+            where, names[n], jointAccessor));
+    }
     const std::vector<float> index = read(names[n]);
     const std::vector<float> weight = read(names[n + 1]);
     for (size_t v = 0; v < vertexCount; ++v)
