@@ -67,12 +67,13 @@ bool emptyMeshoptFallbacks(nlohmann::json& doc, bool binary) {
   auto buffers = doc.find("buffers");
   if (buffers == doc.end() || !buffers->is_array()) return false;
   bool changed = false;
+  size_t index = 0;
   for (auto& buffer : *buffers) {
-    if (!buffer.is_object() || buffer.contains("uri")) continue;
+    // A .glb's first buffer without a URI is its BIN chunk, never a fallback.
+    const bool binChunk = binary && index++ == 0;
+    if (binChunk || !buffer.is_object() || buffer.contains("uri")) continue;
     const auto ext = buffer.find("extensions");
     if (ext == buffer.end() || !ext->is_object() || !ext->contains(kExtension)) continue;
-    // A .glb's first buffer without a URI is its BIN chunk, never a fallback.
-    if (binary && &buffer == &(*buffers)[0]) continue;
     // One zero byte: tinygltf refuses an empty data URI.
     buffer["uri"] = "data:application/octet-stream;base64,AA==";
     buffer["byteLength"] = 1;
