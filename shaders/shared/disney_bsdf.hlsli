@@ -50,6 +50,7 @@ struct DisneyMaterial {
   float metallic;
   float roughness;
   float anisotropic;
+  float anisotropyStrength;  // glTF KHR_materials_anisotropy: alpha along the tangent grows towards 1
   float specular;
   float specularTint;
   float sheen;
@@ -101,11 +102,16 @@ float3 tintColor(float3 baseColor) {
   return lum > 0.0 ? baseColor / lum : splat3(1.0);
 }
 
+// Disney's `anisotropic` trades roughness between the two axes; glTF's
+// anisotropy strength s only adds it along the tangent (alpha_t =
+// lerp(alpha, 1, s^2), KHR_materials_anisotropy), so rough surfaces stay as
+// they are. The two compose: glTF's stretch first, then Disney's aspect.
 Ggx disneyGgx(DisneyMaterial m) {
   float alpha = m.roughness * m.roughness;
   float aspect = sqrt(1.0 - 0.9 * m.anisotropic);
+  float alongTangent = lerp(alpha, 1.0, m.anisotropyStrength * m.anisotropyStrength);
   Ggx g;
-  g.alphaX = max(kMinAlpha, alpha / aspect);
+  g.alphaX = max(kMinAlpha, alongTangent / aspect);
   g.alphaY = max(kMinAlpha, alpha * aspect);
   return g;
 }

@@ -17,7 +17,7 @@
 #define PT_EFFECT_TRANSMISSION 8   // specTrans > 0 (Phong: transparency > 0)
 #define PT_EFFECT_CLEARCOAT 16     // clearcoat > 0
 #define PT_EFFECT_SHEEN 32         // sheen > 0
-#define PT_EFFECT_TEXTURES 64      // surface detail: material textures (base colour, metallic-roughness, emission, normal maps), COLOR_0 and unlit materials
+#define PT_EFFECT_TEXTURES 64      // surface detail: material textures (base colour, metallic-roughness, emission, normal maps), COLOR_0, unlit materials and glTF anisotropy
 #define PT_EFFECT_ALPHA_MASK 128   // MASK (textured or COLOR_0 alpha) or BLEND: an any-hit shader cuts
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
 // clang-format on

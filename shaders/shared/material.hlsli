@@ -33,6 +33,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.metallic = d.metallic;
   m.roughness = d.roughness;
   m.anisotropic = d.anisotropic;
+  m.anisotropyStrength = d.anisotropyStrength;
   m.specular = d.specular;
   m.specularTint = d.specularTint;
   m.sheen = d.sheen;
@@ -67,6 +68,9 @@ DisneyMaterial unpackDisney(MaterialData d) {
 #endif
 #if !PT_HAS_EFFECT(PT_EFFECT_SHEEN)
   m.sheen = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  m.anisotropyStrength = 0.0;
 #endif
   return m;
 }

@@ -59,12 +59,12 @@ float3 frameToLocal(Frame f, float3 v) {
 
 // The shading frame about unit n. An anisotropic material's lobes follow
 // the mesh's tangents, so its frame is oriented by the hit's vertex tangent
-// where it has one. Every other BSDF is the same about any tangent: its
+// where it has one (turned by glTF's anisotropy direction: triangleSurfaceHit). Every other BSDF is the same about any tangent: its
 // frame is built from the normal alone, and a pipeline without the GGX
 // lobes (specular, glass) carries no tangent code at all.
 Frame shadingFrame(SurfaceHit hit, float3 n, DisneyMaterial material) {
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR) || PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
-  if (material.anisotropic != 0.0) {
+  if (material.anisotropic != 0.0 || material.anisotropyStrength != 0.0) {
     float3 t = resolveShadingTangent(hit.shadingTangent, n);
     if (dot(t, t) >= 0.5) {
       Frame f;

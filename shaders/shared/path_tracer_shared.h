@@ -201,7 +201,7 @@ struct MaterialData {
   float3 baseColor;  // Phong: kd
   // The KHR_materials_* textures (TextureRefData indices or PT_NO_TEXTURE;
   // scene::Material says which channel scales what) fill the padding after
-  // the float3s and in the uint rows, so the struct keeps its 176 bytes.
+  // the float3s and in the uint rows.
   uint clearcoatTexture;
   float3 emission;  // radiance, emitted from the front (counter-clockwise) face
   uint clearcoatRoughnessTexture;
@@ -239,7 +239,12 @@ struct MaterialData {
   float alpha;        // base-colour alpha (the texture's alpha multiplies it)
   float alphaCutoff;  // alphaMode MASK
   float3 absorption;  // absorption coefficient of the medium inside (per world unit); 0: clear
-  float unused6;
+  // KHR_materials_anisotropy: the GGX roughness along the direction grows to
+  // lerp(alpha, 1, strength^2) (Disney's `anisotropic` composes with it).
+  float anisotropyStrength;
+  float2 anisotropyDirection;  // (cos, sin) of the rotation from the tangent towards the bitangent
+  uint anisotropyTexture;  // rg: direction in tangent space, rotated further; b: scales strength
+  uint unused6;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -369,11 +374,12 @@ static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 
               offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
 static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
               offsetof(InstanceData, vertexAttributes) == 112);
-static_assert(sizeof(MaterialData) == 176 && offsetof(MaterialData, emission) == 16 &&
+static_assert(sizeof(MaterialData) == 192 && offsetof(MaterialData, emission) == 16 &&
               offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
               offsetof(MaterialData, baseColorTexture) == 112 &&
               offsetof(MaterialData, normalScale) == 144 &&
-              offsetof(MaterialData, absorption) == 160);
+              offsetof(MaterialData, absorption) == 160 &&
+              offsetof(MaterialData, anisotropyDirection) == 176);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

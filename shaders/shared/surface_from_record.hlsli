@@ -81,6 +81,8 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
                                              instance.objectToWorld2, objectBitangent);
   MaterialData material = loadMaterial(instance.materialIndex);
   worldNormal = applyNormalMap(material, hit.uv, worldNormal, worldTangent, worldBitangent);
+  if (material.anisotropyStrength > 0.0)
+    worldTangent = anisotropyTangent(material, hit.uv, worldTangent, worldBitangent);
 #endif
   hit.shadingNormal = resolveShadingNormal(worldNormal, hit.geometricNormal);
   hit.shadingTangent = resolveShadingTangent(worldTangent, hit.shadingNormal);

@@ -36,6 +36,8 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.specularTexture != PT_NO_TEXTURE) d.specular *= sampleTextureRef(d.specularTexture, uv).w;
   if (d.specularColorTexture != PT_NO_TEXTURE)
     d.specular *= maxComponent(sampleTextureRef(d.specularColorTexture, uv).xyz);
+  if (d.anisotropyTexture != PT_NO_TEXTURE)
+    d.anisotropyStrength = saturate(d.anisotropyStrength * sampleTextureRef(d.anisotropyTexture, uv).z);
 }
 
 // The material at a surface point: each texture multiplies its factor
@@ -107,6 +109,22 @@ float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
   m.y *= d.normalScale;
   float3 mapped = t * m.x + b * m.y + n * m.z;
   return dot(t, t) > 0.0 && dot(b, b) > 0.0 ? mapped : n;
+}
+
+// The tangent glTF anisotropy stretches the lobes along
+// (KHR_materials_anisotropy): the direction texture's rg (in [-1, 1], the
+// tangent-space x and y; (1, 0) without a texture) turned by the material's
+// rotation, then taken into the frame (t, b). Unnormalised; a zero texel
+// direction falls back to the rotation alone.
+float3 anisotropyTangent(MaterialData d, float4 uv, float3 t, float3 b) {
+  float2 direction = float2(1.0, 0.0);
+  if (d.anisotropyTexture != PT_NO_TEXTURE) {
+    float2 texel = sampleTextureRef(d.anisotropyTexture, uv).xy * 2.0 - float2(1.0, 1.0);
+    if (dot(texel, texel) > 1e-12) direction = texel;
+  }
+  float2 r = d.anisotropyDirection;
+  float2 turned = float2(r.x * direction.x - r.y * direction.y, r.y * direction.x + r.x * direction.y);
+  return t * turned.x + b * turned.y;
 }
 
 #endif

@@ -74,6 +74,12 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
   m = disney();
   m.sheen = 1.0f;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN));
+  // glTF anisotropy turns the tangent where the hit is built: surface detail.
+  m = disney();
+  m.metallic = 1.0f;
+  m.anisotropyStrength = 0.5f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TEXTURES));
 
   // Phong: mirrors and highlights need the specular code, transparency refraction.
   scene::Material phong;
@@ -192,6 +198,22 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   everything.specTrans = 0.5f;
   everything.clearcoat = 0.5f;
   everything.sheen = 0.5f;
+  auto brushed = disney();
+  brushed.metallic = 1.0f;
+  brushed.roughness = 0.2f;
+  brushed.anisotropyStrength = 0.8f;
+  brushed.anisotropyRotation = 0.4f;
+  // Smooth normals and tangents along the sphere's parallels, so the
+  // direction is the mesh's.
+  scene::Scene brushedScene = cornellWithSphere(brushed);
+  auto& ball = brushedScene.meshes.back();
+  for (const glm::vec3& p : ball.positions) {
+    const glm::vec3 n = glm::normalize(p);
+    ball.normals.push_back(n);
+    const glm::vec3 t = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), n);
+    ball.tangents.push_back(
+        glm::vec4(glm::dot(t, t) > 1e-8f ? glm::normalize(t) : glm::vec3(1.0f, 0.0f, 0.0f), 1.0f));
+  }
 
   // Each distinct pipeline costs lavapipe seconds to compile, so the cases are
   // chosen to cover: the area-light-only Lambert scene, an effect alone with
@@ -235,6 +257,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
        render::Integrator::Path},
       {"rough glass sphere", cornellWithSphere(glass), render::Integrator::Path},
       {"every lobe, point light", cornellWithSphere(everything, true), render::Integrator::Path},
+      {"glTF anisotropy (surface detail)", brushedScene, render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},
       {"environment, soft sun, spot, bladed lens, absorbing glass", branches,

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -349,6 +350,16 @@ TEST_CASE("glTF KHR_materials_* textures fill their slots; unread ones are warne
                    "(sheenRoughnessTexture) are not supported; factors used"));
   CHECK_FALSE(hasWarning(r, "KHR_materials_specular textures"));
   CHECK_FALSE(hasWarning(r, "KHR_materials_transmission textures"));
+  // 'brushed': KHR_materials_anisotropy's strength, its rotation brought
+  // into (-pi, pi] (7 rad is 7 - 2 pi), and its direction texture, linear,
+  // reading TEXCOORD_1.
+  const auto& brushed = materialNamed(s, "brushed");
+  CHECK(brushed.anisotropyStrength == Approx(0.6f));
+  CHECK(brushed.anisotropyRotation == Approx(7.0 - 2.0 * std::numbers::pi));
+  requireChecker2x2(texture(s, brushed.anisotropyTexture));
+  CHECK_FALSE(texture(s, brushed.anisotropyTexture).srgb);
+  CHECK(ref(s, brushed.anisotropyTexture).texCoord == 1u);
+  CHECK_FALSE(hasWarning(r, "KHR_materials_anisotropy"));
 }
 
 TEST_CASE("glTF images in a .glb buffer view and in data URIs", "[gltf]") {

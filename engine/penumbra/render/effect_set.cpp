@@ -33,6 +33,8 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
   if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
   if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN;
+  // glTF anisotropy turns the tangent frame (effects.h): surface detail.
+  if (m.anisotropyStrength > 0.0f) effects |= PT_EFFECT_TEXTURES;
   return effects;
 }
 

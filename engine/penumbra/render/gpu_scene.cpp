@@ -207,6 +207,9 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.sheenColorTexture = m.sheenColorTexture;
   d.specularTexture = m.specularTexture;
   d.specularColorTexture = m.specularColorTexture;
+  d.anisotropyTexture = m.anisotropyTexture;
+  d.anisotropyStrength = m.anisotropyStrength;
+  d.anisotropyDirection = {std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation)};
   d.alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
                 : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND
                                                          : MATERIAL_ALPHA_OPAQUE;

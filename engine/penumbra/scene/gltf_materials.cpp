@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "penumbra/scene/gltf_textures.h"
 #include "penumbra/scene/tinygltf.h"
@@ -88,7 +89,8 @@ const std::vector<std::string_view>& supportedExtensions() {
   static const std::vector<std::string_view> names{
       "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
       "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
-      "KHR_materials_sheen", "KHR_materials_unlit", "KHR_texture_transform",
+      "KHR_materials_sheen", "KHR_materials_unlit", "KHR_materials_anisotropy",
+      "KHR_texture_transform",
       "KHR_materials_variants",   // Scene::materialVariants, --variant
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
@@ -218,6 +220,15 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     const glm::vec3 color = glm::clamp(vec3(*e, "sheenColorFactor", glm::vec3(0.0f)), 0.0f, 1.0f);
     m.sheen = std::max({color.x, color.y, color.z});
     m.sheenTint = 0.0f;
+  }
+
+  if (const auto* e = extension(src, "KHR_materials_anisotropy")) {
+    m.anisotropyStrength = clamp01(number(*e, "anisotropyStrength", 0.0));
+    const double rotation = number(*e, "anisotropyRotation", 0.0);
+    if (!std::isfinite(rotation))
+      throw Error(
+          fmt::format("{}: KHR_materials_anisotropy anisotropyRotation is not a number", where));
+    m.anisotropyRotation = float(std::remainder(rotation, 2.0 * std::numbers::pi));
   }
 
   // Only the base colour (factor, texture, COLOR_0) of an unlit material

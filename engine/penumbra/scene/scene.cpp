@@ -186,10 +186,12 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
       fail(fmt::format(
           "material '{}': baseColor must lie in [0, 1] and emission be finite and non-negative",
           m.name));
-  for (float v :
-       {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen, m.sheenTint,
-        m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface, m.reflectivity, m.transparency})
+  for (float v : {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen,
+                  m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface,
+                  m.reflectivity, m.transparency, m.anisotropyStrength})
     if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
+  if (!std::isfinite(m.anisotropyRotation))
+    fail(fmt::format("material '{}': anisotropyRotation is not finite", m.name));
   if (!(m.ior >= 1.0f && m.ior <= 4.0f))
     fail(fmt::format("material '{}': ior {} is outside [1, 4]", m.name, m.ior));
   if (!(m.exponent >= 0.0f)) fail(fmt::format("material '{}': negative Phong exponent", m.name));

@@ -80,6 +80,12 @@ struct Material {
   float specTrans = 0.0f;
   float ior = 1.5f;
   float subsurface = 0.0f;
+  // KHR_materials_anisotropy: along the direction `anisotropyRotation`
+  // radians from the tangent towards the bitangent, the GGX alpha grows from
+  // roughness^2 to lerp(roughness^2, 1, anisotropyStrength^2); across it
+  // stays. (Disney's `anisotropic` stretches both ways; the two compose.)
+  float anisotropyStrength = 0.0f;
+  float anisotropyRotation = 0.0f;
   bool thin = false;
   // The medium inside a transmissive solid (KHR_materials_volume): light
   // that travels attenuationDistance through it keeps attenuationColor of
@@ -112,6 +118,9 @@ struct Material {
   uint32_t sheenColorTexture = kNoTexture;  // sRGB
   uint32_t specularTexture = kNoTexture;
   uint32_t specularColorTexture = kNoTexture;  // sRGB
+  // Red and green: the anisotropy direction in tangent space ([0, 1] for
+  // [-1, 1]), turned further by anisotropyRotation; blue scales the strength.
+  uint32_t anisotropyTexture = kNoTexture;
   float normalScale = 1.0f;
   float occlusionStrength = 1.0f;
   float alpha = 1.0f;  // base colour alpha factor
@@ -129,17 +138,17 @@ struct Material {
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // Every texture slot above, for code that treats them alike (validation,
   // merging scenes, hashing, the textures' effect bit).
-  std::array<uint32_t, 11> textures() const {
+  std::array<uint32_t, 12> textures() const {
     return {baseColorTexture,          metallicRoughnessTexture, normalTexture,
             emissiveTexture,           occlusionTexture,         clearcoatTexture,
             clearcoatRoughnessTexture, transmissionTexture,      sheenColorTexture,
-            specularTexture,           specularColorTexture};
+            specularTexture,           specularColorTexture,     anisotropyTexture};
   }
-  std::array<uint32_t*, 11> textureSlots() {
+  std::array<uint32_t*, 12> textureSlots() {
     return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,
             &emissiveTexture,           &occlusionTexture,         &clearcoatTexture,
             &clearcoatRoughnessTexture, &transmissionTexture,      &sheenColorTexture,
-            &specularTexture,           &specularColorTexture};
+            &specularTexture,           &specularColorTexture,     &anisotropyTexture};
   }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));

@@ -52,6 +52,10 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
   material.metallic = readFloat(m, "metallic", material.metallic, where);
   material.roughness = readFloat(m, "roughness", material.roughness, where);
   material.anisotropic = readFloat(m, "anisotropic", material.anisotropic, where);
+  material.anisotropyStrength =
+      readFloat(m, "anisotropyStrength", material.anisotropyStrength, where);
+  material.anisotropyRotation =
+      readFloat(m, "anisotropyRotation", material.anisotropyRotation, where);
   material.specular = readFloat(m, "specular", material.specular, where);
   material.specularTint = readFloat(m, "specularTint", material.specularTint, where);
   material.sheen = readFloat(m, "sheen", material.sheen, where);

@@ -11,7 +11,9 @@
 //                               "emission": [r,g,b] }, ... },
 //       model "disney" (default): baseColor, metallic, roughness, anisotropic,
 //         specular, specularTint, sheen, sheenTint, clearcoat, clearcoatGloss,
-//         specTrans, ior, subsurface, thin; "lambert": albedo (= baseColor);
+//         specTrans, ior, subsurface, thin, anisotropyStrength and
+//         anisotropyRotation (radians; glTF's anisotropy, along the mesh's
+//         tangents); "lambert": albedo (= baseColor);
 //       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior;
 //       "unlit": baseColor, the radiance seen (glTF KHR_materials_unlit)
 //     "lights": [ { "type": "point", "position": [..], "intensity": [..],  // W/sr

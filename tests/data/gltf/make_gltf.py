@@ -676,9 +676,14 @@ def textures():
                 "transmissionFactor": 1,
                 "transmissionTexture": {"index": 1, "texCoord": 1, "extensions": {
                     "KHR_texture_transform": {"offset": [0.5, 0]}}}}}},
+        {"name": "brushed", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 0.2},
+         "extensions": {"KHR_materials_anisotropy": {
+             "anisotropyStrength": 0.6, "anisotropyRotation": 7.0,
+             "anisotropyTexture": {"index": 1, "texCoord": 1}}}},
     ]
     b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
-                               "KHR_materials_transmission", "KHR_texture_transform"]
+                               "KHR_materials_transmission", "KHR_materials_anisotropy",
+                               "KHR_texture_transform"]
     b.write_gltf("textures.gltf")
 
     # The checker again, stored in the .glb's binary chunk.

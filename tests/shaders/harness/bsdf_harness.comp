@@ -80,6 +80,7 @@ void main() {
     d.metallic = pick(rng);
     d.roughness = pick(rng);
     d.anisotropic = pick(rng);
+    d.anisotropyStrength = pick(rng);
     d.specular = pick(rng);
     d.specularTint = pick(rng);
     d.sheen = pick(rng);
