@@ -1,7 +1,8 @@
 // Data shared by the host and the path-tracing shaders. Every field is named;
-// rows are 16 bytes (four scalars, a float4, a float3 and a scalar, or two
-// float2s), so std430 (Vulkan) and HLSL structured-buffer layouts match the
-// C++ layout; the C++ side static_asserts sizes and row offsets.
+// rows are 16 bytes (four scalars, a float4, a float3 and a scalar, two
+// float2s, or a float2 after two scalars or before them), so std430 (Vulkan) and HLSL
+// structured-buffer layouts match the C++ layout; the C++ side static_asserts sizes and row
+// offsets.
 #ifndef PENUMBRA_PATH_TRACER_SHARED_H
 #define PENUMBRA_PATH_TRACER_SHARED_H
 

@@ -114,9 +114,16 @@ float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
 // The tangent glTF anisotropy stretches the lobes along
 // (KHR_materials_anisotropy): the direction texture's rg (in [-1, 1], the
 // tangent-space x and y; (1, 0) without a texture) turned by the material's
-// rotation, then taken into the frame (t, b). Unnormalised; a zero texel
-// direction falls back to the rotation alone.
+// rotation, then taken into the unit frame (t, b), as the extension's TBN
+// does: a node's non-uniform scale stretches t and b unequally, which would
+// otherwise bend the angle. Unnormalised result; (t, b) with a zero axis
+// leaves t. (An 8-bit texel is never exactly zero: 128 is 1/255.)
 float3 anisotropyTangent(MaterialData d, float4 uv, float3 t, float3 b) {
+  float lt = dot(t, t);
+  float lb = dot(b, b);
+  if (!(lt > 0.0) || !(lb > 0.0)) return t;
+  t *= rsqrt(lt);
+  b *= rsqrt(lb);
   float2 direction = float2(1.0, 0.0);
   if (d.anisotropyTexture != PT_NO_TEXTURE) {
     float2 texel = sampleTextureRef(d.anisotropyTexture, uv).xy * 2.0 - float2(1.0, 1.0);

@@ -7,6 +7,7 @@
 #include "effects.h"
 #include "penumbra/image/image_compare.h"
 #include "penumbra/render/effect_set.h"
+#include "penumbra/render/gpu_scene.h"
 #include "penumbra/scene/mesh_builders.h"
 #include "penumbra/scene/scene_loader.h"
 #include "penumbra_shaders.h"
@@ -93,6 +94,16 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
   phong.transparency = 0.9f;
   REQUIRE(render::deriveEffects(cornellWithSphere(phong)) ==
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TRANSMISSION));
+  // glTF anisotropy is a Disney-lobe parameter: a Phong material keeps no
+  // bit for it, and the GPU never sees it (so no variant can differ).
+  phong.anisotropyStrength = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(phong)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TRANSMISSION));
+  REQUIRE(render::packMaterial(phong).anisotropyStrength == 0.0f);
+  scene::Material brushed = disney();
+  REQUIRE(render::packMaterial(brushed).anisotropyStrength == 0.0f);
+  brushed.anisotropyStrength = 0.25f;
+  REQUIRE(render::packMaterial(brushed).anisotropyStrength == 0.25f);
 
   // Unlit: only the surface-detail code, whose variants hold the unlit
   // branch; its Disney fields are ignored.

@@ -379,10 +379,12 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     plain.anisotropyStrength = 0.9f;
     plain.anisotropyRotation = 0.3f;
     untextured = plain;
-    // (1/255, 1): the bitangent, a quarter turn from the tangent.
-    textures = {uniform({128, 255, 255, 255}, false)};
+    // About 60 degrees from the tangent, off both axes, so a wrong sign of
+    // either channel turns the streak by a large angle.
+    textures = {uniform({191, 238, 255, 255}, false)};
     attach = [](scene::Material& m) { m.anisotropyTexture = 0; };
-    plain.anisotropyRotation += std::atan2(1.0f, 1.0f / 255.0f);
+    plain.anisotropyRotation +=
+        std::atan2(2.0f * 238.0f / 255.0f - 1.0f, 2.0f * 191.0f / 255.0f - 1.0f);
   }
   scene::Material textured = untextured;
   attach(textured);

@@ -58,6 +58,10 @@ TEST_CASE("material-test: --vary and --set change the row", "[scene]") {
   REQUIRE(s.materialRow->vary == "metallic");
   REQUIRE(sphereMaterial(s, 6).metallic == 1.0f);
   REQUIRE(sphereMaterial(s, 3).specTrans == 1.0f);
+  // glTF's anisotropy, not a 0..1 row parameter for the rotation, is set too.
+  scene::changeMaterialRow(s, "", "anisotropyStrength=0.7,anisotropyRotation=1.25");
+  REQUIRE(sphereMaterial(s, 2).anisotropyStrength == 0.7f);
+  REQUIRE(sphereMaterial(s, 2).anisotropyRotation == 1.25f);
 }
 
 TEST_CASE("material-test: bad --vary and --set are clear errors", "[scene]") {

@@ -221,6 +221,14 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
   REQUIRE_THROWS_WITH(
       scene::parseScene(withGlass(R"({"specTrans":1,"attenuationColor":[2,1,1]})"), "t.json"),
       ContainsSubstring("attenuationColor must lie in [0, 1]"));
+  // glTF's anisotropy, in scene files too.
+  const auto brushed = scene::parseScene(
+      withGlass(R"({"metallic":1,"anisotropyStrength":0.6,"anisotropyRotation":-2})"), "t.json");
+  CHECK(brushed.materials[0].anisotropyStrength == 0.6f);
+  CHECK(brushed.materials[0].anisotropyRotation == -2.0f);
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(withGlass(R"({"metallic":1,"anisotropyStrength":1.5})"), "t.json"),
+      ContainsSubstring("a parameter is outside [0, 1]"));
 }
 
 // Bounded inputs (docs/security.md, scene/input_limits.h): every refusal is

@@ -208,7 +208,10 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.specularTexture = m.specularTexture;
   d.specularColorTexture = m.specularColorTexture;
   d.anisotropyTexture = m.anisotropyTexture;
-  d.anisotropyStrength = m.anisotropyStrength;
+  // Only the Disney lobes have it: a Phong material mapped onto Disney in
+  // the path tracer (material.hlsli) has no tangent frame to stretch along,
+  // and the effect bit that holds the code is not derived for Phong.
+  d.anisotropyStrength = m.model == scene::MaterialModel::Phong ? 0.0f : m.anisotropyStrength;
   d.anisotropyDirection = {std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation)};
   d.alphaMode = m.alphaMode == scene::AlphaMode::Mask    ? MATERIAL_ALPHA_MASK
                 : m.alphaMode == scene::AlphaMode::Blend ? MATERIAL_ALPHA_BLEND

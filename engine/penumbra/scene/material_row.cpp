@@ -16,6 +16,8 @@ float* scalarParameter(Material& m, std::string_view name) {
   if (name == "metallic") return &m.metallic;
   if (name == "roughness") return &m.roughness;
   if (name == "anisotropic") return &m.anisotropic;
+  if (name == "anisotropyStrength") return &m.anisotropyStrength;
+  if (name == "anisotropyRotation") return &m.anisotropyRotation;
   if (name == "specular") return &m.specular;
   if (name == "specularTint") return &m.specularTint;
   if (name == "sheen") return &m.sheen;
@@ -79,8 +81,10 @@ void setMaterialParameter(Material& m, std::string_view name, const std::vector<
   }
   float* scalar = scalarParameter(m, name);
   if (!scalar)
-    throw Error(fmt::format("--set: unknown material parameter '{}' (baseColor, emission, ior, {})",
-                            name, joined(variableDisneyParameters())));
+    throw Error(
+        fmt::format("--set: unknown material parameter '{}' (baseColor, emission, ior, "
+                    "anisotropyRotation, anisotropyStrength, {})",
+                    name, joined(variableDisneyParameters())));
   if (values.size() != 1) throw Error(fmt::format("--set {}: needs 1 number", name));
   *scalar = values[0];
 }
