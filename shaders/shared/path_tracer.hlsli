@@ -122,6 +122,46 @@ ShadowRay pointLightShadowRay(PointLight light, float2 u, DisneyMaterial materia
   return r;
 }
 
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+// What a delta light could give a vertex at `position` (geometric normal
+// ng), shadows and the BSDF aside: its irradiance's luminance, times |cos|
+// at the surface for a point or spot light (a soft sun's direction varies
+// over its disk, so it gets none). Zero only where the light cannot
+// contribute, so choosing in proportion leaves out no light that could.
+float deltaLightWeight(PointLight light, float3 position, float3 ng) {
+  float3 toLight;
+  float distance;
+  float3 incident = pointLightIncident(light, position, float2(-1.0, 0.0), toLight, distance);
+  float w = luminance(incident);
+  return isSoftSun(light) ? w : w * abs(dot(ng, toLight));
+}
+
+// One of `count` delta lights for a vertex, drawn in proportion to
+// deltaLightWeight, with its probability; `count` (none) when no light can
+// give anything. A single light is taken without a random number.
+uint chooseDeltaLight(uint count, float3 position, float3 ng, inout Rng rng, out float probability) {
+  probability = 1.0;
+  if (count == 1u) return 0u;
+  float total = 0.0;
+  for (uint i = 0u; i < count; i += 1u) total += deltaLightWeight(loadPointLight(i), position, ng);
+  float target = rngNext(rng) * total;
+  uint chosen = count;
+  float chosenWeight = 0.0;
+  float running = 0.0;
+  for (uint i = 0u; i < count; i += 1u) {
+    float w = deltaLightWeight(loadPointLight(i), position, ng);
+    if (w > 0.0) {
+      chosen = i;  // the last light with weight, should rounding leave target past the sum
+      chosenWeight = w;
+      running += w;
+      if (target < running) break;
+    }
+  }
+  probability = total > 0.0 ? chosenWeight / total : 1.0;
+  return chosen;
+}
+#endif
+
 // The next direction at a path vertex by the strategy in `flags` (BSDF
 // sampling, or uniform / cosine directions for study), before its BSDF
 // value: `bsdf.wi` waits for disneyEval unless the sample is delta or
@@ -253,31 +293,21 @@ struct PathRay {
   float3 direction;
 };
 
-// What a vertex's point- and spot-light shadow rays are built from, one
-// after the other, while its bounce waits: the hit as traced (its record and
-// the ray that found it), not the shaded surface, which is rebuilt for each
-// (whatever is alive across a trace call is saved and restored around it:
-// 16 words, where the surface, its material and frame are about 45).
-struct PointLightVertex {
+// A vertex's delta-light shadow ray (shadeVertex), waiting behind its area
+// light's. Variants without delta lights keep only the flag (always 0).
+struct DeltaLightShadow {
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  HitRecord record;
-  PathRay ray;
-  float3 throughput;  // before the scatter
-  uint nextLight;
+  ShadowRay ray;
 #endif
-  uint lights;  // 0 without NEE or point lights
+  uint waiting;  // 1 while `ray` is still to be traced
 };
 
-PointLightVertex noPointLightVertex() {
-  PointLightVertex v;
+DeltaLightShadow noDeltaLightShadow() {
+  DeltaLightShadow v;
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  v.record = hitRecordMiss();
-  v.ray.origin = zero3();
-  v.ray.direction = float3(0.0, 0.0, 1.0);
-  v.throughput = zero3();
-  v.nextLight = 0u;
+  v.ray = noShadowRay();
 #endif
-  v.lights = 0u;
+  v.waiting = 0u;
   return v;
 }
 
@@ -337,15 +367,15 @@ float3 environmentSeen(FrameConstants c, PathState p, float3 direction) {
 #endif
 
 // The vertex that `ray` found (its trace returned `record`): its emission
-// and guides, its area-light sample (`shadow`, tMax 0 if none), what its
-// point lights' shadow rays are built from (`pointLights`) and its bounce.
+// and guides, its area-light sample (`shadow`, tMax 0 if none), one delta
+// light's (`deltaShadow`) and its bounce.
 // False: the path ends here (the ray missed, the path is at its maximum
 // depth, the vertex is exactly grazing, or the scatter ended it); its
 // shadow rays are traced all the same.
 bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathState p, out VertexGuides guides,
-                 out ShadowRay shadow, out PointLightVertex pointLights, out PathRay bounce) {
+                 out ShadowRay shadow, out DeltaLightShadow deltaShadow, out PathRay bounce) {
   shadow = noShadowRay();
-  pointLights = noPointLightVertex();
+  deltaShadow = noDeltaLightShadow();
   guides.closed = false;
   guides.albedo = zero3();
   guides.normal = zero3();
@@ -520,15 +550,35 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
     }
   }
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  pointLights.record = record;
-  pointLights.ray = ray;
-  pointLights.throughput = p.throughput;
-  pointLights.lights = useNee ? c.pointLightCount : 0u;
+  float3 throughputHere = p.throughput;  // the scatter below changes it
 #endif
 
   float3 wiWorld;
   bool continues = scatter(c, scatterDir, scatterEval, frame, ng, direction, wo, p.depth, p.rng, p.throughput,
                            p.previousPdf, p.previousDelta, wiWorld);
+#if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
+  // One delta light per vertex, its shadow ray built while the surface is
+  // still here (after the scatter, so a lone light's random numbers come in
+  // the order they always did); with several, one is chosen in proportion
+  // to what it could give here (chooseDeltaLight) and its contribution
+  // divided by that probability: an unbiased estimate of their sum with one
+  // shadow ray.
+  if (useNee && c.pointLightCount > 0u) {
+    float probability = 1.0;
+    uint index = chooseDeltaLight(c.pointLightCount, hit.position, ng, p.rng, probability);
+    if (index < c.pointLightCount) {
+      PointLight light = loadPointLight(index);
+      float2 u = float2(0.0, 0.0);
+      if (isSoftSun(light)) {
+        u.x = rngNext(p.rng);
+        u.y = rngNext(p.rng);
+      }
+      deltaShadow.ray = pointLightShadowRay(light, u, material, frame, hit.position, ng, direction, wo,
+                                            throughputHere / probability, clampLimit);
+      deltaShadow.waiting = deltaShadow.ray.tMax > 0.0 ? 1u : 0u;
+    }
+  }
+#endif
   bounce.origin = offsetRayOrigin(hit.position, dot(wiWorld, ng) > 0.0 ? ng : -ng);
   bounce.direction = wiWorld;
   if (p.guidesOpen && !(continues && p.previousDelta)) guides = closeGuides(p, guideAlbedo, guideNormal);
@@ -536,29 +586,16 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   return continues;
 }
 
-// The vertex's next delta-light shadow ray that has something to carry, its
-// surface rebuilt from the record; false when none is left. A soft sun
-// draws its direction from the path's stream (no other light draws).
-bool nextPointLightShadowRay(FrameConstants c, inout PointLightVertex v, inout Rng rng, out ShadowRay shadow) {
+// The vertex's delta-light shadow ray, if it has one still to trace
+// (its signature the same in every variant, so that those without delta
+// lights compile to what they did before the ray was built at the vertex).
+bool nextDeltaLightShadowRay(FrameConstants c, inout DeltaLightShadow v, inout Rng rng, out ShadowRay shadow) {
   shadow = noShadowRay();
 #if PT_HAS_EFFECT(PT_EFFECT_DELTA_LIGHTS)
-  if (v.nextLight >= v.lights) return false;
-  SurfaceHit hit = surfaceFromRecord(v.ray.origin, v.ray.direction, v.record);
-  DisneyMaterial material = unpackDisney(hitMaterial(loadInstanceData(hit.instanceIndex), hit));
-  Frame frame = shadingFrame(hit, shadingNormalFor(hit, -v.ray.direction), material);
-  float3 wo = frameToLocal(frame, -v.ray.direction);
-  while (v.nextLight < v.lights) {
-    PointLight light = loadPointLight(v.nextLight);
-    float2 u = float2(0.0, 0.0);
-    if (isSoftSun(light)) {
-      u.x = rngNext(rng);
-      u.y = rngNext(rng);
-    }
-    shadow = pointLightShadowRay(light, u, material, frame, hit.position, hit.geometricNormal, v.ray.direction, wo,
-                                 v.throughput, c.radianceClamp);
-    v.nextLight += 1u;
-    if (shadow.tMax > 0.0) return true;
-  }
+  if (v.waiting == 0u) return false;
+  shadow = v.ray;
+  v.waiting = 0u;
+  return true;
 #endif
   return false;
 }
@@ -599,7 +636,7 @@ float3 tracePixel(out float2 moments) {
   PathRay ray;
   PathState p = startSample(c, s, ray.origin, ray.direction);
   ShadowRay shadow = noShadowRay();  // to trace next, before `ray`, if tMax > 0
-  PointLightVertex pointLights = noPointLightVertex();
+  DeltaLightShadow deltaShadow = noDeltaLightShadow();  // traced after `shadow`
   bool continues = true;  // after the shadow rays, `ray` is traced
   for (;;) {
     bool tracingShadow = shadow.tMax > 0.0;
@@ -613,14 +650,14 @@ float3 tracePixel(out float2 moments) {
       shadow = noShadowRay();
     } else {
       VertexGuides guides;
-      continues = shadeVertex(c, record, ray, p, guides, shadow, pointLights, ray);
+      continues = shadeVertex(c, record, ray, p, guides, shadow, deltaShadow, ray);
 #if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)
       if (guides.closed)
         addGuideSample(launchPixel(), before + s, guides.albedo,
                        float4(guides.normal, p.chainLength * p.cosForward), p.chainEmission);
 #endif
     }
-    if (shadow.tMax > 0.0 || nextPointLightShadowRay(c, pointLights, p.rng, shadow)) continue;
+    if (shadow.tMax > 0.0 || nextDeltaLightShadowRay(c, deltaShadow, p.rng, shadow)) continue;
     if (continues) continue;
     // The path ends: on to the pixel's next sample.
 #if PT_HAS_EFFECT(PT_OUTPUT_GUIDES)
