@@ -90,8 +90,14 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "Turn the camera towards the point X,Y,Z (after --camera-position)")
       ->expected(3)
       ->delimiter(',');
-  cmd.add_option("--fov", o.fovDegrees, "Vertical field of view in degrees, at any image shape")
+  cmd.add_option("--fov", o.fovDegrees,
+                 "Vertical field of view in degrees, at any image shape (a perspective camera)")
       ->check(CLI::Range(0.001f, 179.999f));
+  cmd.add_option("--orthographic", o.orthographicHeight,
+                 "An orthographic camera whose view is HEIGHT world units tall, at any image "
+                 "shape (rays parallel along the camera's forward)")
+      ->type_name("HEIGHT")
+      ->check(CLI::Range(1e-9f, 1e9f));
 }
 
 scene::CameraPlacement CameraOptions::placement(const CLI::App& cmd) const {
@@ -101,6 +107,7 @@ scene::CameraPlacement CameraOptions::placement(const CLI::App& cmd) const {
   if (cmd.count("--camera-position") > 0) p.position = point(position);
   if (cmd.count("--look-at") > 0) p.lookAt = point(lookAt);
   if (cmd.count("--fov") > 0) p.verticalFovDegrees = fovDegrees;
+  if (cmd.count("--orthographic") > 0) p.orthographicHeight = orthographicHeight;
   return p;
 }
 

@@ -59,12 +59,13 @@ struct AnimationOptions {
 };
 void addAnimationOptions(CLI::App& cmd, AnimationOptions& options);
 
-// --camera, --camera-position, --look-at, --fov: the view over the scene's
-// camera (scene::CameraPlacement).
+// --camera, --camera-position, --look-at, --fov, --orthographic: the view
+// over the scene's camera (scene::CameraPlacement).
 struct CameraOptions {
   std::string camera;
   std::vector<double> position, lookAt;
   float fovDegrees = 45.0f;
+  float orthographicHeight = 1.0f;
   // The parts given on the command line.
   scene::CameraPlacement placement(const CLI::App& cmd) const;
 };

@@ -150,7 +150,8 @@ render::RenderJob makeJob(const RenderOptions& o, const CLI::App& cmd) {
   // as the viewer's does.
   o.environment.apply(cmd, job.environment);
   // A scene camera named on the command line wins over the record's camera;
-  // a position, look-at point or field of view changes the record's.
+  // a position, look-at point, field of view or orthographic height changes
+  // the record's.
   if (fromFile && cmd.count("--camera") > 0) job.camera.reset();
   return job;
 }
@@ -168,8 +169,13 @@ scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::R
   for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
     if (!c) continue;
     if (cmd.count("--aperture") > 0) c->apertureRadius = o.aperture;
-    if (cmd.count("--f-number") > 0)
+    if (cmd.count("--f-number") > 0) {
+      if (c->orthographic())
+        throw Error(
+            "camera: --f-number needs a focal length, which an orthographic camera has "
+            "not; give --aperture");
       c->apertureRadius = scene::apertureRadiusForFNumber(o.fNumber, c->verticalFovDegrees);
+    }
     if (cmd.count("--focus-distance") > 0) c->focusDistance = o.focusDistance;
     if (cmd.count("--aperture-blades") > 0) c->apertureBlades = o.apertureBlades;
     scene::validateCamera(*c);

@@ -48,6 +48,11 @@ Bookmark readBookmark(const json& b, const std::string& where) {
   if (!(bookmark.camera.verticalFovDegrees > 0.0f && bookmark.camera.verticalFovDegrees < 180.0f))
     throw Error(fmt::format("{}: \"verticalFovDegrees\" {} is not in (0, 180)", camera,
                             bookmark.camera.verticalFovDegrees));
+  bookmark.camera.orthographicHeight = scene::readFloat(c, "orthographicHeight", 0.0f, camera);
+  if (!(bookmark.camera.orthographicHeight >= 0.0f) ||
+      !std::isfinite(bookmark.camera.orthographicHeight))
+    throw Error(
+        fmt::format("{}: \"orthographicHeight\" must be 0 (perspective) or positive", camera));
   bookmark.camera.aspectRatio = scene::readFloat(c, "aspectRatio", 0.0f, camera);
   if (bookmark.camera.aspectRatio < 0.0f)
     throw Error(fmt::format("{}: \"aspectRatio\" must be 0 (the image's) or positive", camera));
@@ -118,6 +123,7 @@ void BookmarkStore::write() const {
                                          {"forward", vec3(b.camera.forward)},
                                          {"up", vec3(b.camera.up)},
                                          {"verticalFovDegrees", b.camera.verticalFovDegrees},
+                                         {"orthographicHeight", b.camera.orthographicHeight},
                                          {"aspectRatio", b.camera.aspectRatio}}}});
   std::error_code ec;
   const auto dir = std::filesystem::path(path_).parent_path();

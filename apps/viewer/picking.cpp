@@ -7,8 +7,9 @@
 namespace penumbra::viewer {
 
 Ray cameraRay(const scene::Camera& camera, uint32_t width, uint32_t height, glm::vec2 pixel) {
-  const render::CameraModel model = render::cameraModel(camera, width, height);
-  return {camera.position, glm::vec3(render::cameraRayDirection(model, pixel))};
+  const render::CameraRay ray =
+      render::cameraRay(render::cameraModel(camera, width, height), pixel);
+  return {glm::vec3(ray.origin), glm::vec3(ray.direction)};
 }
 
 std::optional<PickHit> pick(render::PathTracer& tracer, const scene::Scene& scene, const Ray& ray) {

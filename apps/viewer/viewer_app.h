@@ -40,8 +40,8 @@ struct ViewerOptions {
   bool vsync = true;
   std::string config;                     // bookmarks file; empty: BookmarkStore::defaultPath()
   render::EnvironmentChoice environment;  // --env options, applied to every scene loaded
-  // --camera, --camera-position, --look-at, --fov: the first scene's view
-  // (a scene opened later starts from its own camera).
+  // --camera, --camera-position, --look-at, --fov, --orthographic: the first
+  // scene's view (a scene opened later starts from its own camera).
   scene::CameraPlacement camera;
   // --variant, --animation, --time: the first scene's material variant and
   // animation pose (a scene opened later has its own materials and pose).

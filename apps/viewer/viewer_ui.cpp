@@ -127,7 +127,18 @@ void Viewer::drawCameraMenu() {
     tracer_->setCamera(camera_->camera());
   }
   scene::Camera lens = c;
-  bool lensChanged =
+  bool orthographic = lens.orthographic();
+  bool lensChanged = ImGui::Checkbox("orthographic", &orthographic);
+  if (lensChanged)
+    lens.orthographicHeight =
+        orthographic ? scene::orthographicHeightAt(lens, lens.focusDistance) : 0.0f;
+  if (lens.orthographic())
+    lensChanged |= ImGui::DragFloat("view height (m)", &lens.orthographicHeight, 0.01f, 0.001f,
+                                    1e5f, "%.3f", ImGuiSliderFlags_Logarithmic);
+  else
+    lensChanged |= ImGui::DragFloat("vertical field of view (deg)", &lens.verticalFovDegrees, 0.1f,
+                                    1.0f, 170.0f, "%.1f");
+  lensChanged |=
       ImGui::DragFloat("aperture radius (m)", &lens.apertureRadius, 0.0005f, 0.0f, 1.0f, "%.4f");
   lensChanged |= ImGui::DragFloat("focus distance (m)", &lens.focusDistance, 0.01f, 0.001f, 1e5f,
                                   "%.3f", ImGuiSliderFlags_Logarithmic);

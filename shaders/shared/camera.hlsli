@@ -5,13 +5,13 @@
 #include "rng.hlsli"
 #include "sampling.hlsli"
 
-// `filmPosition` is in pixels, (0,0) the top-left corner of the image.
-float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
-  float tanHalfFov = c.camera.tanHalfFovY;
-  float aspect = c.camera.aspectRatio;
-  float sx = (2.0 * filmPosition.x / float(c.width) - 1.0) * tanHalfFov * aspect;
-  float sy = (1.0 - 2.0 * filmPosition.y / float(c.height)) * tanHalfFov;
-  return normalize(c.camera.forward + sx * c.camera.right + sy * c.camera.up);
+// Where `filmPosition` (pixels, (0,0) the top-left corner of the image) lies
+// on the film, along the camera's right and up: at unit distance ahead for a
+// perspective camera, in world units about its position for an orthographic one.
+float2 filmPoint(FrameConstants c, float2 filmPosition) {
+  float halfHeight = c.camera.filmHalfHeight;
+  return float2((2.0 * filmPosition.x / float(c.width) - 1.0) * halfHeight * c.camera.aspectRatio,
+                (1.0 - 2.0 * filmPosition.y / float(c.height)) * halfHeight);
 }
 
 // Stratified jittered position of sample `index` of `count` in one frame: the
@@ -59,16 +59,24 @@ float2 samplePolygon(uint sides, float u0, float u1) {
   return b.x * a0 + b.y * a1;
 }
 
-// The camera ray through `filmPosition`: the pinhole's, or with a thin lens
-// (camera.apertureRadius > 0) from a point of the aperture (a disk, or a polygon of
-// FrameConstants.sceneFlags' blade count) towards where the
-// pinhole ray meets the plane in focus, so that plane stays sharp and
-// everything nearer or farther blurs by its circle of confusion. A pinhole
-// draws no random numbers, so its images do not change with the lens code.
+// The camera ray through `filmPosition`: the pinhole's (from the position
+// through the film point; orthographic: from the film point along forward),
+// or with a thin lens (camera.apertureRadius > 0) from a point of the
+// aperture (a disk, or a polygon of FrameConstants.sceneFlags' blade count)
+// towards where the pinhole ray meets the plane in focus, so that plane stays
+// sharp and everything nearer or farther blurs by its circle of confusion. A
+// pinhole draws no random numbers, so its images do not change with the lens
+// code.
 void cameraRay(FrameConstants c, float2 filmPosition, inout Rng rng, out float3 origin,
                out float3 direction) {
-  origin = c.camera.position;
-  direction = cameraRayDirection(c, filmPosition);
+  float2 film = filmPoint(c, filmPosition);
+  if ((c.sceneFlags & PT_SCENE_ORTHOGRAPHIC) != 0u) {
+    origin = c.camera.position + film.x * c.camera.right + film.y * c.camera.up;
+    direction = c.camera.forward;
+  } else {
+    origin = c.camera.position;
+    direction = normalize(c.camera.forward + film.x * c.camera.right + film.y * c.camera.up);
+  }
   float lensRadius = c.camera.apertureRadius;
   if (lensRadius > 0.0) {
     float3 inFocus = origin + direction * (c.camera.focusDistance / dot(direction, c.camera.forward));

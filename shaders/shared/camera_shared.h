@@ -11,12 +11,17 @@ namespace penumbra::gpu {
 #endif
 
 // The camera as the shaders see it (shaders/shared/camera.hlsli): a pinhole
-// at `position`, or a thin lens when apertureRadius > 0. Each float3 and the
-// float after it fill one 16-byte row, laid out alike in C++, std430, HLSL
-// constant buffers and structured buffers.
+// at `position`, or a thin lens when apertureRadius > 0; rays fan out from it
+// (perspective), or leave the film plane along `forward` where the frame's
+// PT_SCENE_ORTHOGRAPHIC / DenoiseFrame.orthographic says so. Each float3 and
+// the float after it fill one 16-byte row, laid out alike in C++, std430,
+// HLSL constant buffers and structured buffers (FrameConstants has no room
+// for a row more: push constants stop at 128 bytes).
 struct CameraData {
   float3 position;       // render space: relative to the render origin
-  float tanHalfFovY;     // tan(vertical field of view / 2)
+  // Half the film's height: at unit distance ahead, tan(vertical field of
+  // view / 2), for a perspective camera; in world units for an orthographic one.
+  float filmHalfHeight;
   float3 right;          // unit
   float aspectRatio;     // width / height
   float3 up;             // unit
@@ -27,7 +32,7 @@ struct CameraData {
 
 #ifdef __cplusplus
 // The offsets std430 and HLSL packing give: each float3 opens a 16-byte row.
-static_assert(sizeof(CameraData) == 64 && offsetof(CameraData, tanHalfFovY) == 12 &&
+static_assert(sizeof(CameraData) == 64 && offsetof(CameraData, filmHalfHeight) == 12 &&
               offsetof(CameraData, right) == 16 && offsetof(CameraData, forward) == 48);
 }  // namespace penumbra::gpu
 #endif

@@ -65,9 +65,11 @@ float3 clampFirefly(DenoiseFrame f, int2 p, float3 illumination) {
 // position for reflections), from the linear view depth.
 float3 virtualPosition(DenoiseFrame f, int2 p, float depth) {
   float2 ndc = (float2(p) + float2(0.5, 0.5)) / float2(float(f.width), float(f.height)) * 2.0 - float2(1.0, 1.0);
-  float tanHalfFov = f.camera.tanHalfFovY;
-  float3 d = f.camera.forward + ndc.x * tanHalfFov * f.camera.aspectRatio * f.camera.right -
-             ndc.y * tanHalfFov * f.camera.up;
+  float halfHeight = f.camera.filmHalfHeight;
+  float3 across = ndc.x * halfHeight * f.camera.aspectRatio * f.camera.right - ndc.y * halfHeight * f.camera.up;
+  if (f.orthographic != 0u) return f.camera.position + across + f.camera.forward * depth;
+  float3 d = f.camera.forward + ndc.x * halfHeight * f.camera.aspectRatio * f.camera.right -
+             ndc.y * halfHeight * f.camera.up;
   return f.camera.position + d * depth;  // d's forward component is 1
 }
 
@@ -76,9 +78,12 @@ float3 virtualPosition(DenoiseFrame f, int2 p, float depth) {
 float3 projectToPrevious(DenoiseFrame f, float3 world) {
   float3 v = world - f.previousCamera.position;
   float z = dot(v, f.previousCamera.forward);
-  float tanHalfFov = f.camera.tanHalfFovY;  // the field of view does not change between frames
-  float sx = dot(v, f.previousCamera.right) / (z * tanHalfFov * f.camera.aspectRatio);
-  float sy = dot(v, f.previousCamera.up) / (z * tanHalfFov);
+  // The film's size does not change between frames (Denoiser::run starts a
+  // new history when it does); an orthographic film does not shrink with depth.
+  float scale = f.orthographic != 0u ? 1.0 : z;
+  float halfHeight = f.camera.filmHalfHeight;
+  float sx = dot(v, f.previousCamera.right) / (scale * halfHeight * f.camera.aspectRatio);
+  float sy = dot(v, f.previousCamera.up) / (scale * halfHeight);
   return float3((sx + 1.0) * 0.5 * float(f.width), (1.0 - sy) * 0.5 * float(f.height), z);
 }
 

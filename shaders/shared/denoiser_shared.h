@@ -70,11 +70,17 @@ struct DenoiseFrame {
   float normalExponent;  // (n . n_q)^exponent (SVGF's sigma_n); 0: off
   float luminanceSigma;  // luminance difference in standard deviations (SVGF's sigma_l); 0: off
   float albedoFloor;     // demodulation never divides by less
+  // 1: both cameras are orthographic (their filmHalfHeight in world units;
+  // the path tracer's PT_SCENE_ORTHOGRAPHIC), 0: both perspective.
+  uint orthographic;
+  uint unused0;
+  uint unused1;
+  uint unused2;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DenoisePush) == 16);
-static_assert(sizeof(DenoiseFrame) == 160 && offsetof(DenoiseFrame, width) == 128);
+static_assert(sizeof(DenoiseFrame) == 176 && offsetof(DenoiseFrame, width) == 128);
 }  // namespace penumbra::gpu
 #endif
 #endif

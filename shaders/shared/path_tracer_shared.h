@@ -102,6 +102,7 @@ namespace penumbra::gpu {
 // aperture blades (0: round).
 #define PT_SCENE_ENVIRONMENT 1u      // rays that leave the scene see the environment, NEE samples it
 #define PT_SCENE_BACKGROUND 2u       // camera rays that miss see it too (else black)
+#define PT_SCENE_ORTHOGRAPHIC 4u     // parallel camera rays (CameraData.filmHalfHeight in metres)
 #define PT_SCENE_BLADES_SHIFT 8u
 
 // Rng.sampler (shaders/shared/rng.hlsli).

@@ -62,6 +62,8 @@ expect_error "a folder as the scene" "is a folder; give a scene file" render --s
 mkdir -p "$work/folder.gltf"
 expect_error "a folder named like a glTF file" "is a folder" render --scene "$work/folder.gltf" --out "$work/out.png"
 expect_error "look-at at the camera" "is the camera's position" render --camera-position 1,2,3 --look-at 1,2,3 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "a field of view and an orthographic height" "give --fov (perspective) or --orthographic, not both" render --fov 40 --orthographic 2 --size 8x8 --spp 1 --out "$work/out.png"
+expect_error "an f-number for an orthographic camera" "--f-number needs a focal length" render --orthographic 2 --f-number 4 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "a camera position of two numbers" "--camera-position" render --camera-position 1,2 --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "an unknown material variant" "no material variant 'dusk'" render --scene "$gltf_data/materials.gltf" --variant dusk --size 8x8 --spp 1 --out "$work/out.png"
 expect_error "an unknown animation" "no animation 'Walk' (animations by index and name: 0 'Bend', 1 'Slide')" render --scene "$gltf_data/animated.gltf" --animation Walk --size 8x8 --spp 1 --out "$work/out.png"

@@ -50,6 +50,14 @@ gltf_data="$(cd "$(dirname "$0")/../data/gltf" && pwd)"
 "$penumbra" render --scene "$gltf_data/cameras.gltf" --camera-position 5,0,0 --look-at 0,0,0 \
   --fov 28.6478897565 --size 16x16 --spp 2 --out "$work/placed.exr" >/dev/null
 "$penumbra" compare "$work/placed.exr" "$work/named.exr" --tolerance 1e-4 >/dev/null
+# An orthographic view does not change with distance: the triangle seen
+# from 5 m and from 50 m along the same parallel rays is the same image.
+for distance in 5 50; do
+  "$penumbra" render --scene "$gltf_data/cameras.gltf" --camera-position 0.3,0.3,$distance \
+    --look-at 0.3,0.3,0 --orthographic 1.5 --size 16x16 --spp 2 --out "$work/ortho$distance.exr" \
+    >/dev/null
+done
+"$penumbra" compare "$work/ortho50.exr" "$work/ortho5.exr" --tolerance 1e-4 >/dev/null
 "$penumbra" render --scene "$gltf_data/cameras.gltf" --camera 1 --size 16x16 --spp 2 \
   --out "$work/indexed.exr" >/dev/null
 "$penumbra" compare "$work/indexed.exr" "$work/named.exr" --tolerance 0 >/dev/null

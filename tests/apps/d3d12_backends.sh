@@ -123,6 +123,9 @@ case "$group" in
     layers=""
     compare_case sobol-thin-lens 0.002 --scene cornell-box --sampler sobol --aperture 0.02 --focus-distance 1.2 \
       "${common[@]}"
+    # Parallel camera rays, and the denoiser's reprojection of them.
+    compare_case orthographic-svgf 0.002 --scene cornell-box --orthographic 0.6 --denoise svgf \
+      --spp-per-frame 1 "${common[@]}"
 
     # Sample-split pieces rendered on D3D12 merge (Linux penumbra merge) into
     # the image Vulkan renders in one piece.

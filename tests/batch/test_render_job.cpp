@@ -26,6 +26,7 @@ TEST_CASE("render job: a written record reads back with every field", "[render]"
   REQUIRE(job.camera.has_value());
   CHECK(job.camera->position == glm::dvec3(0.5, 1.25, -3.0));
   CHECK(job.camera->verticalFovDegrees == 30.0f);
+  CHECK_FALSE(job.camera->orthographic());  // no "orthographicHeight": perspective
   CHECK(job.width == 320u);
   CHECK(job.height == 200u);
   CHECK(job.spp == 48u);
@@ -119,6 +120,13 @@ TEST_CASE("render job: the writer round trips every field", "[render]") {
   CHECK(back.camera->apertureRadius == camera.apertureRadius);
   CHECK(back.camera->focusDistance == camera.focusDistance);
   CHECK(back.camera->apertureBlades == camera.apertureBlades);
+  CHECK(back.camera->orthographicHeight == 0.0f);
+  // An orthographic camera's height comes back too.
+  render::RenderJob orthoJob = job;
+  orthoJob.camera->orthographicHeight = 2.75f;
+  const auto orthoBack =
+      render::renderJobFromJson(render::renderJobToJson(orthoJob), "orthographic round trip");
+  CHECK(orthoBack.camera->orthographicHeight == 2.75f);
   CHECK(back.width == job.width);
   CHECK(back.height == job.height);
   CHECK(back.spp == job.spp);

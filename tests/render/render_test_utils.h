@@ -24,7 +24,7 @@ inline image::Image renderScene(rhi::IDevice& device, const scene::Scene& scene,
 // which fills the frame constants shaders/shared/camera.hlsli reads.
 inline glm::vec3 cameraRayDirection(const scene::Camera& c, uint32_t width, uint32_t height,
                                     glm::vec2 film) {
-  return glm::vec3(render::cameraRayDirection(render::cameraModel(c, width, height), film));
+  return glm::vec3(render::cameraRay(render::cameraModel(c, width, height), film).direction);
 }
 
 // The rays a pixel's jittered samples can take lie between its corners; a
@@ -45,7 +45,7 @@ inline glm::dvec2 projectToFilm(const scene::Camera& camera, glm::dvec3 p, uint3
 // Unit direction of the camera ray through a film position, in double.
 inline glm::dvec3 cameraRayDirection(const scene::Camera& camera, glm::dvec2 film, uint32_t w,
                                      uint32_t h) {
-  return render::cameraRayDirection(render::cameraModel(camera, w, h), film);
+  return render::cameraRay(render::cameraModel(camera, w, h), film).direction;
 }
 
 }  // namespace penumbra::test

@@ -184,11 +184,16 @@ TEST_CASE("scene files merge glTF files with their transforms and cameras", "[sc
   // The floor quad, cameras.gltf's triangle and transforms.gltf's 5 instances.
   REQUIRE(s.instances.size() == 1u + 1u + 5u);
   // No scene camera: the view is cameras.gltf's 'side' (its "camera"),
-  // moved by that file's translation (0, 0, -3): (5, 0, -3).
-  REQUIRE(s.camera.position.x == Catch::Approx(5.0f));
+  // at (5, 0, 0) scaled by 2 and moved by (0, 0, -3): (10, 0, -3).
+  REQUIRE(s.camera.position.x == Catch::Approx(10.0f));
   REQUIRE(s.camera.position.z == Catch::Approx(-3.0f));
   REQUIRE(s.camera.forward.x == Catch::Approx(-1.0f));
-  REQUIRE(s.cameras.size() == 2u);
+  REQUIRE(s.cameras.size() == 3u);
+  // The orthographic 'ortho' (2 m tall, 2 m up) grows with the file's scale.
+  const scene::Camera& ortho = s.cameras[2].camera;
+  REQUIRE(ortho.orthographicHeight == Catch::Approx(4.0f));
+  REQUIRE(ortho.position.y == Catch::Approx(4.0));
+  REQUIRE(ortho.forward.y == Catch::Approx(-1.0f));
   // transforms.gltf moved up by 100 (column-major matrix): its 'child'
   // instance's vertex (1,0,0) lands at (10, 2, 2) + (0, 100, 0).
   const auto& child = s.instances[2];

@@ -65,8 +65,10 @@ TEST_CASE("camera framing: the bounds fit the frame, seen from a three-quarter v
   CHECK(std::abs(flat.forward.y) == Approx(0.5).margin(1e-5));
 }
 
-TEST_CASE("camera placement: position, look-at and field of view over the scene's camera",
-          "[scene][camera]") {
+TEST_CASE(
+    "camera placement: position, look-at, field of view and orthographic height over the scene's "
+    "camera",
+    "[scene][camera]") {
   scene::Scene s = boxScene({0, 0, 0}, {1, 1, 1});
   s.camera.position = {0, 0, 10};
   s.camera.forward = {0, 0, -1};
@@ -103,7 +105,24 @@ TEST_CASE("camera placement: position, look-at and field of view over the scene'
   CHECK(down.camera.up == glm::vec3(0, 0, 1));
   scene::validateCamera(down.camera);
 
+  // An orthographic height makes the camera orthographic, a field of view
+  // perspective again; each holds at every image shape.
+  scene::Scene ortho = s;
+  scene::placeCamera(ortho, {.orthographicHeight = 3.0f});
+  CHECK(ortho.camera.orthographic());
+  CHECK(ortho.camera.orthographicHeight == 3.0f);
+  CHECK(ortho.camera.aspectRatio == 0.0f);
+  CHECK(ortho.camera.position == s.camera.position);
+  scene::placeCamera(ortho, {.verticalFovDegrees = 30.0f});
+  CHECK_FALSE(ortho.camera.orthographic());
+  CHECK(ortho.camera.verticalFovDegrees == 30.0f);
+
   // Unusable placements are refused by name.
+  CHECK_THROWS_WITH(
+      scene::placeCamera(s, {.verticalFovDegrees = 30.0f, .orthographicHeight = 2.0f}),
+      ContainsSubstring("give --fov (perspective) or --orthographic, not both"));
+  CHECK_THROWS_WITH(scene::placeCamera(s, {.orthographicHeight = 0.0f}),
+                    ContainsSubstring("--orthographic 0 must be finite and > 0"));
   CHECK_THROWS_WITH(scene::placeCamera(s, {.lookAt = glm::dvec3(0, 0, 10)}),
                     ContainsSubstring("--look-at (0, 0, 10) is the camera's position"));
   CHECK_THROWS_WITH(scene::placeCamera(s, {.verticalFovDegrees = 180.0f}),

@@ -392,9 +392,10 @@ TEST_CASE("glTF cameras: the first in node order is the view, others by name", "
   const auto r = scene::importGltf(gltf("cameras.gltf"));
   auto s = r.scene;
   // Node 1 'front' (camera 'second') precedes node 2 'side' although the
-  // scene lists node 2 first; the orthographic camera is skipped with a warning.
-  REQUIRE(s.cameras.size() == 2u);
-  REQUIRE(hasWarning(r, "orthographic"));
+  // scene lists node 2 first; node 3's orthographic camera comes last.
+  REQUIRE(s.cameras.size() == 3u);
+  REQUIRE(r.warnings.empty());
+  REQUIRE_FALSE(s.camera.orthographic());
   requireNear(s.camera.position, {0, 0, 5});
   requireNear(s.camera.forward, {0, 0, -1});
   requireNear(s.camera.up, {0, 1, 0});
@@ -409,15 +410,26 @@ TEST_CASE("glTF cameras: the first in node order is the view, others by name", "
   // By camera name.
   scene::selectCamera(s, "second");
   requireNear(s.camera.position, {0, 0, 5});
-  REQUIRE_THROWS_WITH(scene::selectCamera(s, "nope"),
-                      ContainsSubstring("no camera named 'nope'") &&
-                          ContainsSubstring("0 'second' (node 'front'), 1 'first' (node 'side')"));
+  REQUIRE_THROWS_WITH(
+      scene::selectCamera(s, "nope"),
+      ContainsSubstring("no camera named 'nope'") &&
+          ContainsSubstring("0 'second' (node 'front'), 1 'first' (node 'side'), 2 'ortho'"));
+
+  // 'ortho': xmag 1.5 and ymag 1 are half its width and height; 2 m above the
+  // origin, turned -90 degrees about +x: it looks down (-z -> -y), its up is -z.
+  scene::selectCamera(s, "ortho");
+  REQUIRE(s.camera.orthographic());
+  REQUIRE(s.camera.orthographicHeight == Approx(2.0));
+  REQUIRE(s.camera.aspectRatio == Approx(1.5));
+  requireNear(s.camera.position, {0, 2, 0});
+  requireNear(s.camera.forward, {0, -1, 0});
+  requireNear(s.camera.up, {0, 0, -1});
   // By index in node order, which unnamed cameras need.
   scene::selectCamera(s, "1");
   requireNear(s.camera.position, {5, 0, 0});
   scene::selectCamera(s, "0");
   requireNear(s.camera.position, {0, 0, 5});
-  REQUIRE_THROWS_WITH(scene::selectCamera(s, "2"), ContainsSubstring("no camera named '2'"));
+  REQUIRE_THROWS_WITH(scene::selectCamera(s, "3"), ContainsSubstring("no camera named '3'"));
   s.cameras[1].name.clear();
   s.cameras[1].nodeName.clear();
   REQUIRE_THROWS_WITH(scene::selectCamera(s, "x"), ContainsSubstring("1 (unnamed)"));

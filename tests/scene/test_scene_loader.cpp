@@ -202,6 +202,31 @@ TEST_CASE("scene files: a soft sun, a lens by f-number with blades, an environme
       ContainsSubstring("angularRadiusDegrees"));
 }
 
+TEST_CASE("scene files: an orthographic camera, its height in file units", "[scene][camera]") {
+  auto scene = [](const std::string& camera) {
+    return R"({"format":"penumbra-scene","version":1,"unitScale":0.001,
+    "camera":{"position":[0,0,0],"forward":[0,0,1],"up":[0,1,0])" +
+           camera + R"(},
+    "materials":{"white":{"albedo":[0.5,0.5,0.5]}},
+    "meshes":[{"name":"q","material":"white","quads":[[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]]}]})";
+  };
+  const auto s = scene::parseScene(scene(R"(,"orthographicHeight":1500)"), "t.json");
+  CHECK(s.camera.orthographic());
+  CHECK(s.camera.orthographicHeight == Approx(1.5f));  // 1500 mm
+  CHECK_FALSE(
+      scene::parseScene(scene(R"(,"verticalFovDegrees":40)"), "t.json").camera.orthographic());
+  REQUIRE_THROWS_WITH(scene::parseScene(scene(""), "t.json"),
+                      ContainsSubstring("t.json' camera: give \"verticalFovDegrees\"") &&
+                          ContainsSubstring("exactly one"));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(scene(R"(,"verticalFovDegrees":40,"orthographicHeight":2)"), "t.json"),
+      ContainsSubstring("exactly one"));
+  REQUIRE_THROWS_WITH(scene::parseScene(scene(R"(,"orthographicHeight":-2)"), "t.json"),
+                      ContainsSubstring("\"orthographicHeight\" -2 must be finite and > 0"));
+  REQUIRE_THROWS_WITH(scene::parseScene(scene(R"(,"orthographicHeight":2,"fNumber":4)"), "t.json"),
+                      ContainsSubstring("no focal length for \"fNumber\""));
+}
+
 TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused", "[scene]") {
   auto withGlass = [](const std::string& glass) {
     return R"({"format":"penumbra-scene","version":1,"unitScale":0.001,

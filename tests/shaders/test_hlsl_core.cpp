@@ -44,7 +44,7 @@ std::vector<float> runFurnace(rhi::IDevice& device, uint32_t flags, uint32_t max
 
   gpu::FrameConstants push{};
   push.camera.position = {0, 0, 0};
-  push.camera.tanHalfFovY = 1.0f;  // tan(45 deg)
+  push.camera.filmHalfHeight = 1.0f;  // tan(45 deg)
   push.camera.right = {-1, 0, 0};
   push.camera.aspectRatio = 1.0f;
   push.camera.up = {0, 1, 0};

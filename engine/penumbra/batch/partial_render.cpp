@@ -52,8 +52,8 @@ std::string splitSettingsHash(const RenderSettings& settings, const scene::Camer
   h.value(camera.position);
   h.value(camera.forward);
   h.value(camera.up);
-  for (float v :
-       {camera.verticalFovDegrees, camera.aspectRatio, camera.apertureRadius, camera.focusDistance})
+  for (float v : {camera.verticalFovDegrees, camera.orthographicHeight, camera.aspectRatio,
+                  camera.apertureRadius, camera.focusDistance})
     h.value(v);
   h.value(camera.apertureBlades);
   h.value(width);

@@ -340,6 +340,7 @@ std::string renderJobToJson(const RenderJob& job) {
                      {"forward", toJson(job.camera->forward)},
                      {"up", toJson(job.camera->up)},
                      {"verticalFovDegrees", job.camera->verticalFovDegrees},
+                     {"orthographicHeight", job.camera->orthographicHeight},
                      {"aspectRatio", job.camera->aspectRatio},
                      {"apertureRadius", job.camera->apertureRadius},
                      {"focusDistance", job.camera->focusDistance},
@@ -419,6 +420,7 @@ RenderJob renderJobFromJson(const std::string& text, const std::string& source,
     }
     for (auto [key, field] : {std::pair{"apertureRadius", &scene::Camera::apertureRadius},
                               std::pair{"focusDistance", &scene::Camera::focusDistance},
+                              std::pair{"orthographicHeight", &scene::Camera::orthographicHeight},
                               std::pair{"aspectRatio", &scene::Camera::aspectRatio}}) {
       if (!c.contains(key)) continue;
       camera.*field = r.finite(c[key], std::string("camera.") + key);

@@ -8,6 +8,7 @@
 //     "scene": "cornell-box", "vary": "", "set": "",
 //     "animation": "Walk", "time": 1.5,       // optional (scene::AnimationChoice)
 //     "camera": { "position": [x,y,z], "forward": [..], "up": [..], "verticalFovDegrees": 39.3,
+//                 "orthographicHeight": 0,  // > 0: orthographic, this tall
 //                 "apertureRadius": 0, "focusDistance": 1, "apertureBlades": 0 },
 //     "width": 512, "height": 512, "spp": 64, "sppPerFrame": 4,
 //     "integrator": "path", "strategy": "mis", "misHeuristic": "power", "sampler": "sobol",

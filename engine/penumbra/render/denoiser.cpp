@@ -122,10 +122,13 @@ void Denoiser::record(rhi::ICommandList& cmd, const PathTracer& tracer, const sc
   if (boundBeauty_ != tracer.accumulation().get()) createBindings(tracer);
 
   const bool temporal = settings.mode == DenoiseMode::Svgf;
+  // Reprojection moves the film, it does not resize it: a new field of view,
+  // orthographic height or projection starts a new history.
+  const bool continues = historyValid_ && sameFilm(previousCamera_, camera);
   gpu::DenoiseFrame f{};
   f.camera = cameraData(camera, width_, height_, tracer.renderOrigin());
   f.previousCamera =
-      cameraData(historyValid_ ? previousCamera_ : camera, width_, height_, tracer.renderOrigin());
+      cameraData(continues ? previousCamera_ : camera, width_, height_, tracer.renderOrigin());
   f.width = width_;
   f.height = height_;
   f.samplesPerPixel = samples;
@@ -134,11 +137,12 @@ void Denoiser::record(rhi::ICommandList& cmd, const PathTracer& tracer, const sc
   f.normalExponent = settings.normalExponent;
   f.luminanceSigma = settings.luminanceSigma;
   f.albedoFloor = settings.albedoFloor;
+  f.orthographic = camera.orthographic() ? 1u : 0u;
   cmd.writeBuffer(frame_.get(), &f, sizeof(f));
 
   uint32_t flags = 0;
   if (temporal) flags |= DN_FLAG_TEMPORAL;
-  if (temporal && historyValid_) flags |= DN_FLAG_HISTORY_VALID;
+  if (temporal && continues) flags |= DN_FLAG_HISTORY_VALID;
   if (settings.fireflyClamp) flags |= DN_FLAG_FIREFLY_CLAMP;
 
   const int p = parity_;

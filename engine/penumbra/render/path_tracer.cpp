@@ -244,7 +244,7 @@ gpu::CameraData cameraData(const scene::Camera& camera, uint32_t width, uint32_t
   };
   gpu::CameraData c;
   c.position = float3(m.position - renderOrigin);
-  c.tanHalfFovY = float(m.tanHalfFov);
+  c.filmHalfHeight = float(m.filmHalfHeight);
   c.right = float3(m.right);
   c.aspectRatio = float(m.aspect);
   c.up = float3(m.up);
@@ -252,6 +252,11 @@ gpu::CameraData cameraData(const scene::Camera& camera, uint32_t width, uint32_t
   c.forward = float3(m.forward);
   c.focusDistance = camera.focusDistance;
   return c;
+}
+
+uint32_t cameraSceneFlags(const scene::Camera& camera) {
+  return (camera.apertureBlades << PT_SCENE_BLADES_SHIFT) |
+         (camera.orthographic() ? PT_SCENE_ORTHOGRAPHIC : 0u);
 }
 
 uint32_t frameFlags(const PathTracerSettings& s) {
@@ -318,7 +323,7 @@ void PathTracer::recordFrame(rhi::ICommandList& cmd, const PathTracerSettings& s
   c.maxDepth = settings.maxDepth;
   c.rouletteStartDepth = settings.rouletteStartDepth;
   c.flags = frameFlags(settings);
-  uint32_t sceneFlags = camera_.apertureBlades << PT_SCENE_BLADES_SHIFT;
+  uint32_t sceneFlags = cameraSceneFlags(camera_);
   if (environment_.present()) {
     sceneFlags |= PT_SCENE_ENVIRONMENT;
     if (environment_.visibleBackground) sceneFlags |= PT_SCENE_BACKGROUND;

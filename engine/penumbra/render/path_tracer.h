@@ -81,6 +81,9 @@ struct FrameQueries {
 // (PathTracer::renderOrigin()).
 gpu::CameraData cameraData(const scene::Camera& camera, uint32_t width, uint32_t height,
                            const glm::dvec3& renderOrigin);
+// The FrameConstants.sceneFlags the camera sets: the aperture's blade count
+// and PT_SCENE_ORTHOGRAPHIC.
+uint32_t cameraSceneFlags(const scene::Camera& camera);
 
 // FrameConstants.flags for these settings (PT_FLAG_* and PT_DIRECTIONS_*).
 uint32_t frameFlags(const PathTracerSettings& settings);

@@ -52,6 +52,10 @@ Camera framingCamera(const Scene& scene) {
   return c;
 }
 
+float orthographicHeightAt(const Camera& camera, double distance) {
+  return float(2.0 * distance * std::tan(glm::radians(0.5 * double(camera.verticalFovDegrees))));
+}
+
 void placeCamera(Camera& camera, const CameraPlacement& placement) {
   if (placement.position) {
     requireFinite(*placement.position, "--camera-position");
@@ -67,12 +71,22 @@ void placeCamera(Camera& camera, const CameraPlacement& placement) {
     camera.up = upFor(forward, camera.up);
     camera.forward = glm::vec3(glm::normalize(forward));
   }
+  if (placement.verticalFovDegrees && placement.orthographicHeight)
+    throw Error("camera: give --fov (perspective) or --orthographic, not both");
   if (placement.verticalFovDegrees) {
     const float fov = *placement.verticalFovDegrees;
     if (!(fov > 0.0f && fov < 180.0f))
       throw Error(fmt::format("camera: --fov {} must lie in (0, 180) degrees", fov));
     camera.verticalFovDegrees = fov;
+    camera.orthographicHeight = 0.0f;
     camera.aspectRatio = 0.0f;  // the field of view asked for, whatever the image's shape
+  }
+  if (placement.orthographicHeight) {
+    const float height = *placement.orthographicHeight;
+    if (!(height > 0.0f) || !std::isfinite(height))
+      throw Error(fmt::format("camera: --orthographic {} must be finite and > 0", height));
+    camera.orthographicHeight = height;
+    camera.aspectRatio = 0.0f;
   }
 }
 

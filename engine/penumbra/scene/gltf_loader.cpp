@@ -380,13 +380,16 @@ class Importer {
                               model_.cameras.size()));
     const auto& src = model_.cameras[size_t(node.camera)];
     const std::string name = named("camera", size_t(node.camera), src.name);
-    if (src.type != "perspective") {
-      warn(fmt::format("{}: {} is {}, only perspective cameras are supported; skipped", where, name,
-                       src.type));
-      return;
-    }
+    const bool orthographic = src.type == "orthographic";
+    if (!orthographic && src.type != "perspective")
+      throw Error(fmt::format("{}: {} has type '{}'; 'perspective' or 'orthographic' expected",
+                              where, name, src.type));
     const double yfov = src.perspective.yfov;
-    if (!(yfov > 0.0 && yfov < glm::pi<double>()))
+    const double xmag = src.orthographic.xmag, ymag = src.orthographic.ymag;
+    if (orthographic && !(std::isfinite(xmag) && std::isfinite(ymag) && xmag != 0.0 && ymag != 0.0))
+      throw Error(fmt::format("{}: {} has xmag {} and ymag {}; both must be finite and non-zero",
+                              where, name, xmag, ymag));
+    if (!orthographic && !(yfov > 0.0 && yfov < glm::pi<double>()))
       throw Error(fmt::format("{}: {} has yfov {}, not in (0, pi)", where, name, yfov));
     // glTF cameras look down their node's -z with +y up; scale is ignored.
     NamedCamera c;
@@ -399,10 +402,16 @@ class Importer {
       throw Error(fmt::format("{}: the node's transform collapses {}'s view", where, name));
     c.camera.forward = glm::normalize(forward);
     c.camera.up = glm::normalize(up);
-    c.camera.verticalFovDegrees = float(glm::degrees(yfov));
-    // The frame yfov was chosen for: a narrower image keeps its horizontal
-    // field of view (scene::Camera::aspectRatio).
-    const double aspect = src.perspective.aspectRatio;
+    // The frame the view was chosen for: a narrower image keeps its
+    // horizontal field of view or width (scene::Camera::aspectRatio).
+    double aspect = src.perspective.aspectRatio;
+    if (orthographic) {
+      // xmag and ymag are half the view's width and height.
+      c.camera.orthographicHeight = float(2.0 * std::abs(ymag));
+      aspect = std::abs(xmag / ymag);
+    } else {
+      c.camera.verticalFovDegrees = float(glm::degrees(yfov));
+    }
     if (aspect > 0.0 && std::isfinite(aspect)) c.camera.aspectRatio = float(aspect);
     cameras_.emplace_back(nodeIndex, std::move(c));
   }

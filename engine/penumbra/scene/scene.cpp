@@ -119,7 +119,17 @@ float apertureRadiusForFNumber(float fNumber, float verticalFovDegrees) {
   return float(focalLength / (2.0 * fNumber));
 }
 
+bool sameFilm(const Camera& a, const Camera& b) {
+  return a.orthographicHeight == b.orthographicHeight && a.aspectRatio == b.aspectRatio &&
+         (a.orthographic() || a.verticalFovDegrees == b.verticalFovDegrees);
+}
+
 void validateCamera(const Camera& camera) {
+  // Bounded so that the film's corners stay far from float's overflow.
+  if (!(camera.orthographicHeight >= 0.0f && camera.orthographicHeight <= 1e9f))
+    throw Error(fmt::format(
+        "camera: orthographic height {} must be finite, >= 0 and at most 1e9 (0: perspective)",
+        camera.orthographicHeight));
   if (!(camera.aspectRatio >= 0.0f) || !std::isfinite(camera.aspectRatio))
     throw Error(fmt::format("camera: aspect ratio {} must be finite and >= 0 (0: none)",
                             camera.aspectRatio));

@@ -200,7 +200,12 @@ struct Camera {
   glm::dvec3 position{0.0};
   glm::vec3 forward{0.0f, 0.0f, 1.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float verticalFovDegrees = 45.0f;
+  float verticalFovDegrees = 45.0f;  // perspective
+  // > 0: an orthographic camera, its view this tall (world units) and as wide
+  // as the image's shape makes it: rays leave the film plane through
+  // `position` in parallel along forward, and verticalFovDegrees is not used.
+  // 0: perspective, rays fan out from `position`.
+  float orthographicHeight = 0.0f;
   // The width / height of the frame the field of view was chosen for (as
   // glTF's aspectRatio). 0: none, the vertical field of view holds at every
   // image aspect. Otherwise an image narrower than this keeps the frame's
@@ -216,7 +221,13 @@ struct Camera {
   // The aperture's blades: 0 a round aperture, 3..32 a regular polygon of
   // that many straight sides inscribed in the radius (bokeh takes its shape).
   uint32_t apertureBlades = 0;
+
+  bool orthographic() const { return orthographicHeight > 0.0f; }
 };
+
+// Whether two cameras have the same film: projection, field of view or
+// orthographic height, and frame shape (they may stand and look anywhere).
+bool sameFilm(const Camera& a, const Camera& b);
 
 // The material-test row (scene/material_row.h): which materials belong to
 // its spheres, the base they share and the Disney parameter they vary.
@@ -283,8 +294,8 @@ void selectMaterialVariant(Scene& scene, const std::string& name);
 // implicit objects are well-formed (validateImplicit); throws penumbra::Error
 // naming the scene and the part.
 void validate(const Scene& scene);
-// A usable camera: a finite aperture radius >= 0, 0 or 3..32 blades and,
-// with a lens, a focus distance > 0. Throws penumbra::Error saying which.
+// A usable camera: an orthographic height in [0, 1e9], aperture radius >= 0,
+// 0 or 3..32 blades and, with a lens, a focus distance > 0. Throws penumbra::Error saying which.
 void validateCamera(const Camera& camera);
 // The aperture radius (metres) of a lens at f-number N on a 35 mm camera
 // (a 24 mm tall frame) with this vertical field of view: focal length / 2N.

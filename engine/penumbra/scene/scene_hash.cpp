@@ -16,7 +16,7 @@ namespace {
 // is added, and the environment is hashed: not hashed.
 static_assert(fieldCount<Material>() == 43, "a Material field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.cpp)");
-static_assert(fieldCount<Camera>() == 8, "a Camera field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Camera>() == 9, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<TextureRef>() == 6, "a TextureRef field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<TextureSampler>() == 4, "a sampler field is not hashed (scene_hash.cpp)");
@@ -52,7 +52,8 @@ void hashCamera(ContentHash& h, const Camera& c) {
   h.value(c.position);
   h.value(c.forward);
   h.value(c.up);
-  for (float v : {c.verticalFovDegrees, c.aspectRatio, c.apertureRadius, c.focusDistance})
+  for (float v : {c.verticalFovDegrees, c.orthographicHeight, c.aspectRatio, c.apertureRadius,
+                  c.focusDistance})
     h.value(v);
   h.value(c.apertureBlades);
 }

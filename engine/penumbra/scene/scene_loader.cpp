@@ -138,6 +138,9 @@ glm::dmat4 readTransform(const json& g, const std::string& where) {
 
 Camera transformCamera(const Camera& c, const glm::dmat4& t) {
   Camera r = c;
+  // An orthographic view grows with the scene it looks at.
+  r.orthographicHeight *=
+      float(glm::length(glm::dvec3(t * glm::dvec4(glm::normalize(glm::dvec3(c.up)), 0.0))));
   r.position = glm::dvec3(t * glm::dvec4(c.position, 1.0));
   r.forward = glm::normalize(glm::vec3(t * glm::dvec4(glm::dvec3(c.forward), 0.0)));
   r.up = glm::normalize(glm::vec3(t * glm::dvec4(glm::dvec3(c.up), 0.0)));
@@ -260,10 +263,22 @@ Camera parseCamera(const json& cam, const std::string& at, float scale) {
   camera.position = readDVec3(require(cam, "position", where), where + ".position") * double(scale);
   camera.forward = readDirection(require(cam, "forward", where), where + ".forward");
   camera.up = readDirection(require(cam, "up", where), where + ".up");
-  camera.verticalFovDegrees = requireFloat(cam, "verticalFovDegrees", where);
-  if (!(camera.verticalFovDegrees > 0.0f && camera.verticalFovDegrees < 180.0f))
-    throw Error(fmt::format("{}: \"verticalFovDegrees\" {} must lie in (0, 180)", where,
-                            camera.verticalFovDegrees));
+  // A perspective camera's field of view or an orthographic one's height.
+  if (cam.contains("verticalFovDegrees") == cam.contains("orthographicHeight"))
+    throw Error(where +
+                ": give \"verticalFovDegrees\" (perspective) or \"orthographicHeight\", "
+                "exactly one");
+  if (cam.contains("orthographicHeight")) {
+    camera.orthographicHeight = requireFloat(cam, "orthographicHeight", where) * scale;
+    if (!(camera.orthographicHeight > 0.0f) || !std::isfinite(camera.orthographicHeight))
+      throw Error(fmt::format("{}: \"orthographicHeight\" {} must be finite and > 0", where,
+                              camera.orthographicHeight / scale));
+  } else {
+    camera.verticalFovDegrees = requireFloat(cam, "verticalFovDegrees", where);
+    if (!(camera.verticalFovDegrees > 0.0f && camera.verticalFovDegrees < 180.0f))
+      throw Error(fmt::format("{}: \"verticalFovDegrees\" {} must lie in (0, 180)", where,
+                              camera.verticalFovDegrees));
+  }
   camera.aspectRatio = readFloat(cam, "aspectRatio", 0.0f, where);
   camera.apertureRadius = readFloat(cam, "apertureRadius", 0.0f, where) * scale;
   camera.focusDistance = readFloat(cam, "focusDistance", 1.0f / scale, where) * scale;
@@ -272,6 +287,10 @@ Camera parseCamera(const json& cam, const std::string& at, float scale) {
   if (cam.contains("fNumber")) {
     if (cam.contains("apertureRadius"))
       throw Error(at + " camera: give \"apertureRadius\" or \"fNumber\", not both");
+    if (camera.orthographic())
+      throw Error(at +
+                  " camera: an orthographic camera has no focal length for \"fNumber\"; "
+                  "give \"apertureRadius\"");
     const float fNumber = requireFloat(cam, "fNumber", where);
     if (!(fNumber > 0.0f) || !std::isfinite(fNumber))
       throw Error(fmt::format("{} camera: fNumber {} must be finite and > 0", at, fNumber));

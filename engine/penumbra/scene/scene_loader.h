@@ -6,7 +6,8 @@
 //   { "format": "penumbra-scene", "version": 1, "name": "...",
 //     "unitScale": 0.001,                        // file units -> metres
 //     "camera": { "position": [x,y,z], "forward": [x,y,z], "up": [x,y,z],
-//                 "verticalFovDegrees": 39.3077 },
+//                 "verticalFovDegrees": 39.3077 },  // or "orthographicHeight": 2
+//                                                   // (file units; a parallel view)
 //     "materials": { "white": { "model": "lambert", "albedo": [r,g,b],
 //                               "emission": [r,g,b] }, ... },
 //       model "disney" (default): baseColor, metallic, roughness, anisotropic,

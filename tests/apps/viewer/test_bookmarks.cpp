@@ -21,6 +21,9 @@ TEST_CASE("bookmarks: saved per scene, read back by a new store, removable", "[v
     CHECK(store.list("cornell-box").empty());
     store.save("cornell-box", {"door", camera});
     store.save("material-test", {"front", scene::Camera{}});
+    scene::Camera top = camera;
+    top.orthographicHeight = 2.5f;
+    store.save("implicit-surfaces", {"top", top});
   }
   viewer::BookmarkStore reread(path);
   const auto list = reread.list("cornell-box");
@@ -29,6 +32,9 @@ TEST_CASE("bookmarks: saved per scene, read back by a new store, removable", "[v
   CHECK(list[0].camera.position == camera.position);  // bit for bit
   CHECK(list[0].camera.forward == camera.forward);
   CHECK(list[0].camera.verticalFovDegrees == 55.0f);
+  CHECK_FALSE(list[0].camera.orthographic());
+  REQUIRE(reread.list("implicit-surfaces").size() == 1);
+  CHECK(reread.list("implicit-surfaces")[0].camera.orthographicHeight == 2.5f);
   CHECK(reread.list("material-test").size() == 1);
   reread.remove("cornell-box", "door");
   CHECK(viewer::BookmarkStore(path).list("cornell-box").empty());

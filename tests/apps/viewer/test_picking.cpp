@@ -14,6 +14,34 @@
 using namespace penumbra;
 using Catch::Approx;
 
+namespace {
+
+// What the ray generation shaders compute from the frame constants the path
+// tracer makes of this camera (shaders/shared/camera.hlsli), with the render
+// origin at the camera's position: for each film position its ray's origin
+// (relative to that) and direction.
+std::vector<glm::vec4> shaderCameraRays(rhi::IDevice& device, const scene::Camera& camera,
+                                        uint32_t width, uint32_t height,
+                                        const std::vector<glm::vec2>& film) {
+  gpu::FrameConstants constants{};
+  constants.camera = render::cameraData(camera, width, height, camera.position);
+  constants.sceneFlags = render::cameraSceneFlags(camera);
+  constants.width = width;
+  constants.height = height;
+  constants.samplesThisFrame = 1;
+  test::ComputeHarness harness(device, "camera_harness.comp");
+  const uint32_t count = uint32_t(film.size());
+  const auto bytes =
+      harness.run(&count, sizeof(count),
+                  {{&constants, sizeof(constants)}, {film.data(), film.size() * sizeof(glm::vec2)}},
+                  2 * film.size() * sizeof(glm::vec4), 1);
+  std::vector<glm::vec4> rays(2 * film.size());
+  std::memcpy(rays.data(), bytes.data(), bytes.size());
+  return rays;
+}
+
+}  // namespace
+
 TEST_CASE("picking: the camera ray is the one the shading core traces",
           "[viewer][gpu][spirv-only]") {
   // A tilted camera and a wide image, so that every term of the model counts.
@@ -27,37 +55,36 @@ TEST_CASE("picking: the camera ray is the one the shading core traces",
   for (float y : {0.0f, 0.5f, 37.25f, 60.0f, 119.5f, 120.0f})
     for (float x : {0.0f, 0.5f, 101.75f, 160.0f, 319.5f, 320.0f}) film.push_back({x, y});
 
-  // What the ray generation shaders compute from the frame constants the path
-  // tracer makes of this camera (shaders/shared/camera.hlsli).
   auto device = test::makeTestDevice();
-  gpu::FrameConstants constants{};
-  constants.camera = render::cameraData(camera, width, height, camera.position);
-  constants.width = width;
-  constants.height = height;
-  constants.samplesThisFrame = 1;
-  test::ComputeHarness harness(*device, "camera_harness.comp");
-  const uint32_t count = uint32_t(film.size());
-  const auto bytes =
-      harness.run(&count, sizeof(count),
-                  {{&constants, sizeof(constants)}, {film.data(), film.size() * sizeof(glm::vec2)}},
-                  film.size() * sizeof(glm::vec4), 1);
-  std::vector<glm::vec4> shader(film.size());
-  std::memcpy(shader.data(), bytes.data(), bytes.size());
-
-  for (size_t i = 0; i < film.size(); ++i) {
-    INFO("film (" << film[i].x << ", " << film[i].y << ")");
-    const viewer::Ray ray = viewer::cameraRay(camera, width, height, film[i]);
-    CHECK(glm::dvec3(ray.origin) == camera.position);
-    // float arithmetic on the GPU against the model's double: 1e-5 rad lets
-    // through a picked point 10 um off per metre, not a wrong basis or a
-    // half-pixel shift (3.6e-3 rad here).
-    CHECK(glm::length(ray.direction - glm::vec3(shader[i])) < 1e-5f);
+  scene::Camera orthographic = camera;
+  orthographic.orthographicHeight = 3.0f;
+  for (const scene::Camera& c : {camera, orthographic}) {
+    INFO((c.orthographic() ? "orthographic" : "perspective"));
+    const std::vector<glm::vec4> shader = shaderCameraRays(*device, c, width, height, film);
+    for (size_t i = 0; i < film.size(); ++i) {
+      INFO("film (" << film[i].x << ", " << film[i].y << ")");
+      const viewer::Ray ray = viewer::cameraRay(c, width, height, film[i]);
+      // float arithmetic on the GPU against the model's double: 1e-5 rad
+      // lets through a picked point 10 um off per metre, not a wrong basis
+      // or a half-pixel shift (3.6e-3 rad here); 1e-5 m of an orthographic
+      // film 3 m tall, not a shift of 1 % of a pixel.
+      CHECK(glm::length(ray.origin - glm::vec3(c.position) - glm::vec3(shader[2 * i])) < 1e-5f);
+      CHECK(glm::length(ray.direction - glm::vec3(shader[2 * i + 1])) < 1e-5f);
+    }
   }
   // The centre looks along forward; the top edge is half the field of view up.
   const viewer::Ray centre = viewer::cameraRay(camera, width, height, {160, 60});
+  CHECK(glm::dvec3(centre.origin) == camera.position);
   CHECK(glm::length(centre.direction - glm::normalize(camera.forward)) < 1e-6f);
   const viewer::Ray top = viewer::cameraRay(camera, width, height, {160, 0});
+  CHECK(glm::dvec3(top.origin) == camera.position);
   CHECK(std::acos(glm::dot(top.direction, centre.direction)) == Approx(glm::radians(25.0f)));
+  // Orthographic: the top edge's ray is parallel to the centre's, half the
+  // height (1.5 m) above it.
+  const viewer::Ray orthoCentre = viewer::cameraRay(orthographic, width, height, {160, 60});
+  const viewer::Ray orthoTop = viewer::cameraRay(orthographic, width, height, {160, 0});
+  CHECK(glm::length(orthoTop.direction - orthoCentre.direction) < 1e-6f);
+  CHECK(glm::length(orthoTop.origin - orthoCentre.origin) == Approx(1.5f));
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 

@@ -333,20 +333,22 @@ def materials():
 
 def cameras():
     """Cameras: node 1 'front' (camera 1 'second', 5 m along +z), node 2 'side'
-    (camera 0 'first', at (5,0,0) turned 90 degrees about +y), node 3 an
-    orthographic camera."""
+    (camera 0 'first', at (5,0,0) turned 90 degrees about +y), node 3 'flat'
+    (camera 2 'ortho', orthographic, 3 m wide and 2 m tall, 2 m above the
+    origin looking down)."""
     b = triangle_file()
     b.doc["cameras"] = [
         {"name": "first", "type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}},
         {"name": "second", "type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1,
                                                                   "aspectRatio": 1.5}},
         {"name": "ortho", "type": "orthographic",
-         "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}},
+         "orthographic": {"xmag": 1.5, "ymag": 1, "znear": 0.1, "zfar": 10}},
     ]
     s, c = math.sin(math.pi / 4), math.cos(math.pi / 4)
     b.add("nodes", {"name": "front", "camera": 1, "translation": [0, 0, 5]})
     b.add("nodes", {"name": "side", "camera": 0, "translation": [5, 0, 0], "rotation": [0, s, 0, c]})
-    b.add("nodes", {"name": "flat", "camera": 2})
+    b.add("nodes", {"name": "flat", "camera": 2, "translation": [0, 2, 0],
+                    "rotation": [-s, 0, 0, c]})
     # Scene order differs from node order: the default view follows node order.
     b.doc["scenes"] = [{"nodes": [3, 2, 0, 1]}]
     b.write_gltf("cameras.gltf")
@@ -832,7 +834,8 @@ def scene_files():
         "materials": {"white": {"model": "lambert", "albedo": [0.5, 0.5, 0.5]}},
         "meshes": [{"name": "floor", "material": "white",
                     "quads": [[[-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]]]}],
-        "gltf": [{"file": "cameras.gltf", "translation": [0, 0, -3], "camera": "side"},
+        "gltf": [{"file": "cameras.gltf", "translation": [0, 0, -3], "scale": [2, 2, 2],
+                  "camera": "side"},
                  {"file": "transforms.gltf",
                   "transform": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 100, 0, 1]}]})
 
