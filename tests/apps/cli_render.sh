@@ -97,8 +97,8 @@ fi
 "$penumbra" render --scene "$gltf_data/attributes.gltf" --env "$work/studio.exr" --env-rotation 90 \
   --env-intensity 2 --env-background hidden --size 16x16 --spp 2 --validation --out "$work/env.png" >/dev/null
 [ -s "$work/env.png" ]
-[ "$("$penumbra" render --scene "$gltf_data/attributes.gltf" --aperture 0.01 --aperture-blades 5 --print-effects)" = \
-  "$(printf 'specular\nenvironment\nthin-lens (branch)\nlens-blades (branch)')" ]
+[ "$("$penumbra" render --scene "$gltf_data/attributes.gltf" --aperture 0.01 --aperture-blades 5 --orthographic 2 \
+  --print-effects)" = "$(printf 'specular\nenvironment\nthin-lens (branch)\nlens-blades (branch)\northographic (branch)')" ]
 # The denoiser on the final image with every AOV as an EXR layer (the header
 # names the channels), and the temporal denoiser frame by frame.
 "$penumbra" render --size 32x32 --spp 2 --denoise atrous --aov albedo,normal,depth,emission,motion,variance \

@@ -257,9 +257,10 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   branches.camera.apertureRadius = 0.01f;
   branches.camera.focusDistance = 0.8f;
   branches.camera.apertureBlades = 6;
+  branches.camera.orthographicHeight = 0.5f;
   REQUIRE(render::featureNames(render::deriveFeatures(branches, std::nullopt)) ==
           std::vector<std::string>{"directional-lights", "soft-sun", "spot-lights", "thin-lens",
-                                   "lens-blades", "absorption"});
+                                   "lens-blades", "absorption", "orthographic"});
   REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ENVIRONMENT) != 0u);
   REQUIRE(render::deriveFeatures(scene::loadScene("cornell-box"), std::nullopt) == 0u);
 
@@ -271,7 +272,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
       {"glTF anisotropy (surface detail)", brushedScene, render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},
-      {"environment, soft sun, spot, bladed lens, absorbing glass", branches,
+      {"environment, soft sun, spot, bladed lens, absorbing glass, orthographic", branches,
        render::Integrator::Path},
       {"Whitted under the environment", branches, render::Integrator::Whitted},
   };

@@ -121,6 +121,7 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
   const scene::Camera& view = camera ? *camera : scene.camera;
   if (view.apertureRadius > 0.0f) features |= kFeatureThinLens;
   if (view.apertureRadius > 0.0f && view.apertureBlades >= 3) features |= kFeatureLensBlades;
+  if (view.orthographic()) features |= kFeatureOrthographic;
   auto absorbs = [&](uint32_t materialIndex) {
     const auto& m = scene.materials.at(materialIndex);
     const bool transmits = m.specTrans > 0.0f || m.transparency > 0.0f;
@@ -135,7 +136,8 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
 
 std::vector<std::string> featureNames(uint32_t features) {
   static const char* const kNames[] = {"directional-lights", "soft-sun",    "spot-lights",
-                                       "thin-lens",          "lens-blades", "absorption"};
+                                       "thin-lens",          "lens-blades", "absorption",
+                                       "orthographic"};
   std::vector<std::string> names;
   for (int bit = 0; bit < int(std::size(kNames)); ++bit)
     if (features & (1u << bit)) names.emplace_back(kNames[bit]);

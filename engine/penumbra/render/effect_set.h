@@ -50,9 +50,10 @@ enum SceneFeature : uint32_t {
   kFeatureDirectionalLights = 1,  // directional lights (delta or soft suns)
   kFeatureSoftSun = 2,            // a directional light with an angular radius
   kFeatureSpotLights = 4,
-  kFeatureThinLens = 8,     // an aperture radius > 0
-  kFeatureLensBlades = 16,  // a polygonal aperture
-  kFeatureAbsorption = 32,  // a transmissive material with a finite attenuation distance
+  kFeatureThinLens = 8,       // an aperture radius > 0
+  kFeatureLensBlades = 16,    // a polygonal aperture
+  kFeatureAbsorption = 32,    // a transmissive material with a finite attenuation distance
+  kFeatureOrthographic = 64,  // an orthographic camera
 };
 // The features of the scene rendered from `camera` (the scene's own if absent).
 uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera);
