@@ -66,10 +66,10 @@ float3 clampFirefly(DenoiseFrame f, int2 p, float3 illumination) {
 float3 virtualPosition(DenoiseFrame f, int2 p, float depth) {
   float2 ndc = (float2(p) + float2(0.5, 0.5)) / float2(float(f.width), float(f.height)) * 2.0 - float2(1.0, 1.0);
   float halfHeight = f.camera.filmHalfHeight;
-  float3 across = ndc.x * halfHeight * f.camera.aspectRatio * f.camera.right - ndc.y * halfHeight * f.camera.up;
-  if (f.orthographic != 0u) return f.camera.position + across + f.camera.forward * depth;
-  float3 d = f.camera.forward + ndc.x * halfHeight * f.camera.aspectRatio * f.camera.right -
-             ndc.y * halfHeight * f.camera.up;
+  float3 alongRight = ndc.x * halfHeight * f.camera.aspectRatio * f.camera.right;
+  float3 alongUp = ndc.y * halfHeight * f.camera.up;
+  if (f.orthographic != 0u) return f.camera.position + (alongRight - alongUp) + f.camera.forward * depth;
+  float3 d = f.camera.forward + alongRight - alongUp;
   return f.camera.position + d * depth;  // d's forward component is 1
 }
 
