@@ -292,8 +292,11 @@ void Viewer::drawMaterialMenu() {
                                 {"clearcoat", &m.clearcoat},
                                 {"clearcoat gloss", &m.clearcoatGloss},
                                 {"transmission", &m.specTrans},
-                                {"subsurface", &m.subsurface}})
+                                {"subsurface", &m.subsurface},
+                                {"anisotropy strength (glTF)", &m.anisotropyStrength}})
       changed |= ImGui::SliderFloat(label, field, 0, 1);
+    // Radians, counter-clockwise from the tangent (KHR_materials_anisotropy).
+    changed |= ImGui::SliderAngle("anisotropy rotation", &m.anisotropyRotation, -180.0f, 180.0f);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");

@@ -2,6 +2,7 @@
 // screenshots leave and `penumbra render --settings` reads.
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+#include <nlohmann/json.hpp>
 
 #include "penumbra/batch/render_job.h"
 #include "penumbra/util/error.h"
@@ -223,6 +224,51 @@ TEST_CASE("render job: overrides apply the edited parameters and keep the rest",
   CHECK(box.materials[0].baseColor == glm::vec3(0.8f));
   REQUIRE_THROWS_WITH(render::setEditableParameter(edited[0], "baseColor", {1.0f}),
                       "material parameter 'baseColor' takes 3 number(s), got 1");
+}
+
+TEST_CASE(
+    "render job: glTF anisotropy is edited and recorded; a record written before it keeps the "
+    "scene's",
+    "[render]") {
+  scene::Scene loaded;
+  loaded.name = "brushed";
+  loaded.materials = {scene::Material::lambert("steel", glm::vec3(0.8f))};
+  loaded.materials[0].model = scene::MaterialModel::Disney;
+  loaded.materials[0].anisotropyStrength = 0.25f;
+  loaded.materials[0].anisotropyRotation = 0.5f;
+  auto edited = loaded.materials;
+  render::setEditableParameter(edited[0], "anisotropyStrength", {0.75f});
+  render::setEditableParameter(edited[0], "anisotropyRotation", {-1.25f});
+  render::RenderJob job;
+  job.materials = render::materialOverrides(loaded.materials, edited);
+  REQUIRE(job.materials.size() == 1);
+  const std::string text = render::renderJobToJson(job);
+  scene::Scene applied = loaded;
+  render::applyMaterialOverrides(applied, render::renderJobFromJson(text, "new.json").materials,
+                                 "new.json");
+  CHECK(applied.materials[0].anisotropyStrength == 0.75f);
+  CHECK(applied.materials[0].anisotropyRotation == -1.25f);
+
+  // The same record as written before the fields were editable: the other
+  // edits apply, the scene's anisotropy stays, and writing it again does
+  // not invent values for the fields it lacks.
+  nlohmann::json old = nlohmann::json::parse(text);
+  nlohmann::json& override0 = old.at("materials").at(0);
+  override0.erase("anisotropyStrength");
+  override0.erase("anisotropyRotation");
+  override0.at("metallic") = 1.0;
+  const auto oldJob = render::renderJobFromJson(old.dump(), "old.json");
+  scene::Scene fromOld = loaded;
+  render::applyMaterialOverrides(fromOld, oldJob.materials, "old.json");
+  CHECK(fromOld.materials[0].metallic == 1.0f);
+  CHECK(fromOld.materials[0].anisotropyStrength == 0.25f);
+  CHECK(fromOld.materials[0].anisotropyRotation == 0.5f);
+  const std::string rewritten = render::renderJobToJson(oldJob);
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("anisotropy"));
+  // Fields there from the start stay required.
+  override0.erase("sheen");
+  REQUIRE_THROWS_WITH(render::renderJobFromJson(old.dump(), "older.json"),
+                      "older.json: \"materials[0].sheen\" is missing");
 }
 
 TEST_CASE("render job: bad material overrides name the file and the field", "[render]") {

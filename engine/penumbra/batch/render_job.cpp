@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -38,23 +39,30 @@ constexpr Named<scene::MaterialModel> kModels[] = {{scene::MaterialModel::Disney
 struct FloatField {
   const char* name;
   float scene::Material::*field;
+  // Made editable after records were first written: a record without it
+  // keeps the scene's value, which is what the viewer showed when it was
+  // written (MaterialOverride::sceneValues).
+  bool optional = false;
 };
-constexpr FloatField kFloatFields[] = {{"metallic", &scene::Material::metallic},
-                                       {"roughness", &scene::Material::roughness},
-                                       {"anisotropic", &scene::Material::anisotropic},
-                                       {"specular", &scene::Material::specular},
-                                       {"specularTint", &scene::Material::specularTint},
-                                       {"sheen", &scene::Material::sheen},
-                                       {"sheenTint", &scene::Material::sheenTint},
-                                       {"clearcoat", &scene::Material::clearcoat},
-                                       {"clearcoatGloss", &scene::Material::clearcoatGloss},
-                                       {"specTrans", &scene::Material::specTrans},
-                                       {"ior", &scene::Material::ior},
-                                       {"subsurface", &scene::Material::subsurface},
-                                       {"ks", &scene::Material::ks},
-                                       {"exponent", &scene::Material::exponent},
-                                       {"reflectivity", &scene::Material::reflectivity},
-                                       {"transparency", &scene::Material::transparency}};
+constexpr FloatField kFloatFields[] = {
+    {"metallic", &scene::Material::metallic},
+    {"roughness", &scene::Material::roughness},
+    {"anisotropic", &scene::Material::anisotropic},
+    {"specular", &scene::Material::specular},
+    {"specularTint", &scene::Material::specularTint},
+    {"sheen", &scene::Material::sheen},
+    {"sheenTint", &scene::Material::sheenTint},
+    {"clearcoat", &scene::Material::clearcoat},
+    {"clearcoatGloss", &scene::Material::clearcoatGloss},
+    {"specTrans", &scene::Material::specTrans},
+    {"ior", &scene::Material::ior},
+    {"subsurface", &scene::Material::subsurface},
+    {"ks", &scene::Material::ks},
+    {"exponent", &scene::Material::exponent},
+    {"reflectivity", &scene::Material::reflectivity},
+    {"transparency", &scene::Material::transparency},
+    {"anisotropyStrength", &scene::Material::anisotropyStrength, true},
+    {"anisotropyRotation", &scene::Material::anisotropyRotation, true}};
 
 bool sameEditableParameters(const scene::Material& a, const scene::Material& b) {
   if (a.model != b.model || a.baseColor != b.baseColor || a.thin != b.thin) return false;
@@ -63,11 +71,13 @@ bool sameEditableParameters(const scene::Material& a, const scene::Material& b) 
   return true;
 }
 
-void copyEditableParameters(const scene::Material& from, scene::Material& to) {
-  to.model = from.model;
-  to.baseColor = from.baseColor;
-  to.thin = from.thin;
-  for (const auto& f : kFloatFields) to.*f.field = from.*f.field;
+void applyOverride(const MaterialOverride& o, scene::Material& to) {
+  to.model = o.material.model;
+  to.baseColor = o.material.baseColor;
+  to.thin = o.material.thin;
+  for (const auto& f : kFloatFields)
+    if (std::find(o.sceneValues.begin(), o.sceneValues.end(), f.name) == o.sceneValues.end())
+      to.*f.field = o.material.*f.field;
 }
 
 template <class Enum, size_t N>
@@ -194,12 +204,15 @@ json overrideToJson(const MaterialOverride& o) {
             {"model", materialModelName(m.model)},
             {"baseColor", toJson(m.baseColor)},
             {"thin", m.thin}};
-  for (const auto& f : kFloatFields) j[f.name] = m.*f.field;
+  for (const auto& f : kFloatFields)
+    if (std::find(o.sceneValues.begin(), o.sceneValues.end(), f.name) == o.sceneValues.end())
+      j[f.name] = m.*f.field;
   return j;
 }
 
-// Every field is required: a partial override would leave the rest to
-// whatever the scene holds, which the viewer's image did not show.
+// Every field is required but those made editable later (FloatField::
+// optional): a partial override would leave the rest to whatever the scene
+// holds, which the viewer's image did not show.
 MaterialOverride overrideFromJson(const json& j, const std::string& key, const Reader& r) {
   if (!j.is_object()) r.fail(key, "must be an object");
   auto field = [&](const char* name) -> const json& {
@@ -223,7 +236,12 @@ MaterialOverride overrideFromJson(const json& j, const std::string& key, const R
   if (!color.is_array() || color.size() != 3)
     r.fail(key + ".baseColor", "must be an array of 3 numbers");
   for (int c = 0; c < 3; ++c) m.baseColor[c] = r.finite(color[size_t(c)], key + ".baseColor");
-  for (const auto& f : kFloatFields) m.*f.field = r.finite(field(f.name), key + "." + f.name);
+  for (const auto& f : kFloatFields) {
+    if (f.optional && !j.contains(f.name))
+      o.sceneValues.push_back(f.name);
+    else
+      m.*f.field = r.finite(field(f.name), key + "." + f.name);
+  }
   if (!field("thin").is_boolean()) r.fail(key + ".thin", "must be true or false");
   m.thin = j.at("thin").get<bool>();
   return o;
@@ -289,7 +307,7 @@ void applyMaterialOverrides(scene::Scene& scene, const std::vector<MaterialOverr
       throw Error(fmt::format(
           "{}: \"materials[{}].name\" '{}' does not match material {} of scene '{}' ('{}')", source,
           i, o.material.name, o.index, scene.name, target.name));
-    copyEditableParameters(o.material, target);
+    applyOverride(o, target);
   }
 }
 

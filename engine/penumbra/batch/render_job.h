@@ -22,7 +22,8 @@
 //                      "sheen": 0, "sheenTint": 0.5, "clearcoat": 0,
 //                      "clearcoatGloss": 1, "specTrans": 0, "ior": 1.5,
 //                      "subsurface": 0, "thin": false, "ks": 0, "exponent": 32,
-//                      "reflectivity": 0, "transparency": 0 } ] }
+//                      "reflectivity": 0, "transparency": 0,
+//                      "anisotropyStrength": 0, "anisotropyRotation": 0 } ] }  // optional
 // Floats are written with enough digits to read back bit-identical.
 //
 // "materials" records the viewer's Material-menu edits: every material whose
@@ -52,6 +53,9 @@ namespace penumbra::render {
 struct MaterialOverride {
   uint32_t index = 0;  // into scene.materials
   scene::Material material;
+  // Parameters made editable after the record was written, which it does
+  // not give: the scene's values stay (anisotropyStrength, anisotropyRotation).
+  std::vector<std::string> sceneValues;
 };
 
 // The environment asked for over the scene's own (the command line's --env
