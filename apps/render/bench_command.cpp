@@ -25,6 +25,7 @@ namespace {
 
 struct BenchOptions {
   SceneOptions scene{"cornell-box", "1920x1080"};
+  CameraOptions camera;  // --camera, --camera-position, --look-at, --fov, --orthographic
   DeviceOptions device;
   SettingOptions settingOptions;
   render::RenderSettings settings = defaults();  // the table's, as given (settingOptions)
@@ -229,11 +230,13 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
                            previousDenoised, moments);
 }
 
-int runBench(const BenchOptions& o) {
+int runBench(const BenchOptions& o, const CLI::App& cmd) {
   auto [width, height] = parseImageSize(o.scene.size);
   // A scene without light is lit as `render` lights it (the default environment).
   const scene::Scene scene = [&] {
     scene::Scene loaded = scene::loadScene(o.scene.scene);
+    scene::placeCamera(loaded, o.camera.placement(cmd));
+    scene::validateCamera(loaded.camera);
     render::applyEnvironmentChoice(loaded, {});
     return loaded;
   }();
@@ -306,6 +309,7 @@ Command addBenchCommand(CLI::App& app) {
       "bench",
       "Time the effect-specialized pipeline against the full one on one scene (GPU timestamps)");
   addSceneOptions(*cmd, o->scene, "Built-in scene name or scene file (.json)");
+  addCameraOptions(*cmd, o->camera);
   cmd->add_option("--frames", o->frames, "Timed frames per pipeline")
       ->check(CLI::Range(1u, 100000u))
       ->capture_default_str();
@@ -336,7 +340,7 @@ Command addBenchCommand(CLI::App& app) {
     if (denoise != render::DenoiseMode::Off &&
         o->settings.tracer.integrator != render::Integrator::Path)
       throw Error("--denoise: the denoiser filters the path tracer's image (--integrator path)");
-    return runBench(*o);
+    return runBench(*o, *cmd);
   };
 }
 

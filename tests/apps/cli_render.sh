@@ -133,6 +133,13 @@ surface=$(sed -nE 's/^last frame of the pan against a 32 spp reference, the ([0-
 # than raw here).
 settled=$(sed -nE 's/^  history 5\+ frames +[0-9]+ pixels: ([0-9.e+-]+) \/ ([0-9.e+-]+)$/\1 \2/p' "$work/pan")
 awk -v r="${settled% *}" -v d="${settled#* }" 'BEGIN { exit !(d < 0.5 * r) }'
+# The same pan through an orthographic camera (bench takes the camera
+# options too): everything in view moves alike, so all but the pixels
+# entering at the edge keep their history (93 % in perspective above).
+"$penumbra" bench --size 32x32 --frames 4 --spp-per-frame 2 --denoise svgf --camera-pan 0.005 \
+  --reference-spp 32 --orthographic 0.5 | tee "$work/orthopan"
+kept=$(sed -nE 's/^frame-to-frame mean \|luminance change\| along the pan, reprojected, over the ([0-9]+) % of pixels kept in history: .*\(([0-9.]+)x steadier\)$/\1 \2/p' "$work/orthopan")
+awk -v k="${kept% *}" -v s="${kept#* }" 'BEGIN { exit !(k >= 97 && s > 1.5) }'
 if "$penumbra" bench --size 16x16 --frames 1 --camera-pan 0.01 2> "$work/pan-err"; then exit 1; fi
 grep -q "^error: --camera-pan: the camera path measures the denoiser" "$work/pan-err"
 "$penumbra" devices | grep -q "ray tracing pipeline: yes"
