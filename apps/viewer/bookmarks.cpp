@@ -49,10 +49,9 @@ Bookmark readBookmark(const json& b, const std::string& where) {
     throw Error(fmt::format("{}: \"verticalFovDegrees\" {} is not in (0, 180)", camera,
                             bookmark.camera.verticalFovDegrees));
   bookmark.camera.orthographicHeight = scene::readFloat(c, "orthographicHeight", 0.0f, camera);
-  if (!(bookmark.camera.orthographicHeight >= 0.0f) ||
-      !std::isfinite(bookmark.camera.orthographicHeight))
-    throw Error(
-        fmt::format("{}: \"orthographicHeight\" must be 0 (perspective) or positive", camera));
+  if (!(bookmark.camera.orthographicHeight >= 0.0f && bookmark.camera.orthographicHeight <= 1e9f))
+    throw Error(fmt::format(
+        "{}: \"orthographicHeight\" must be 0 (perspective) or positive, at most 1e9", camera));
   bookmark.camera.aspectRatio = scene::readFloat(c, "aspectRatio", 0.0f, camera);
   if (bookmark.camera.aspectRatio < 0.0f)
     throw Error(fmt::format("{}: \"aspectRatio\" must be 0 (the image's) or positive", camera));

@@ -74,6 +74,11 @@ TEST_CASE("bookmarks: a damaged settings file is ignored with the field named", 
   hugeFov.replace(hugeFov.find("40"), 2, "1e300");
   CHECK_THAT(problemOf(R"({"bookmarks": {"s": [)" + hugeFov + "]}}"),
              ContainsSubstring("\"verticalFovDegrees\" 1e+300 does not fit a float"));
+  std::string tallOrtho = good;
+  tallOrtho.replace(tallOrtho.find("40}"), 3, R"(40, "orthographicHeight": 2e9})");
+  CHECK_THAT(problemOf(R"({"bookmarks": {"s": [)" + tallOrtho + "]}}"),
+             ContainsSubstring("\"orthographicHeight\" must be 0 (perspective) or positive, at "
+                               "most 1e9"));
   CHECK_THAT(problemOf(R"({"bookmarks": [1]})"),
              ContainsSubstring("\"bookmarks\" is not an object (got an array)"));
   // Nesting is refused before the parser recurses into it.
