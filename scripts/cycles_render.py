@@ -91,6 +91,9 @@ def build_scene(doc):
         bpy.context.scene.collection.objects.link(obj)
 
     c = doc["camera"]
+    if "orthographicHeight" in c:
+        sys.exit("cycles_render: the scene's camera is orthographic, which this exporter "
+                 "does not write; give the scene a perspective camera")
     cam_data = bpy.data.cameras.new("camera")
     cam_data.sensor_fit = "VERTICAL"
     cam_data.angle_y = math.radians(c["verticalFovDegrees"])

@@ -78,7 +78,7 @@ float3 virtualPosition(DenoiseFrame f, int2 p, float depth) {
 float3 projectToPrevious(DenoiseFrame f, float3 world) {
   float3 v = world - f.previousCamera.position;
   float z = dot(v, f.previousCamera.forward);
-  // The film's size does not change between frames (Denoiser::run starts a
+  // The film's size does not change between frames (Denoiser::record starts a
   // new history when it does); an orthographic film does not shrink with depth.
   float scale = f.orthographic != 0u ? 1.0 : z;
   float halfHeight = f.camera.filmHalfHeight;

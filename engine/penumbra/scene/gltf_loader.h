@@ -16,9 +16,10 @@
 //   weights take an animation's values at a chosen time (AnimationChoice,
 //   gltf_animation.h). A mesh drawn with other morph weights, or skinned, is
 //   a scene Mesh of its own.
-// - Perspective cameras become Scene::cameras; the scene's view is the
-//   camera of the lowest-numbered node in the scene, or, without one, a view
-//   down -z that frames the scene's bounds.
+// - Perspective and orthographic cameras become Scene::cameras; the scene's
+//   view is the camera of the lowest-numbered node in the scene, or, without
+//   one, a three-quarter view that frames the scene's bounds
+//   (camera_placement.h).
 // - Materials map onto the Disney parameters with the Lambert diffuse
 //   (scene/gltf_materials.h, docs/materials.md); emissive primitives are
 //   area lights.
