@@ -48,4 +48,34 @@ inline glm::dvec3 cameraRayDirection(const scene::Camera& camera, glm::dvec2 fil
   return render::cameraRay(render::cameraModel(camera, w, h), film).direction;
 }
 
+// A bright spot on black: its flux (the sum of the pixels' red channel,
+// covered pixels for radiance 1), flux-weighted centroid and mean squared
+// distance from it. An image without flux has all three 0.
+struct Spot {
+  double flux = 0;
+  double cx = 0, cy = 0;  // pixels
+  double meanSquare = 0;  // pixels^2
+};
+
+inline Spot measureSpot(const image::Image& img) {
+  Spot s;
+  for (uint32_t y = 0; y < img.height; ++y)
+    for (uint32_t x = 0; x < img.width; ++x) {
+      const double v = img.pixel(x, y)[0];
+      s.flux += v;
+      s.cx += v * (x + 0.5);
+      s.cy += v * (y + 0.5);
+    }
+  if (!(s.flux > 0.0)) return Spot{};
+  s.cx /= s.flux;
+  s.cy /= s.flux;
+  for (uint32_t y = 0; y < img.height; ++y)
+    for (uint32_t x = 0; x < img.width; ++x) {
+      const double dx = x + 0.5 - s.cx, dy = y + 0.5 - s.cy;
+      s.meanSquare += img.pixel(x, y)[0] * (dx * dx + dy * dy);
+    }
+  s.meanSquare /= s.flux;
+  return s;
+}
+
 }  // namespace penumbra::test

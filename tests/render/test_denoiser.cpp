@@ -45,6 +45,20 @@ image::Image denoise(rhi::IDevice& device, Render& r, const render::DenoiserSett
   return r.tracer->readback(denoiser.output());
 }
 
+// One 1 spp frame from `camera` with `seed`, through the temporal denoiser:
+// a step of the viewer's loop.
+void svgfFrame(render::PathTracer& tracer, render::Denoiser& denoiser, const scene::Camera& camera,
+               uint32_t seed) {
+  render::PathTracerSettings settings;
+  settings.writeGuides = true;
+  settings.seed = seed;
+  tracer.resetAccumulation();
+  tracer.renderFrame(settings, 1);
+  render::DenoiserSettings svgf;
+  svgf.mode = render::DenoiseMode::Svgf;
+  denoiser.run(tracer, camera, 1, svgf);
+}
+
 double relMse(const image::Image& a, const image::Image& reference) {
   return image::compareImages(a, reference, 0.05).relativeMse;
 }
@@ -300,12 +314,8 @@ TEST_CASE(
   settings.writeGuides = true;
   const scene::Camera before = scene.camera;
   constexpr uint32_t kFrames = 6;
-  for (uint32_t frame = 0; frame < kFrames; ++frame) {
-    settings.seed = 100 + frame;
-    tracer.resetAccumulation();
-    tracer.renderFrame(settings, 1);
-    denoiser.run(tracer, before, 1, svgf);
-  }
+  for (uint32_t frame = 0; frame < kFrames; ++frame)
+    svgfFrame(tracer, denoiser, before, 100 + frame);
   const image::Image ndBefore = tracer.readback(tracer.guides().normalDepth);
   // Move right by kShift pixels' width at the back wall's depth (1.3592 m):
   // the back wall moves kShift pixels left, so each pixel's history is
@@ -421,18 +431,10 @@ TEST_CASE(
   scene.camera.aspectRatio = 0.0f;
   render::PathTracer tracer(*device, scene, kSize, kSize);
   render::Denoiser denoiser(*device, kSize, kSize);
-  render::DenoiserSettings svgf;
-  svgf.mode = render::DenoiseMode::Svgf;
-  render::PathTracerSettings settings;
-  settings.writeGuides = true;
   const scene::Camera before = scene.camera;
   constexpr uint32_t kFrames = 4;
-  for (uint32_t frame = 0; frame < kFrames; ++frame) {
-    settings.seed = 300 + frame;
-    tracer.resetAccumulation();
-    tracer.renderFrame(settings, 1);
-    denoiser.run(tracer, before, 1, svgf);
-  }
+  for (uint32_t frame = 0; frame < kFrames; ++frame)
+    svgfFrame(tracer, denoiser, before, 300 + frame);
   // Parallel rays: a sideways move shifts the whole image by the same number
   // of pixels whatever each surface's depth, and uncovers nothing. (Taken
   // for a perspective one, each depth would get its own shift: 3.7 px on the
@@ -441,10 +443,7 @@ TEST_CASE(
   scene::Camera after = before;
   after.position += right * float(kShift * kHeight / kSize);
   tracer.setCamera(after);
-  settings.seed = 400;
-  tracer.resetAccumulation();
-  tracer.renderFrame(settings, 1);
-  denoiser.run(tracer, after, 1, svgf);
+  svgfFrame(tracer, denoiser, after, 400);
   const image::Image motion = tracer.readback(denoiser.motion());
   const image::Image moments = tracer.readback(denoiser.moments());
   const image::Image nd = tracer.readback(tracer.guides().normalDepth);
@@ -467,9 +466,7 @@ TEST_CASE(
   scene::Camera taller = after;
   taller.orthographicHeight = float(1.25 * kHeight);
   tracer.setCamera(taller);
-  tracer.resetAccumulation();
-  tracer.renderFrame(settings, 1);
-  denoiser.run(tracer, taller, 1, svgf);
+  svgfFrame(tracer, denoiser, taller, 400);
   const image::Image restarted = tracer.readback(denoiser.moments());
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize; ++x) {

@@ -40,32 +40,6 @@ scene::Scene pointEmitter(float apertureRadius, float focusDistance) {
   return s;
 }
 
-struct Spot {
-  double flux = 0;        // sum of the pixels' red channel
-  double cx = 0, cy = 0;  // flux-weighted centroid (pixels)
-  double meanSquare = 0;  // flux-weighted mean squared distance from it (pixels^2)
-};
-
-Spot measure(const image::Image& img) {
-  Spot s;
-  for (uint32_t y = 0; y < img.height; ++y)
-    for (uint32_t x = 0; x < img.width; ++x) {
-      const double v = img.pixel(x, y)[0];
-      s.flux += v;
-      s.cx += v * (x + 0.5);
-      s.cy += v * (y + 0.5);
-    }
-  s.cx /= s.flux;
-  s.cy /= s.flux;
-  for (uint32_t y = 0; y < img.height; ++y)
-    for (uint32_t x = 0; x < img.width; ++x) {
-      const double dx = x + 0.5 - s.cx, dy = y + 0.5 - s.cy;
-      s.meanSquare += img.pixel(x, y)[0] * (dx * dx + dy * dy);
-    }
-  s.meanSquare /= s.flux;
-  return s;
-}
-
 }  // namespace
 
 // A lens of radius A focused at z_f sees a point at z_o as a disk on the
@@ -83,8 +57,8 @@ TEST_CASE("depth of field: a point out of focus images to the circle of confusio
   render::PathTracerSettings settings;
   settings.seed = 9;
 
-  const auto pinhole =
-      measure(test::renderScene(*device, pointEmitter(0.0f, 1.0f), kSize, kSize, kSpp, settings));
+  const auto pinhole = test::measureSpot(
+      test::renderScene(*device, pointEmitter(0.0f, 1.0f), kSize, kSize, kSpp, settings));
   INFO("pinhole: centroid " << pinhole.cx << "," << pinhole.cy << ", mean square "
                             << pinhole.meanSquare);
   CHECK(pinhole.meanSquare < 0.6);  // within the 2 x 2 pixels about the centre
@@ -96,7 +70,7 @@ TEST_CASE("depth of field: a point out of focus images to the circle of confusio
     const auto img =
         test::renderScene(*device, pointEmitter(aperture, focus), kSize, kSize, kSpp, settings);
     REQUIRE(image::countNonFinite(img) == 0);
-    const auto blurred = measure(img);
+    const auto blurred = test::measureSpot(img);
     const double measured = std::sqrt(2.0 * (blurred.meanSquare - pinhole.meanSquare));
     INFO("focus " << focus << " m: disk radius " << measured << " px, thin lens says " << radius
                   << "; flux " << blurred.flux << " vs pinhole " << pinhole.flux);
@@ -109,7 +83,7 @@ TEST_CASE("depth of field: a point out of focus images to the circle of confusio
   }
 
   // Focused on the emitter, the lens changes nothing but noise.
-  const auto focused = measure(test::renderScene(
+  const auto focused = test::measureSpot(test::renderScene(
       *device, pointEmitter(0.2f, float(kEmitterDistance)), kSize, kSize, kSpp, settings));
   INFO("in focus: mean square " << focused.meanSquare);
   CHECK(std::abs(focused.meanSquare - pinhole.meanSquare) < 0.05);
@@ -140,7 +114,7 @@ TEST_CASE("depth of field: six aperture blades make a hexagonal circle of confus
     // 4096 spp: about 150 samples land in each direction's part of the ring.
     const auto img = test::renderScene(*device, s, kSize, kSize, 4 * kSpp, settings);
     REQUIRE(image::countNonFinite(img) == 0);
-    const Spot spot = measure(img);
+    const test::Spot spot = test::measureSpot(img);
     double corner = 0, side = 0;
     for (uint32_t y = 0; y < kSize; ++y)
       for (uint32_t x = 0; x < kSize; ++x) {

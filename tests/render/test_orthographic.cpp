@@ -35,27 +35,6 @@ scene::Scene squareAt(float distance) {
   return s;
 }
 
-struct Coverage {
-  double area = 0;        // sum of the pixels' red channel: covered pixels
-  double cx = 0, cy = 0;  // its centroid (pixels)
-};
-
-Coverage measure(const image::Image& img) {
-  Coverage c;
-  for (uint32_t y = 0; y < img.height; ++y)
-    for (uint32_t x = 0; x < img.width; ++x) {
-      const double v = img.pixel(x, y)[0];
-      c.area += v;
-      c.cx += v * (x + 0.5);
-      c.cy += v * (y + 0.5);
-    }
-  if (c.area > 0) {
-    c.cx /= c.area;
-    c.cy /= c.area;
-  }
-  return c;
-}
-
 }  // namespace
 
 // The square is 0.6 m / (2 m / 48 px) = 14.4 px a side, 207.36 px^2. The
@@ -71,13 +50,13 @@ TEST_CASE("orthographic camera: a square keeps its size and place at any distanc
     INFO("square " << distance << " m ahead");
     const image::Image img = test::renderScene(*device, squareAt(distance), kWidth, kHeight, 64);
     REQUIRE(image::countNonFinite(img) == 0);
-    const Coverage c = measure(img);
-    CHECK(c.area == Approx(207.36).epsilon(0.01));
+    const test::Spot c = test::measureSpot(img);
+    CHECK(c.flux == Approx(207.36).epsilon(0.01));
     CHECK(c.cx == Approx(22.4).margin(0.05));
     CHECK(c.cy == Approx(28.8).margin(0.05));
   }
   // Behind the film plane: not seen.
   const image::Image behind = test::renderScene(*device, squareAt(-1.0f), kWidth, kHeight, 16);
-  CHECK(measure(behind).area == 0.0);
+  CHECK(test::measureSpot(behind).flux == 0.0);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
