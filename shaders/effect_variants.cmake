@@ -34,7 +34,8 @@ penumbra_effect_masks(_tests_path_trace
   DELTA_LIGHTS+SPECULAR+TEXTURES SPECULAR+GUIDES ENVIRONMENT SPECULAR+ENVIRONMENT
   AREA_LIGHTS+DELTA_LIGHTS+TRANSMISSION+ENVIRONMENT
   AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+TRANSMISSION+CLEARCOAT+SHEEN+TEXTURES+ENVIRONMENT
-  SPECULAR+GUIDES+ENVIRONMENT)
+  SPECULAR+GUIDES+ENVIRONMENT
+  AREA_LIGHTS+ORTHOGRAPHIC AREA_LIGHTS+GUIDES+ORTHOGRAPHIC)
 # Every effect but one: what each effect costs in code size and time
 # (test_effect_set, scripts/feature_costs.sh).
 penumbra_all_but_one(_all_but_one_path_trace ${_path_trace_effects})

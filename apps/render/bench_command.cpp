@@ -123,8 +123,7 @@ void benchPanAgainstReference(rhi::IDevice& device, const scene::Scene& scene,
                               const render::PathTracerSettings& settings, const BenchOptions& o,
                               const image::Image& lastRaw, const image::Image& lastDenoised,
                               const image::Image& moments) {
-  render::PathTracer reference(device, scene, tracer.width(), tracer.height());
-  reference.setCamera(camera);
+  render::PathTracer reference(device, scene, tracer.width(), tracer.height(), {}, camera);
   render::PathTracerSettings converged = settings;
   converged.writeGuides = false;
   converged.seed = 987654321u;

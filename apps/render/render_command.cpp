@@ -331,7 +331,7 @@ int runRender(const RenderOptions& o, const CLI::App& cmd) {
 int renderScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& job,
                 const scene::Scene& scene) {
   if (o.printEffects) {
-    for (const auto& name : render::effectNames(render::deriveEffects(scene)))
+    for (const auto& name : render::effectNames(render::deriveEffects(scene, job.camera)))
       fmt::print("{}\n", name);
     for (const auto& name : render::featureNames(render::deriveFeatures(scene, job.camera)))
       fmt::print("{} (branch)\n", name);
@@ -365,8 +365,7 @@ int renderScene(const RenderOptions& o, const CLI::App& cmd, render::RenderJob& 
 
   render::PipelineOptions pipeline;
   pipeline.allEffects = job.settings.allEffects;
-  render::PathTracer tracer(*device, scene, job.width, job.height, pipeline);
-  if (job.camera) tracer.setCamera(*job.camera);
+  render::PathTracer tracer(*device, scene, job.width, job.height, pipeline, job.camera);
   std::string effects;
   for (const auto& name : render::effectNames(tracer.pipelineEffects()))
     effects += (effects.empty() ? "" : ", ") + name;

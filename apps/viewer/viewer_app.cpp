@@ -164,9 +164,8 @@ void Viewer::createTracer() {
   // Frames in flight still use the old tracer's resources.
   device_->waitForIdle();
   tracer_.reset();
-  tracer_ =
-      std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height, pipeline);
-  tracer_->setCamera(camera_->camera());
+  tracer_ = std::make_unique<render::PathTracer>(*device_, scene_, size.width, size.height,
+                                                 pipeline, camera_->camera());
   denoiser_.reset();  // made for the new tracer's size when first needed
   if (frameQueries_.empty())
     for (size_t i = 0; i < frameLists_.size(); ++i)

@@ -2,6 +2,7 @@
 #ifndef PENUMBRA_CAMERA_HLSLI
 #define PENUMBRA_CAMERA_HLSLI
 
+#include "effects.h"
 #include "rng.hlsli"
 #include "sampling.hlsli"
 
@@ -70,13 +71,16 @@ float2 samplePolygon(uint sides, float u0, float u1) {
 void cameraRay(FrameConstants c, float2 filmPosition, inout Rng rng, out float3 origin,
                out float3 direction) {
   float2 film = filmPoint(c, filmPosition);
+  origin = c.camera.position;
+  direction = normalize(c.camera.forward + film.x * c.camera.right + film.y * c.camera.up);
+  // A variant bit, not only the frame's flag: the branch alone moved the
+  // driver's code for the whole megakernel (docs/results.md).
+#if PT_HAS_EFFECT(PT_EFFECT_ORTHOGRAPHIC)
   if ((c.sceneFlags & PT_SCENE_ORTHOGRAPHIC) != 0u) {
     origin = c.camera.position + film.x * c.camera.right + film.y * c.camera.up;
     direction = c.camera.forward;
-  } else {
-    origin = c.camera.position;
-    direction = normalize(c.camera.forward + film.x * c.camera.right + film.y * c.camera.up);
   }
+#endif
   float lensRadius = c.camera.apertureRadius;
   if (lensRadius > 0.0) {
     float3 inFocus = origin + direction * (c.camera.focusDistance / dot(direction, c.camera.forward));

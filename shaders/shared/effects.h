@@ -5,7 +5,8 @@
 //
 // Plain integers, not 1u: preprocessor #if expressions use them too, in GLSL,
 // HLSL and C++. The host derives the set in engine/penumbra/render/effect_set.cpp; a bit
-// may be off only if no material or light of the scene could use the code.
+// may be off only if no material, light or camera of the scene could use the
+// code.
 #ifndef PENUMBRA_EFFECTS_H
 #define PENUMBRA_EFFECTS_H
 
@@ -20,12 +21,13 @@
 #define PT_EFFECT_TEXTURES 64      // surface detail: material textures (base colour, metallic-roughness, emission, normal maps), COLOR_0, unlit materials and glTF anisotropy
 #define PT_EFFECT_ALPHA_MASK 128   // MASK (textured or COLOR_0 alpha) or BLEND: an any-hit shader cuts
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
+#define PT_EFFECT_ORTHOGRAPHIC 1024 // an orthographic camera: parallel rays from the film plane
 // clang-format on
-// Every effect: the eight bits above and the environment.
+// Every effect: the eight bits above, the environment and the orthographic camera.
 #define PT_EFFECTS_ALL                                                                            \
   (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | \
    PT_EFFECT_CLEARCOAT | PT_EFFECT_SHEEN | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK |            \
-   PT_EFFECT_ENVIRONMENT)
+   PT_EFFECT_ENVIRONMENT | PT_EFFECT_ORTHOGRAPHIC)
 // Not a scene effect but an output: the path tracer writes the denoiser's
 // guide buffers (PathTracerSettings::writeGuides). Its code and the state it
 // keeps alive across every trace cost about a tenth of a Cornell box frame,
@@ -36,8 +38,9 @@
 // in shaders/effect_variants.cmake). Alpha masking is no variant: it adds an
 // any-hit shader to the triangles' hit group instead.
 #define PT_PATH_TRACE_EFFECT_BITS ((PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) & ~PT_EFFECT_ALPHA_MASK)
-#define PT_WHITTED_EFFECT_BITS \
-  (PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | PT_EFFECT_TEXTURES | PT_EFFECT_ENVIRONMENT)
+#define PT_WHITTED_EFFECT_BITS                                                                \
+  (PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | PT_EFFECT_TEXTURES | PT_EFFECT_ENVIRONMENT | \
+   PT_EFFECT_ORTHOGRAPHIC)
 
 #ifndef PT_EFFECTS
 #define PT_EFFECTS (PT_EFFECTS_ALL | PT_OUTPUT_GUIDES)

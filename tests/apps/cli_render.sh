@@ -22,7 +22,7 @@ grep -qE "^GPU time: [0-9.]+ ms" "$work/log"
 # pipeline is one flag away, and the render says which it built.
 [ "$("$penumbra" render --print-effects)" = "area-lights" ]
 grep -q "^pipeline effects: area-lights$" "$work/log"
-"$penumbra" render --size 16x16 --spp 1 --all-effects --out "$work/full.exr" | grep -q "^pipeline effects: area-lights, delta-lights, specular, transmission, clearcoat, sheen, textures, alpha-mask, environment (--all-effects)$"
+"$penumbra" render --size 16x16 --spp 1 --all-effects --out "$work/full.exr" | grep -q "^pipeline effects: area-lights, delta-lights, specular, transmission, clearcoat, sheen, textures, alpha-mask, environment, orthographic (--all-effects)$"
 # bench times both pipelines in one run and finds their images identical.
 "$penumbra" bench --size 16x16 --frames 2 | tee "$work/bench"
 grep -qE "^full / specialized GPU time \(medians\): [0-9.]+$" "$work/bench"
@@ -98,7 +98,7 @@ fi
   --env-intensity 2 --env-background hidden --size 16x16 --spp 2 --validation --out "$work/env.png" >/dev/null
 [ -s "$work/env.png" ]
 [ "$("$penumbra" render --scene "$gltf_data/attributes.gltf" --aperture 0.01 --aperture-blades 5 --orthographic 2 \
-  --print-effects)" = "$(printf 'specular\nenvironment\nthin-lens (branch)\nlens-blades (branch)\northographic (branch)')" ]
+  --print-effects)" = "$(printf 'specular\nenvironment\northographic\nthin-lens (branch)\nlens-blades (branch)')" ]
 # The denoiser on the final image with every AOV as an EXR layer (the header
 # names the channels), and the temporal denoiser frame by frame.
 "$penumbra" render --size 32x32 --spp 2 --denoise atrous --aov albedo,normal,depth,emission,motion,variance \

@@ -48,10 +48,21 @@ scene::Material disney() {
 
 }  // namespace
 
-TEST_CASE("effect set: derived from what the scene's materials and lights use", "[render]") {
+TEST_CASE("effect set: derived from what the scene's materials, lights and camera use",
+          "[render]") {
   const auto cornell = scene::loadScene("cornell-box");
   // Lambertian walls (no specular layer) and an emissive ceiling light.
   REQUIRE(render::deriveEffects(cornell) == PT_EFFECT_AREA_LIGHTS);
+  // The camera's projection: the scene's own, or the one it is seen from.
+  scene::Camera parallel = cornell.camera;
+  parallel.orthographicHeight = 1.0f;
+  REQUIRE(render::deriveEffects(cornell, parallel) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_ORTHOGRAPHIC));
+  auto orthographicCornell = cornell;
+  orthographicCornell.camera = parallel;
+  REQUIRE(render::deriveEffects(orthographicCornell) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_ORTHOGRAPHIC));
+  REQUIRE(render::deriveEffects(orthographicCornell, cornell.camera) == PT_EFFECT_AREA_LIGHTS);
 
   auto m = disney();
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
@@ -150,7 +161,7 @@ TEST_CASE("effect set: derived from what the scene's materials and lights use", 
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) ==
           "path_trace.rgen");
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e639.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e1663.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) == "path_trace.e1.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS | PT_OUTPUT_GUIDES) ==
           "path_trace.e257.rgen");
@@ -160,7 +171,7 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // Each effect (or the guides) removed makes the shader smaller.
   const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit <= PT_EFFECT_ENVIRONMENT; bit <<= 1) {
+  for (uint32_t bit = 1; bit <= PT_EFFECT_ORTHOGRAPHIC; bit <<= 1) {
     if ((PT_PATH_TRACE_EFFECT_BITS & bit) == 0) continue;  // alpha masking: no variant
     const auto without = shaders::shaderDesc(render::effectVariant("path_trace.rgen", all & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
@@ -231,9 +242,10 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   // the specular layer compiled out (glass), every effect at once (a bit the
   // derivation forgot would drop its lobe and change the image), and both
   // Whitted branches.
-  // The branch features (environment, soft sun, spot, thin lens with
-  // blades, absorbing glass) all in one scene: they are no variants, so
-  // both pipelines hold them, but the specialized one must still match.
+  // The branch features (soft sun, spot, thin lens with blades, absorbing
+  // glass) all in one scene: they are no variants, so both pipelines hold
+  // them, but the specialized one must still match. The environment and the
+  // orthographic camera are variant bits: seen through them.
   auto absorbing = glass;
   absorbing.roughness = 0.0f;
   absorbing.attenuationColor = {0.9f, 0.5f, 0.2f};
@@ -260,8 +272,9 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   branches.camera.orthographicHeight = 0.5f;
   REQUIRE(render::featureNames(render::deriveFeatures(branches, std::nullopt)) ==
           std::vector<std::string>{"directional-lights", "soft-sun", "spot-lights", "thin-lens",
-                                   "lens-blades", "absorption", "orthographic"});
+                                   "lens-blades", "absorption"});
   REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ENVIRONMENT) != 0u);
+  REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ORTHOGRAPHIC) != 0u);
   REQUIRE(render::deriveFeatures(scene::loadScene("cornell-box"), std::nullopt) == 0u);
 
   std::vector<Case> cases = {

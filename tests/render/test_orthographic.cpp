@@ -4,6 +4,7 @@
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 
+#include "effects.h"
 #include "render_test_utils.h"
 
 using namespace penumbra;
@@ -58,5 +59,38 @@ TEST_CASE("orthographic camera: a square keeps its size and place at any distanc
   // Behind the film plane: not seen.
   const image::Image behind = test::renderScene(*device, squareAt(-1.0f), kWidth, kHeight, 16);
   CHECK(test::measureSpot(behind).flux == 0.0);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+// The projection is a variant bit (PT_EFFECT_ORTHOGRAPHIC), so a perspective
+// pipeline has no orthographic code: switching the camera must rebuild the
+// pipeline, and render what a tracer built for that camera renders (same
+// seed, so bit for bit).
+TEST_CASE("orthographic camera: switching projection rebuilds the pipeline for it",
+          "[render][gpu][camera]") {
+  auto device = test::makeTestDevice();
+  scene::Scene scene = squareAt(5.0f);
+  const scene::Camera parallel = scene.camera;
+  scene.camera.orthographicHeight = 0.0f;
+  scene.camera.verticalFovDegrees = 30.0f;
+  const scene::Camera perspective = scene.camera;
+
+  render::PathTracer tracer(*device, scene, kWidth, kHeight);
+  CHECK(tracer.pipelineEffects() == PT_EFFECT_AREA_LIGHTS);
+  tracer.setCamera(parallel);
+  CHECK(tracer.pipelineEffects() == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_ORTHOGRAPHIC));
+  render::PathTracerSettings settings;
+  settings.seed = 11;
+  tracer.renderFrame(settings, 4);
+  render::PathTracer built(*device, scene, kWidth, kHeight, {}, parallel);
+  CHECK(built.pipelineEffects() == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_ORTHOGRAPHIC));
+  built.renderFrame(settings, 4);
+  const image::Image switched = tracer.readback();
+  CHECK(switched.rgba == built.readback().rgba);
+  // The square seen orthographically: 207.36 px^2 within its noise (see above).
+  CHECK(test::measureSpot(switched).flux == Approx(207.36).epsilon(0.05));
+
+  tracer.setCamera(perspective);
+  CHECK(tracer.pipelineEffects() == PT_EFFECT_AREA_LIGHTS);
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

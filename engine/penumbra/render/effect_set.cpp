@@ -66,8 +66,12 @@ uint32_t deriveMaterialEffects(const scene::Material& material) {
   return materialEffectsOf(material);
 }
 
-uint32_t deriveEffects(const scene::Scene& scene) {
-  uint32_t effects = 0;
+uint32_t cameraEffects(const scene::Camera& camera) {
+  return camera.orthographic() ? uint32_t(PT_EFFECT_ORTHOGRAPHIC) : 0u;
+}
+
+uint32_t deriveEffects(const scene::Scene& scene, const std::optional<scene::Camera>& camera) {
+  uint32_t effects = cameraEffects(camera ? *camera : scene.camera);
   if (!scene.pointLights.empty()) effects |= PT_EFFECT_DELTA_LIGHTS;
   if (scene.environment.present()) effects |= PT_EFFECT_ENVIRONMENT;
   // Materials of meshes that are drawn, not every material the file lists.
@@ -93,7 +97,7 @@ constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
     {PT_EFFECT_SPECULAR, "specular"},       {PT_EFFECT_TRANSMISSION, "transmission"},
     {PT_EFFECT_CLEARCOAT, "clearcoat"},     {PT_EFFECT_SHEEN, "sheen"},
     {PT_EFFECT_TEXTURES, "textures"},       {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
-    {PT_EFFECT_ENVIRONMENT, "environment"}};
+    {PT_EFFECT_ENVIRONMENT, "environment"}, {PT_EFFECT_ORTHOGRAPHIC, "orthographic"}};
 constexpr uint32_t namedEffects() {
   uint32_t bits = 0;
   for (const auto& [bit, name] : kEffectNames) bits |= bit;
@@ -121,7 +125,6 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
   const scene::Camera& view = camera ? *camera : scene.camera;
   if (view.apertureRadius > 0.0f) features |= kFeatureThinLens;
   if (view.apertureRadius > 0.0f && view.apertureBlades >= 3) features |= kFeatureLensBlades;
-  if (view.orthographic()) features |= kFeatureOrthographic;
   auto absorbs = [&](uint32_t materialIndex) {
     const auto& m = scene.materials.at(materialIndex);
     const bool transmits = m.specTrans > 0.0f || m.transparency > 0.0f;
@@ -136,8 +139,7 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
 
 std::vector<std::string> featureNames(uint32_t features) {
   static const char* const kNames[] = {"directional-lights", "soft-sun",    "spot-lights",
-                                       "thin-lens",          "lens-blades", "absorption",
-                                       "orthographic"};
+                                       "thin-lens",          "lens-blades", "absorption"};
   std::vector<std::string> names;
   for (int bit = 0; bit < int(std::size(kNames)); ++bit)
     if (features & (1u << bit)) names.emplace_back(kNames[bit]);

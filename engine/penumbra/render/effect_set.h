@@ -12,10 +12,15 @@
 
 namespace penumbra::render {
 
-// PT_EFFECT_* bits the scene calls for. A bit is set if any material or light
-// of the scene could use the code behind it, so a variant without it renders
-// the scene exactly as the full pipeline does.
-uint32_t deriveEffects(const scene::Scene& scene);
+// PT_EFFECT_* bits the scene calls for, seen from `camera` (the scene's own if
+// absent). A bit is set if any material, light or the camera could use the
+// code behind it, so a variant without it renders the scene exactly as the
+// full pipeline does.
+uint32_t deriveEffects(const scene::Scene& scene,
+                       const std::optional<scene::Camera>& camera = std::nullopt);
+
+// The bits a camera calls for: PT_EFFECT_ORTHOGRAPHIC for an orthographic one.
+uint32_t cameraEffects(const scene::Camera& camera);
 
 // The PT_EFFECT_* bits one material calls for when drawn (not area lights:
 // those follow from emission, which deriveEffects adds).
@@ -45,15 +50,16 @@ std::vector<std::string> effectNames(uint32_t effects);
 // variant bit: each bit doubles the compiled variants, and these cost a
 // scene without them nothing measurable (docs/results.md). The
 // environment, which did cost (11 % of the Cornell box's frame on the
-// H200), is the variant bit PT_EFFECT_ENVIRONMENT. Listed by --print-effects.
+// H200), is the variant bit PT_EFFECT_ENVIRONMENT, and so is the
+// orthographic camera, whose branch moved the driver's code for the whole
+// megakernel by up to 2 % per sample. Listed by --print-effects.
 enum SceneFeature : uint32_t {
   kFeatureDirectionalLights = 1,  // directional lights (delta or soft suns)
   kFeatureSoftSun = 2,            // a directional light with an angular radius
   kFeatureSpotLights = 4,
-  kFeatureThinLens = 8,       // an aperture radius > 0
-  kFeatureLensBlades = 16,    // a polygonal aperture
-  kFeatureAbsorption = 32,    // a transmissive material with a finite attenuation distance
-  kFeatureOrthographic = 64,  // an orthographic camera
+  kFeatureThinLens = 8,     // an aperture radius > 0
+  kFeatureLensBlades = 16,  // a polygonal aperture
+  kFeatureAbsorption = 32,  // a transmissive material with a finite attenuation distance
 };
 // The features of the scene rendered from `camera` (the scene's own if absent).
 uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera);

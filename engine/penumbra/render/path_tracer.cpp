@@ -24,18 +24,20 @@ constexpr double kRebaseDistance = 64.0;
 }  // namespace
 
 PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width,
-                       uint32_t height, const PipelineOptions& options)
+                       uint32_t height, const PipelineOptions& options,
+                       const std::optional<scene::Camera>& camera)
     : device_(device),
       width_(width),
       height_(height),
       options_(options),
-      camera_(scene.camera),
+      camera_(camera ? *camera : scene.camera),
       environment_(scene.environment),
       ambient_(scene.ambient),
       materials_(scene.materials) {
   requireValidImageSize("path tracer", width, height);
   scene::validate(scene);
-  sceneEffects_ = deriveEffects(scene);
+  scene::validateCamera(camera_);
+  sceneEffects_ = deriveEffects(scene, camera_);
   pipelineEffects_ = options.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
   commandList_ = device_.createCommandList("path tracer");
   createAccumulation();
@@ -54,7 +56,7 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
       vertexAlphaMaterials_.push_back(scene.meshes[inst.mesh].material);
   }
   for (const auto& object : scene.implicits) drawnMaterials_.push_back(object.material);
-  scene_ = std::make_unique<GpuScene>(device_, scene, renderOriginNear(scene.camera.position),
+  scene_ = std::make_unique<GpuScene>(device_, scene, renderOriginNear(camera_.position),
                                       pipelineEffects_ == uint32_t(PT_EFFECTS_ALL));
   // The path-tracing pipeline now, so bad shaders fail at construction; the
   // others when first used.
@@ -195,6 +197,12 @@ void PathTracer::setCamera(const scene::Camera& camera) {
     ++rebaseCount_;
   }
   resetAccumulation();
+  const uint32_t effects =
+      (sceneEffects_ & ~uint32_t(PT_EFFECT_ORTHOGRAPHIC)) | cameraEffects(camera);
+  if (effects != sceneEffects_) {
+    sceneEffects_ = effects;
+    rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
+  }
 }
 
 bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) {
@@ -211,10 +219,11 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   scene_->writeMaterials(materials_);
   resetAccumulation();
 
-  // Emission and meshes are unchanged, so only the material bits can differ.
-  uint32_t effects =
-      (sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_ENVIRONMENT)) |
-      meshEffects_;
+  // Emission, meshes and the camera are unchanged, so only the material bits
+  // can differ.
+  uint32_t effects = (sceneEffects_ & (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS |
+                                       PT_EFFECT_ENVIRONMENT | PT_EFFECT_ORTHOGRAPHIC)) |
+                     meshEffects_;
   for (uint32_t m : drawnMaterials_) effects |= deriveMaterialEffects(materials_[m]);
   // Vertex alpha cuts a mesh under MASK or BLEND whatever its texture.
   for (uint32_t m : vertexAlphaMaterials_)

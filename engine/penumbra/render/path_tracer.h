@@ -7,6 +7,7 @@
 // running mean, with the denoiser's guide buffers beside it.
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "path_tracer_shared.h"
@@ -120,8 +121,11 @@ class PathTracer {
  public:
   static constexpr uint32_t kMaxSamplesPerFrame = 16;
 
+  // Seen from `camera` (the scene's own if absent): a camera given here, not
+  // by setCamera afterwards, builds the pipeline once for its projection.
   PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t width, uint32_t height,
-             const PipelineOptions& options = {});
+             const PipelineOptions& options = {},
+             const std::optional<scene::Camera>& camera = std::nullopt);
   ~PathTracer();
   PathTracer(const PathTracer&) = delete;
   PathTracer& operator=(const PathTracer&) = delete;
@@ -158,6 +162,8 @@ class PathTracer {
   // (the grid point nearest it): the instances, emitters, point lights and
   // implicit objects are placed again and the TLAS rebuilt, the meshes'
   // BLASes kept; the image is the one a tracer built with this camera makes.
+  // A change of projection rebuilds the pipelines (PT_EFFECT_ORTHOGRAPHIC)
+  // unless they hold all effects.
   void setCamera(const scene::Camera& camera);
   // How often setCamera moved the origin.
   uint32_t rebaseCount() const { return rebaseCount_; }
