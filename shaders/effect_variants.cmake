@@ -1,5 +1,5 @@
 # The effect variants built ahead of time (docs/ARCHITECTURE.md, "Effect
-# specialization"): not every subset of the bits (512 path-tracer variants)
+# specialization"): not every subset of the bits (1024 path-tracer variants)
 # but the ones the built-in scenes, the test suite and the size checks use.
 # A scene whose exact set is not here renders with the smallest built
 # variant that holds every effect it needs (render::effectVariant): the same
@@ -8,7 +8,8 @@
 # bits (penumbra_effect_masks, shaders/CMakeLists.txt).
 
 # Each built-in scene as it is, with the denoiser's guides, under an
-# environment and both.
+# environment and both; and seen through an orthographic camera, with and
+# without the guides (an unlisted set takes a superset that can cost 2x).
 penumbra_effect_masks(_builtin_scenes
   AREA_LIGHTS                                              # cornell-box
   AREA_LIGHTS+SPECULAR                                     # material-test
@@ -16,7 +17,8 @@ penumbra_effect_masks(_builtin_scenes
   DELTA_LIGHTS+SPECULAR+TRANSMISSION                       # cornell-box-whitted
   AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+TRANSMISSION+CLEARCOAT # implicit-surfaces
 )
-penumbra_effect_masks(_scene_extras NONE GUIDES ENVIRONMENT GUIDES+ENVIRONMENT)
+penumbra_effect_masks(_scene_extras NONE GUIDES ENVIRONMENT GUIDES+ENVIRONMENT ORTHOGRAPHIC
+  GUIDES+ORTHOGRAPHIC)
 set(_builtin_path_trace)
 foreach(scene ${_builtin_scenes})
   foreach(extra ${_scene_extras})
@@ -34,8 +36,7 @@ penumbra_effect_masks(_tests_path_trace
   DELTA_LIGHTS+SPECULAR+TEXTURES SPECULAR+GUIDES ENVIRONMENT SPECULAR+ENVIRONMENT
   AREA_LIGHTS+DELTA_LIGHTS+TRANSMISSION+ENVIRONMENT
   AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+TRANSMISSION+CLEARCOAT+SHEEN+TEXTURES+ENVIRONMENT
-  SPECULAR+GUIDES+ENVIRONMENT
-  AREA_LIGHTS+ORTHOGRAPHIC AREA_LIGHTS+GUIDES+ORTHOGRAPHIC)
+  SPECULAR+GUIDES+ENVIRONMENT)
 # Every effect but one: what each effect costs in code size and time
 # (test_effect_set, scripts/feature_costs.sh).
 penumbra_all_but_one(_all_but_one_path_trace ${_path_trace_effects})

@@ -15,6 +15,20 @@ float2 filmPoint(FrameConstants c, float2 filmPosition) {
                 (1.0 - 2.0 * filmPosition.y / float(c.height)) * halfHeight);
 }
 
+// The perspective ray's direction through `filmPosition`. filmPoint's
+// arithmetic spelled out, not called: so the perspective variants' SPIR-V is
+// the one they had before orthographic cameras, statement for statement. The
+// NVIDIA driver's code for the whole megakernel follows the SPIR-V's shape:
+// a call in its place cost the guide-writing variant 1 % (docs/results.md,
+// "Orthographic cameras").
+float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
+  float tanHalfFov = c.camera.filmHalfHeight;
+  float aspect = c.camera.aspectRatio;
+  float sx = (2.0 * filmPosition.x / float(c.width) - 1.0) * tanHalfFov * aspect;
+  float sy = (1.0 - 2.0 * filmPosition.y / float(c.height)) * tanHalfFov;
+  return normalize(c.camera.forward + sx * c.camera.right + sy * c.camera.up);
+}
+
 // Stratified jittered position of sample `index` of `count` in one frame: the
 // first m*m samples (m = floor(sqrt(count))) each cover one cell of an m x m
 // grid, the rest are uniform.
@@ -70,13 +84,13 @@ float2 samplePolygon(uint sides, float u0, float u1) {
 // code.
 void cameraRay(FrameConstants c, float2 filmPosition, inout Rng rng, out float3 origin,
                out float3 direction) {
-  float2 film = filmPoint(c, filmPosition);
   origin = c.camera.position;
-  direction = normalize(c.camera.forward + film.x * c.camera.right + film.y * c.camera.up);
+  direction = cameraRayDirection(c, filmPosition);
   // A variant bit, not only the frame's flag: the branch alone moved the
   // driver's code for the whole megakernel (docs/results.md).
 #if PT_HAS_EFFECT(PT_EFFECT_ORTHOGRAPHIC)
   if ((c.sceneFlags & PT_SCENE_ORTHOGRAPHIC) != 0u) {
+    float2 film = filmPoint(c, filmPosition);
     origin = c.camera.position + film.x * c.camera.right + film.y * c.camera.up;
     direction = c.camera.forward;
   }
