@@ -87,6 +87,15 @@ float3 projectToPrevious(DenoiseFrame f, float3 world) {
   return float3((sx + 1.0) * 0.5 * float(f.width), (1.0 - sy) * 0.5 * float(f.height), z);
 }
 
+// The length the depth tolerances are relative to at `depth`: the depth for a
+// perspective camera (a pixel's footprint grows with it), the view's height
+// for an orthographic one (its footprint is the same at any depth, and depth
+// counts from wherever the film plane was put): as much as a perspective
+// camera of 53 degrees (a film as tall as its distance) sees at that depth.
+float depthScale(DenoiseFrame f, float depth) {
+  return f.orthographic != 0u ? 2.0 * f.camera.filmHalfHeight : depth;
+}
+
 float3 unitOrZero(float3 v) {
   float l = length(v);
   return l > 0.0 ? v / l : zero3();
@@ -120,7 +129,7 @@ void denoiseTemporal(int2 p, uint flags) {
     motion = previous.xy - (float2(p) + float2(0.5, 0.5));
     if ((flags & DN_FLAG_HISTORY_VALID) != 0u && previous.z > 0.0) {
       // Bilinear taps of the history, each kept only where the surface it
-      // saw is this one (depth within 10 %, normals within ~25 degrees, the
+      // saw is this one (depth within 10 % of depthScale, normals within ~25 degrees, the
       // same kind of material): anything else is a disocclusion and
       // restarts the history.
       float2 tapOrigin = previous.xy - float2(0.5, 0.5);
@@ -147,7 +156,7 @@ void denoiseTemporal(int2 p, uint flags) {
           int2 q = (pass == 0 ? base : spot) + offset;
           if (!insideImage(f, q)) continue;
           float4 hnd = loadHistoryNormalDepth(q);
-          if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * previous.z) continue;
+          if (!(hnd.w > 0.0) || abs(hnd.w - previous.z) > 0.1 * depthScale(f, previous.z)) continue;
           if (dot(normal, unitOrZero(hnd.xyz)) < 0.9) continue;
           // A light 0.1 mm below a ceiling passes both tests: the albedo
           // and the emission must match as well (luminance within a factor
@@ -208,7 +217,7 @@ float edgeWeight(DenoiseFrame f, float depthP, float2 gradient, float3 normalP, 
                  float sigmaLuminance, float4 ndQ, float luminanceQ, float2 offset) {
   float w = 1.0;
   if (f.depthSigma > 0.0)
-    w *= exp(-abs(ndQ.w - depthP) / (f.depthSigma * abs(dot(gradient, offset)) + 1e-3 * depthP + 1e-8));
+    w *= exp(-abs(ndQ.w - depthP) / (f.depthSigma * abs(dot(gradient, offset)) + 1e-3 * depthScale(f, depthP) + 1e-8));
   // A pixel whose samples' normals cancel (both sides of a thin surface) has
   // no normal to compare.
   float3 normalQ = unitOrZero(ndQ.xyz);
