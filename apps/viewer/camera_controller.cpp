@@ -33,13 +33,20 @@ void CameraController::move(glm::vec3 metres) {
   camera_.position += right() * metres.x + up * metres.y + forward * metres.z;
 }
 
-void CameraController::lookAt(glm::vec3 target) {
+void CameraController::focusOn(glm::vec3 target) {
   const glm::vec3 direction = target - glm::vec3(camera_.position);
-  if (glm::length(direction) <= 0.0f) return;
-  const glm::vec3 forward = glm::normalize(direction);
-  // Straight along up the right vector (forward x up) would vanish.
-  if (glm::length(glm::cross(forward, glm::normalize(camera_.up))) < 1e-4f) return;
-  camera_.forward = forward;
+  glm::vec3 forward = glm::normalize(camera_.forward);
+  if (camera_.orthographic()) {
+    camera_.position += glm::dvec3(direction - forward * glm::dot(direction, forward));
+  } else if (glm::length(direction) > 0.0f) {
+    // Straight along up the right vector (forward x up) would vanish: the
+    // direction stays, the focus still moves.
+    const glm::vec3 facing = glm::normalize(direction);
+    if (glm::length(glm::cross(facing, glm::normalize(camera_.up))) >= 1e-4f)
+      camera_.forward = forward = facing;
+  }
+  const float depth = glm::dot(target - glm::vec3(camera_.position), forward);
+  if (depth > 0.0f) camera_.focusDistance = depth;
 }
 
 void CameraController::turn(float yawDegrees, float pitchDegrees) {

@@ -30,8 +30,12 @@ class CameraController {
   void move(glm::vec3 metres);
   // Turns right by `yawDegrees` and up by `pitchDegrees` (elevation clamped).
   void turn(float yawDegrees, float pitchDegrees);
-  // Turns to face `target` (focus on a picked point); position and up stay.
-  void lookAt(glm::vec3 target);
+  // Brings `target` (a picked point) to the image's centre and into focus: a
+  // perspective camera turns to face it (position and up stay), an
+  // orthographic one slides across its film plane (direction and up stay;
+  // turning would swing the whole parallel view about its position). The
+  // plane in focus is then the one through the target.
+  void focusOn(glm::vec3 target);
   void reset() { camera_ = home_; }
   void setCamera(const scene::Camera& camera) { camera_ = camera; }
   void setHome(const scene::Camera& home) { home_ = camera_ = home; }

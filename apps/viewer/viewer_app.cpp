@@ -244,11 +244,7 @@ void Viewer::focusOn(glm::vec2 renderPixel) {
     statusLine_ = "nothing under the cursor";
     return;
   }
-  camera_->lookAt(hit->position);
-  // Looking at the point, the plane in focus through it is hit->distance ahead.
-  scene::Camera focused = camera_->camera();
-  focused.focusDistance = float(hit->distance);
-  camera_->setCamera(focused);
+  camera_->focusOn(hit->position);
   tracer_->setCamera(camera_->camera());
   selectedMaterial_ = int(hit->material);
   statusLine_ = fmt::format("focus: {} ({}), {:.3f} m away", hit->object,

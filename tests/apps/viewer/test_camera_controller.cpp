@@ -84,12 +84,33 @@ TEST_CASE("camera controller: the wheel scales the speed by 1.25 per notch", "[v
   CHECK(controller.speed() == Approx(1.0f));
 }
 
-TEST_CASE("camera controller: lookAt faces the target and keeps position and up", "[viewer]") {
+TEST_CASE("camera controller: focusOn faces the target and focuses on it; position and up stay",
+          "[viewer]") {
   viewer::CameraController controller(homeCamera(), 1.0f);
-  controller.lookAt({4.0f, 2.0f, 3.0f});  // 3 m along +x from (1, 2, 3)
+  controller.focusOn({4.0f, 2.0f, 3.0f});  // 3 m along +x from (1, 2, 3)
   CHECK(controller.camera().forward == glm::vec3(1, 0, 0));
   CHECK(controller.camera().position == homeCamera().position);
-  // Straight up has no right vector: ignored.
-  controller.lookAt({1.0f, 10.0f, 3.0f});
+  CHECK(controller.camera().up == homeCamera().up);
+  CHECK(controller.camera().focusDistance == Approx(3.0f));
+  // Straight up has no right vector: the direction stays, and a target in
+  // the camera's own plane leaves the focus where it was.
+  controller.focusOn({1.0f, 10.0f, 3.0f});
   CHECK(controller.camera().forward == glm::vec3(1, 0, 0));
+  CHECK(controller.camera().focusDistance == Approx(3.0f));
+}
+
+TEST_CASE("camera controller: an orthographic focusOn slides to centre the target, direction kept",
+          "[viewer]") {
+  scene::Camera home = homeCamera();
+  home.orthographicHeight = 2.0f;
+  viewer::CameraController controller(home, 1.0f);
+  // 0.5 m to its right (forward x up is -x), 0.25 m down, 4 m ahead.
+  controller.focusOn({0.5f, 1.75f, 7.0f});
+  CHECK(controller.camera().forward == home.forward);
+  CHECK(controller.camera().up == home.up);
+  CHECK(controller.camera().position.x == Approx(0.5));
+  CHECK(controller.camera().position.y == Approx(1.75));
+  CHECK(controller.camera().position.z == Approx(3.0));
+  CHECK(controller.camera().focusDistance == Approx(4.0f));
+  CHECK(controller.camera().orthographicHeight == 2.0f);
 }
