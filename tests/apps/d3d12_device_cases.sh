@@ -38,12 +38,12 @@ bash "$source/scripts/wine-d3d12.sh" "$exe" "[spirv-only]" --list-tests --verbos
 
 python3 - "$work/cases.xml" "$work/spirv.txt" <<'PY'
 import sys, xml.etree.ElementTree as ET
-cases = ET.parse(sys.argv[1]).getroot().iter("testcase")
+cases = list(ET.parse(sys.argv[1]).getroot().iter("testcase"))
 passed = failed = 0
 for case in cases:
     name = case.get("name")
     bad = case.find("failure") if case.find("failure") is not None else case.find("error")
-    print(f"d3d12: {name}: {'FAILED' if bad is not None else 'passed'}")
+    print(f"d3d12: {name}: {'FAILED' if bad is not None else 'passed'} ({float(case.get('time', 0)):.1f} s)")
     if bad is not None:
         failed += 1
         print("   " + (bad.text or bad.get("message") or "").strip().replace("\n", "\n   "))
@@ -52,6 +52,9 @@ for case in cases:
 skipped = [line.strip() for line in open(sys.argv[2]) if line.strip()]
 for name in skipped:
     print(f"d3d12: {name}: NOT RUN (its shaders are SPIR-V only: GLSL test shaders or compute harness)")
+# This test is the longest of the suite: where its time goes.
+slowest = sorted(cases, key=lambda c: -float(c.get("time", 0)))[:10]
+print("slowest: " + "; ".join(f"{float(c.get('time', 0)):.0f} s {c.get('name')}" for c in slowest))
 print(f"D3D12 device cases: {passed} passed, {failed} failed, {len(skipped)} not run on D3D12 ([spirv-only])")
 PY
 if [ $status -ne 0 ]; then
