@@ -480,6 +480,7 @@ TEST_CASE("bad glTF input gives one clear error naming the file and the part", "
       {"invalid_cycle.gltf", "cyclic"},
       {"invalid_nan.gltf", "not a finite number"},
       {"invalid_accessor_index.gltf", "accessor 9"},
+      {"invalid_orthographic_height.gltf", "ymag 1e-40"},
       {"no_such_file.gltf", "no such file"},
   };
   for (const auto& c : cases) {

@@ -386,9 +386,16 @@ class Importer {
                               where, name, src.type));
     const double yfov = src.perspective.yfov;
     const double xmag = src.orthographic.xmag, ymag = src.orthographic.ymag;
-    if (orthographic && !(std::isfinite(xmag) && std::isfinite(ymag) && xmag != 0.0 && ymag != 0.0))
-      throw Error(fmt::format("{}: {} has xmag {} and ymag {}; both must be finite and non-zero",
-                              where, name, xmag, ymag));
+    // The view's height and shape as the camera holds them, in floats: the
+    // height at most 1e9 (scene::validateCamera), neither rounded to 0 or
+    // to infinity.
+    const float height = float(2.0 * std::abs(ymag));
+    const float shape = float(std::abs(xmag / ymag));
+    if (orthographic && !(height > 0.0f && height <= 1e9f && shape > 0.0f && std::isfinite(shape)))
+      throw Error(fmt::format(
+          "{}: {} has xmag {} and ymag {}; the view's height 2|ymag| must be in (0, 1e9] and "
+          "its aspect |xmag/ymag| a finite float above 0",
+          where, name, xmag, ymag));
     if (!orthographic && !(yfov > 0.0 && yfov < glm::pi<double>()))
       throw Error(fmt::format("{}: {} has yfov {}, not in (0, pi)", where, name, yfov));
     // glTF cameras look down their node's -z with +y up; scale is ignored.
@@ -407,8 +414,8 @@ class Importer {
     double aspect = src.perspective.aspectRatio;
     if (orthographic) {
       // xmag and ymag are half the view's width and height.
-      c.camera.orthographicHeight = float(2.0 * std::abs(ymag));
-      aspect = std::abs(xmag / ymag);
+      c.camera.orthographicHeight = height;
+      aspect = shape;
     } else {
       c.camera.verticalFovDegrees = float(glm::degrees(yfov));
     }

@@ -424,6 +424,14 @@ def invalid():
     b.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9
     b.write_gltf("invalid_accessor_index.gltf")
 
+    # An orthographic view 2e-40 m tall: below the smallest float.
+    b = triangle_file()
+    b.doc["cameras"] = [{"type": "orthographic",
+                         "orthographic": {"xmag": 1, "ymag": 1e-40, "znear": 0, "zfar": 10}}]
+    b.add("nodes", {"camera": 0, "translation": [0, 0, 2]})
+    b.doc["scenes"] = [{"nodes": [0, 1]}]
+    b.write_gltf("invalid_orthographic_height.gltf")
+
 
 def quad(b, corners, normal):
     """A quad (two triangles v0 v1 v2, v0 v2 v3) with one normal."""
