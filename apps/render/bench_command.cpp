@@ -165,35 +165,11 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
   render::DenoiserSettings d;
   d.mode = o.settings.denoiser.mode;
   d.fireflyClamp = o.settings.denoiser.fireflyClamp;
-  settings.writeGuides = true;  // the denoiser reads them
-  // Timed frame after frame, as a real-time loop runs them: the stability
-  // loop below reads four images back between frames, the GPU idles and its
-  // clocks drop, which moved its frame times by up to 6 % between builds of
-  // identical shaders (docs/results.md, "Orthographic cameras").
   std::vector<double> trace, filter;
-  if (o.cameraPan == 0) {
-    uint32_t sample = tracer.nextSampleIndex();
-    for (uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up
-      settings.seed = 500 + f;
-      tracer.startNewMean(sample);
-      sample += o.settings.sppPerFrame;
-      const auto stats = tracer.renderFrame(settings, o.settings.sppPerFrame);
-      const double seconds = denoiser.run(tracer, tracer.camera(), o.settings.sppPerFrame, d);
-      if (f == 0) continue;
-      trace.push_back(stats.gpuSeconds);
-      filter.push_back(seconds);
-    }
-    std::vector<double> frame;
-    for (size_t i = 0; i < trace.size(); ++i) frame.push_back(trace[i] + filter[i]);
-    fmt::print("denoiser ({}) GPU ms/frame median {:.3f}, mean {:.3f}\n",
-               render::denoiseModeName(o.settings.denoiser.mode), median(filter) * 1e3,
-               mean(filter) * 1e3);
-    fmt::print("path tracing + denoiser GPU ms/frame median {:.3f}\n", median(frame) * 1e3);
-    denoiser.resetHistory();
-  }
   image::Image previousRaw, previousDenoised, moments;
   double rawChange = 0, denoisedChange = 0;
   size_t reprojectedPixels = 0;
+  settings.writeGuides = true;  // the denoiser reads them
   const scene::Camera start = tracer.camera();
   scene::Camera camera = start;
   const glm::dvec3 right = glm::normalize(
@@ -207,10 +183,12 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
     }
     tracer.startNewMean(nextSample);
     nextSample += o.settings.sppPerFrame;
-    tracer.renderFrame(settings, o.settings.sppPerFrame);
-    denoiser.run(tracer, camera, o.settings.sppPerFrame, d);
+    const auto stats = tracer.renderFrame(settings, o.settings.sppPerFrame);
+    const double seconds = denoiser.run(tracer, camera, o.settings.sppPerFrame, d);
     image::Image raw = tracer.readback(), denoised = tracer.readback(denoiser.output());
     if (f > 0) {
+      trace.push_back(stats.gpuSeconds);
+      filter.push_back(seconds);
       if (o.cameraPan != 0) {
         const image::Image motion = tracer.readback(denoiser.motion());
         moments = tracer.readback(denoiser.moments());
@@ -226,6 +204,16 @@ void benchDenoiser(rhi::IDevice& device, const scene::Scene& scene, render::Path
     }
     previousRaw = std::move(raw);
     previousDenoised = std::move(denoised);
+  }
+  std::vector<double> frame;
+  for (size_t i = 0; i < trace.size(); ++i) frame.push_back(trace[i] + filter[i]);
+  // Along a pan the host reads four images back between frames, the GPU
+  // idles and its clocks may drop: a still camera times the denoiser.
+  if (o.cameraPan == 0) {
+    fmt::print("denoiser ({}) GPU ms/frame median {:.3f}, mean {:.3f}\n",
+               render::denoiseModeName(o.settings.denoiser.mode), median(filter) * 1e3,
+               mean(filter) * 1e3);
+    fmt::print("path tracing + denoiser GPU ms/frame median {:.3f}\n", median(frame) * 1e3);
   }
   fmt::print(
       "frame-to-frame mean |luminance change|{}: raw {:.4g}, denoised {:.4g} ({:.1f}x steadier)\n",
