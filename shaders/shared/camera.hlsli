@@ -17,10 +17,10 @@ float2 filmPoint(FrameConstants c, float2 filmPosition) {
 
 // The perspective ray's direction through `filmPosition`. filmPoint's
 // arithmetic spelled out, not called: so the perspective variants' SPIR-V is
-// the one they had before orthographic cameras, statement for statement. The
-// NVIDIA driver's code for the whole megakernel follows the SPIR-V's shape:
-// a call in its place cost the guide-writing variant 1 % (docs/results.md,
-// "Orthographic cameras").
+// the one they had before orthographic cameras, statement for statement, and
+// a perspective scene runs the code it ran then (docs/results.md,
+// "Orthographic cameras as an effect bit"; a call changes the SPIR-V's
+// shape, and the driver's code for the whole megakernel follows it).
 float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
   float tanHalfFov = c.camera.filmHalfHeight;
   float aspect = c.camera.aspectRatio;
