@@ -90,6 +90,46 @@ TEST_CASE("depth of field: a point out of focus images to the circle of confusio
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+// Through an orthographic camera a film point's ray leaves the film plane
+// along forward and meets the plane in focus at z_f; the lens moves its
+// origin by l (|l| <= A) and aims it at that point, so at depth z_o it is
+// off by l (1 - z_o / z_f): a point is a disk of radius A |1 - z_o / z_f|
+// in world units on the film, whatever the depths' scale (0.1 m and
+// 0.05 m here: 6.4 and 3.2 px of a view 1 m tall on 64 px). Within half a
+// pixel, as above: a perspective formula (A |z_o - z_f| / z_o) would give
+// 3.2 and 6.4 px, swapped.
+TEST_CASE("depth of field: an orthographic camera's circle of confusion is A |1 - z/z_focus|",
+          "[render][gpu][camera]") {
+  auto device = test::makeTestDevice();
+  constexpr double kViewHeight = 1.0;  // metres on 64 px
+  auto orthographic = [&](float aperture, float focus) {
+    scene::Scene s = pointEmitter(aperture, focus);
+    s.camera.orthographicHeight = float(kViewHeight);
+    return s;
+  };
+  render::PathTracerSettings settings;
+  settings.seed = 10;
+  const auto pinhole = test::measureSpot(
+      test::renderScene(*device, orthographic(0.0f, 1.0f), kSize, kSize, kSpp, settings));
+  for (float focus : {2.0f, 8.0f}) {
+    const float aperture = 0.1f;
+    const double radius =
+        aperture * std::abs(1.0 - kEmitterDistance / focus) * (kSize / kViewHeight);
+    const auto img =
+        test::renderScene(*device, orthographic(aperture, focus), kSize, kSize, kSpp, settings);
+    REQUIRE(image::countNonFinite(img) == 0);
+    const auto blurred = test::measureSpot(img);
+    const double measured = std::sqrt(2.0 * (blurred.meanSquare - pinhole.meanSquare));
+    INFO("focus " << focus << " m: disk radius " << measured << " px, thin lens says " << radius
+                  << "; flux " << blurred.flux << " vs pinhole " << pinhole.flux);
+    CHECK(std::abs(measured - radius) < 0.5);
+    CHECK(std::abs(blurred.flux / pinhole.flux - 1.0) < 0.1);
+    CHECK(std::abs(blurred.cx - pinhole.cx) < 0.25);
+    CHECK(std::abs(blurred.cy - pinhole.cy) < 0.25);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 // With six blades the circle of confusion is a regular hexagon inscribed in
 // the round one: corners where the lens's right axis points (the image's x
 // axis; point-symmetric, so the image's inversion changes nothing), flat
