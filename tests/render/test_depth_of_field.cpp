@@ -40,6 +40,22 @@ scene::Scene pointEmitter(float apertureRadius, float focusDistance) {
   return s;
 }
 
+// The blurred image against the pinhole's: a disk of `radius` px within half
+// a pixel (R = sqrt(2 (mean square - the pinhole's)), see below), the same
+// flux (each image is about 1200 samples' worth: 3 % noise) and centre.
+// Blurring moves light; it does not make or lose it, nor move its centre.
+void checkDisk(const image::Image& img, const test::Spot& pinhole, double radius) {
+  REQUIRE(image::countNonFinite(img) == 0);
+  const auto blurred = test::measureSpot(img);
+  const double measured = std::sqrt(2.0 * (blurred.meanSquare - pinhole.meanSquare));
+  INFO("disk radius " << measured << " px, thin lens says " << radius << "; flux " << blurred.flux
+                      << " vs pinhole " << pinhole.flux);
+  CHECK(std::abs(measured - radius) < 0.5);
+  CHECK(std::abs(blurred.flux / pinhole.flux - 1.0) < 0.1);
+  CHECK(std::abs(blurred.cx - pinhole.cx) < 0.25);
+  CHECK(std::abs(blurred.cy - pinhole.cy) < 0.25);
+}
+
 }  // namespace
 
 // A lens of radius A focused at z_f sees a point at z_o as a disk on the
@@ -67,19 +83,10 @@ TEST_CASE("depth of field: a point out of focus images to the circle of confusio
     const float aperture = 0.2f;
     const double radius = aperture * std::abs(kEmitterDistance - focus) /
                           (kEmitterDistance * focus * tanHalfFov) * (kSize / 2.0);
-    const auto img =
-        test::renderScene(*device, pointEmitter(aperture, focus), kSize, kSize, kSpp, settings);
-    REQUIRE(image::countNonFinite(img) == 0);
-    const auto blurred = test::measureSpot(img);
-    const double measured = std::sqrt(2.0 * (blurred.meanSquare - pinhole.meanSquare));
-    INFO("focus " << focus << " m: disk radius " << measured << " px, thin lens says " << radius
-                  << "; flux " << blurred.flux << " vs pinhole " << pinhole.flux);
-    CHECK(std::abs(measured - radius) < 0.5);
-    // Blurring moves light, it does not make or lose it, nor move its centre.
-    // (Each image's flux is about 1200 samples' worth: 3 % noise.)
-    CHECK(std::abs(blurred.flux / pinhole.flux - 1.0) < 0.1);
-    CHECK(std::abs(blurred.cx - pinhole.cx) < 0.25);
-    CHECK(std::abs(blurred.cy - pinhole.cy) < 0.25);
+    INFO("focus " << focus << " m");
+    checkDisk(
+        test::renderScene(*device, pointEmitter(aperture, focus), kSize, kSize, kSpp, settings),
+        pinhole, radius);
   }
 
   // Focused on the emitter, the lens changes nothing but noise.
@@ -115,17 +122,10 @@ TEST_CASE("depth of field: an orthographic camera's circle of confusion is A |1 
     const float aperture = 0.1f;
     const double radius =
         aperture * std::abs(1.0 - kEmitterDistance / focus) * (kSize / kViewHeight);
-    const auto img =
-        test::renderScene(*device, orthographic(aperture, focus), kSize, kSize, kSpp, settings);
-    REQUIRE(image::countNonFinite(img) == 0);
-    const auto blurred = test::measureSpot(img);
-    const double measured = std::sqrt(2.0 * (blurred.meanSquare - pinhole.meanSquare));
-    INFO("focus " << focus << " m: disk radius " << measured << " px, thin lens says " << radius
-                  << "; flux " << blurred.flux << " vs pinhole " << pinhole.flux);
-    CHECK(std::abs(measured - radius) < 0.5);
-    CHECK(std::abs(blurred.flux / pinhole.flux - 1.0) < 0.1);
-    CHECK(std::abs(blurred.cx - pinhole.cx) < 0.25);
-    CHECK(std::abs(blurred.cy - pinhole.cy) < 0.25);
+    INFO("focus " << focus << " m");
+    checkDisk(
+        test::renderScene(*device, orthographic(aperture, focus), kSize, kSize, kSpp, settings),
+        pinhole, radius);
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

@@ -38,7 +38,7 @@ PathTracer::PathTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t
   scene::validate(scene);
   scene::validateCamera(camera_);
   sceneEffects_ = deriveEffects(scene, camera_);
-  pipelineEffects_ = options.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
+  pipelineEffects_ = wantedPipelineEffects();
   commandList_ = device_.createCommandList("path tracer");
   createAccumulation();
 
@@ -121,7 +121,7 @@ void PathTracer::setEnvironment(scene::Environment environment) {
   // the scene has one (PT_EFFECT_ENVIRONMENT).
   if (wasPresent != environment_.present()) {
     sceneEffects_ ^= PT_EFFECT_ENVIRONMENT;
-    rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
+    rebuildPipelines();
   }
 }
 
@@ -201,7 +201,7 @@ void PathTracer::setCamera(const scene::Camera& camera) {
       (sceneEffects_ & ~uint32_t(PT_EFFECT_ORTHOGRAPHIC)) | cameraEffects(camera);
   if (effects != sceneEffects_) {
     sceneEffects_ = effects;
-    rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
+    rebuildPipelines();
   }
 }
 
@@ -229,10 +229,15 @@ bool PathTracer::updateMaterials(const std::vector<scene::Material>& materials) 
   for (uint32_t m : vertexAlphaMaterials_)
     if (alphaMasked(materials_[m], true)) effects |= PT_EFFECT_ALPHA_MASK;
   sceneEffects_ = effects;
-  return rebuildPipelinesFor(options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_);
+  return rebuildPipelines();
 }
 
-bool PathTracer::rebuildPipelinesFor(uint32_t effects) {
+uint32_t PathTracer::wantedPipelineEffects() const {
+  return options_.allEffects ? uint32_t(PT_EFFECTS_ALL) : sceneEffects_;
+}
+
+bool PathTracer::rebuildPipelines() {
+  const uint32_t effects = wantedPipelineEffects();
   if (effects == pipelineEffects_) return false;
   device_.waitForIdle();  // frames in flight still use the old pipelines
   pipelineEffects_ = effects;

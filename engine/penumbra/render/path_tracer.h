@@ -230,9 +230,11 @@ class PathTracer {
   // New binding sets for the pipelines built (the images or the scene's
   // buffers changed).
   void rebuildBindings();
-  // Drops the pipelines if they were built for other effects (PT_EFFECT_*)
-  // and builds the path tracer's for these; whether it did.
-  bool rebuildPipelinesFor(uint32_t effects);
+  // The effects the pipelines hold: the scene's, or all (PipelineOptions).
+  uint32_t wantedPipelineEffects() const;
+  // Drops the pipelines if they were built for other effects than those
+  // (PT_EFFECT_*) and builds the path tracer's; whether it did.
+  bool rebuildPipelines();
   // Created on first use (render/ray_generation_pipeline.h says why).
   const RayGenerationPipeline& pipelineFor(RayGeneration rayGeneration);
   rhi::BindingSetHandle createBindings(const rhi::IRayTracingPipeline& pipeline,
