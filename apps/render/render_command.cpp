@@ -166,16 +166,18 @@ scene::Scene loadJobScene(const RenderOptions& o, const CLI::App& cmd, render::R
   const scene::CameraPlacement placement = o.camera.placement(cmd);
   scene::placeCamera(scene, placement);
   if (job.camera) scene::placeCamera(*job.camera, placement);
+  const scene::Camera* rendering = job.camera ? &*job.camera : &scene.camera;
   for (scene::Camera* c : {&scene.camera, job.camera ? &*job.camera : nullptr}) {
     if (!c) continue;
     if (cmd.count("--aperture") > 0) c->apertureRadius = o.aperture;
-    if (cmd.count("--f-number") > 0) {
-      if (c->orthographic())
-        throw Error(
-            "camera: --f-number needs a focal length, which an orthographic camera has "
-            "not; give --aperture");
+    // An f-number needs a focal length; only the camera that renders must
+    // have one (an orthographic scene camera behind a record's keeps its lens).
+    if (cmd.count("--f-number") > 0 && !c->orthographic())
       c->apertureRadius = scene::apertureRadiusForFNumber(o.fNumber, c->verticalFovDegrees);
-    }
+    else if (cmd.count("--f-number") > 0 && c == rendering)
+      throw Error(
+          "camera: --f-number needs a focal length, which an orthographic camera has "
+          "not; give --aperture");
     if (cmd.count("--focus-distance") > 0) c->focusDistance = o.focusDistance;
     if (cmd.count("--aperture-blades") > 0) c->apertureBlades = o.apertureBlades;
     scene::validateCamera(*c);

@@ -39,4 +39,20 @@ if "$penumbra" render --settings "$work/other.json" --out "$work/d.exr" 2>"$work
 grep -q "other.json: \"materials\[0\].name\" 'marble' does not match material 0 of scene" "$work/err"
 [ "$(wc -l < "$work/err")" -eq 1 ]
 [ ! -e "$work/d.exr" ]
+# --f-number needs a focal length where the lens renders: a record's
+# perspective camera has one even when its scene's camera is orthographic.
+sed 's/"verticalFovDegrees": 39.3077/"orthographicHeight": 600/' \
+  "$(dirname "$0")/../../scenes/cornell-box.json" > "$work/flat-box.json"
+grep -q '"orthographicHeight": 600' "$work/flat-box.json"
+cat > "$work/lens.json" <<JSON
+{ "format": "penumbra-render", "version": 1, "scene": "$work/flat-box.json",
+  "camera": { "position": [0.278, 0.273, -0.8], "forward": [0, 0, 1], "up": [0, 1, 0],
+              "verticalFovDegrees": 40 },
+  "width": 8, "height": 8, "spp": 1 }
+JSON
+"$penumbra" render --settings "$work/lens.json" --f-number 2 --focus-distance 1 --out "$work/lens.exr" >/dev/null
+[ -s "$work/lens.exr" ]
+if "$penumbra" render --scene "$work/flat-box.json" --f-number 2 --size 8x8 --spp 1 --out "$work/flat.exr" 2>"$work/err"; then exit 1; fi
+grep -q "camera: --f-number needs a focal length, which an orthographic camera has not" "$work/err"
+[ ! -e "$work/flat.exr" ]
 echo "render --settings ok"
