@@ -330,9 +330,7 @@ TEST_CASE(
   scene::Camera after = before;
   after.position += right * float(kShift * pixel);
   tracer.setCamera(after);
-  settings.seed = 200;
-  tracer.renderFrame(settings, 1);
-  denoiser.run(tracer, after, 1, svgf);
+  svgfFrame(tracer, denoiser, after, 200);
   const image::Image withHistory = tracer.readback(denoiser.output());
   const image::Image motion = tracer.readback(denoiser.motion());
   const image::Image moments = tracer.readback(denoiser.moments());
