@@ -14,8 +14,10 @@
 //                          Lambert for materials marked so (glTF, the Cornell box);
 //   sheen     (1-m)(1-t)   sheen * lerp(1, tint, sheenTint) * SchlickWeight(cos theta_d);
 //   specular  m + (1-m)(1-t)  anisotropic GGX reflection; Fresnel Schlick from baseColor
-//                          (metal) or 0.08 * specular * lerp(1, tint, specularTint),
-//                          grazing reflectance faded below F0 = 0.02 (fresnelSchlickFaded);
+//                          (metal) or specular * min(0.08 * lerp(1, tint, specularTint)
+//                          * specularColor, 1) (dielectric; specularColor is glTF's
+//                          per-channel F0 colour, 1 for Disney materials), grazing
+//                          reflectance faded below F0 = 0.02 (fresnelSchlickFaded);
 //   glass     (1-m) t      rough dielectric reflection + refraction (Walter et al. 2007)
 //                          with the exact dielectric Fresnel of `ior`; the thin option
 //                          transmits without bending;
@@ -24,8 +26,9 @@
 // Energy: Burley's layers are additive and a white material can reflect more
 // than it receives; here the diffuse base is renormalised (Lagarde & de
 // Rousiers 2014) and attenuated by the specular layer's Fresnel on the way in
-// and out, and everything below the clearcoat by the clearcoat's, so the
-// directional albedo stays <= 1 (tested).
+// and out, per channel (a coloured F0 dims the base channel by channel), and
+// everything below the clearcoat by the clearcoat's, so the directional
+// albedo stays <= 1 (tested).
 // GGX masking is Smith's height-correlated form; sampling uses visible normals.
 // Lobes with max(alphaX, alphaY) <= kSpecularAlphaThreshold are perfectly
 // specular (delta) and are sampled but never evaluated.
@@ -53,6 +56,7 @@ struct DisneyMaterial {
   float anisotropyStrength;  // glTF KHR_materials_anisotropy: alpha along the tangent grows towards 1
   float specular;
   float specularTint;
+  float3 specularColor;  // multiplies the dielectric F0 per channel before its clamp to 1
   float sheen;
   float sheenTint;
   float clearcoat;
@@ -134,8 +138,19 @@ Ggx glassGgx(DisneyMaterial m, Ggx g) {
   return g;
 }
 
+// glTF's KHR_materials_specular is specular = specularFactor and
+// specularColor = specularColorFactor * F0(ior) / 0.08: F0 = min(F0(ior) *
+// colour, 1) * factor, as the extension defines it. The clamp keeps F0 <= 1,
+// where a saturated tint (baseColor / luminance, up to 13.8) went past it.
+// Without PT_EFFECT_SPECULAR_COLOR every F0 is grey (no tint, specularColor
+// 1: unpackDisney), and one channel's arithmetic stands for the three.
 float3 dielectricSpecularF0(DisneyMaterial m) {
-  return 0.08 * m.specular * lerp(splat3(1.0), tintColor(m.baseColor), m.specularTint);
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
+  float3 tinted = lerp(splat3(1.0), tintColor(m.baseColor), m.specularTint) * m.specularColor;
+  return m.specular * min(0.08 * tinted, splat3(1.0));
+#else
+  return splat3(m.specular * 0.08);
+#endif
 }
 
 // Schlick's Fresnel with the grazing reflectance faded out below F0 = 0.02
@@ -196,15 +211,25 @@ float3 diffuseTerm(DisneyMaterial m, float3 wo, float3 wi, float cosThetaD) {
 // The share of light that passes a Fresnel-weighted layer on the way in and
 // on the way out; scales the layers below it so energy is not created where
 // Burley's model simply adds them. Reciprocal: symmetric in wo and wi.
-float layerTransmission(float fresnelO, float fresnelI) { return (1.0 - fresnelO) * (1.0 - fresnelI); }
+float3 layerTransmission(float3 fresnelO, float3 fresnelI) {
+  return (splat3(1.0) - fresnelO) * (splat3(1.0) - fresnelI);
+}
 
-// Attenuation of the diffuse base by the dielectric specular layer and of
-// everything below the clearcoat by the clearcoat.
-float baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
+// Attenuation of the diffuse base by the dielectric specular layer, per
+// channel (what a coloured F0 reflects of a channel does not reach the base,
+// so each channel's albedo stays <= 1), and of everything below the clearcoat
+// by the clearcoat.
+float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
   float3 f0 = dielectricSpecularF0(m);
-  float specO = luminance(fresnelSchlickFaded(f0, cosO));
-  float specI = luminance(fresnelSchlickFaded(f0, cosI));
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
+  float3 specO = fresnelSchlickFaded(f0, cosO);
+  float3 specI = fresnelSchlickFaded(f0, cosI);
   return layerTransmission(specO, specI) * coatAttenuation(m, cosO, cosI);
+#else
+  float specO = fresnelSchlickFaded(f0, cosO).x;
+  float specI = fresnelSchlickFaded(f0, cosI).x;
+  return splat3((1.0 - specO) * (1.0 - specI) * coatAttenuation(m, cosO, cosI));
+#endif
 }
 
 float3 sheenTerm(DisneyMaterial m, float cosThetaD) {

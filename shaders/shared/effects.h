@@ -22,12 +22,14 @@
 #define PT_EFFECT_ALPHA_MASK 128   // MASK (textured or COLOR_0 alpha) or BLEND: an any-hit shader cuts
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
 #define PT_EFFECT_ORTHOGRAPHIC 1024 // an orthographic camera: parallel rays from the film plane
+#define PT_EFFECT_SPECULAR_COLOR 2048 // a coloured dielectric F0, or one above 0.08: specularColor != 1, its texture, specularTint > 0
 // clang-format on
-// Every effect: the eight bits above, the environment and the orthographic camera.
+// Every effect: the eight bits above, the environment, the orthographic camera
+// and the coloured F0.
 #define PT_EFFECTS_ALL                                                                            \
   (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | \
    PT_EFFECT_CLEARCOAT | PT_EFFECT_SHEEN | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK |            \
-   PT_EFFECT_ENVIRONMENT | PT_EFFECT_ORTHOGRAPHIC)
+   PT_EFFECT_ENVIRONMENT | PT_EFFECT_ORTHOGRAPHIC | PT_EFFECT_SPECULAR_COLOR)
 // Not a scene effect but an output: the path tracer writes the denoiser's
 // guide buffers (PathTracerSettings::writeGuides). Its code and the state it
 // keeps alive across every trace cost about a tenth of a Cornell box frame,
@@ -38,6 +40,7 @@
 // in shaders/effect_variants.cmake). Alpha masking is no variant: it adds an
 // any-hit shader to the triangles' hit group instead.
 #define PT_PATH_TRACE_EFFECT_BITS ((PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) & ~PT_EFFECT_ALPHA_MASK)
+// Whitted shades Phong materials, which have no dielectric F0 colour.
 #define PT_WHITTED_EFFECT_BITS                                                                \
   (PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | PT_EFFECT_TEXTURES | PT_EFFECT_ENVIRONMENT | \
    PT_EFFECT_ORTHOGRAPHIC)

@@ -36,6 +36,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.anisotropyStrength = d.anisotropyStrength;
   m.specular = d.specular;
   m.specularTint = d.specularTint;
+  m.specularColor = d.specularColor;
   m.sheen = d.sheen;
   m.sheenTint = d.sheenTint;
   m.clearcoat = d.clearcoat;
@@ -52,6 +53,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
     m.roughness = p.reflectivity > 0.0 ? 0.0 : sqrt(sqrt(2.0 / (p.exponent + 2.0)));
     m.specTrans = p.transparency;
     m.specular = 0.5 * p.ks;
+    m.specularColor = splat3(1.0);
     m.lambertDiffuse = true;
   }
   // A variant without an effect is only used for scenes whose materials all
@@ -71,6 +73,10 @@ DisneyMaterial unpackDisney(MaterialData d) {
 #endif
 #if !PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   m.anisotropyStrength = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
+  m.specularTint = 0.0;
+  m.specularColor = splat3(1.0);
 #endif
   return m;
 }

@@ -247,6 +247,10 @@ struct MaterialData {
   float2 anisotropyDirection;  // (cos, sin) of the rotation from the tangent towards the bitangent
   uint anisotropyTexture;  // rg: direction in tangent space, rotated further; b: scales strength
   uint unused6;
+  // Multiplies the dielectric F0 per channel before its clamp to 1 (glTF
+  // KHR_materials_specular's colour times F0(ior) / 0.08; 1 for Disney).
+  float3 specularColor;
+  uint unused7;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -376,12 +380,13 @@ static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 
               offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
 static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
               offsetof(InstanceData, vertexAttributes) == 112);
-static_assert(sizeof(MaterialData) == 192 && offsetof(MaterialData, emission) == 16 &&
+static_assert(sizeof(MaterialData) == 208 && offsetof(MaterialData, emission) == 16 &&
               offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
               offsetof(MaterialData, baseColorTexture) == 112 &&
               offsetof(MaterialData, normalScale) == 144 &&
               offsetof(MaterialData, absorption) == 160 &&
-              offsetof(MaterialData, anisotropyDirection) == 176);
+              offsetof(MaterialData, anisotropyDirection) == 176 &&
+              offsetof(MaterialData, specularColor) == 192);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

@@ -22,8 +22,8 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // (docs/materials.md): clearcoat by red; the coat's roughness r by green,
 // where clearcoatGloss g stands for r^2 = lerp(0.1, 0.001, g); specTrans by
 // the transmission's red; sheen (the sheen colour's largest channel) by the
-// texture's largest channel; specular (F0 / 0.08) by the specular texture's
-// alpha and the specular colour's largest channel.
+// texture's largest channel; specular (glTF's specularFactor) by the specular
+// texture's alpha, specularColor per channel by the specular colour texture.
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
@@ -35,7 +35,7 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
     d.sheen *= maxComponent(sampleTextureRef(d.sheenColorTexture, uv).xyz);
   if (d.specularTexture != PT_NO_TEXTURE) d.specular *= sampleTextureRef(d.specularTexture, uv).w;
   if (d.specularColorTexture != PT_NO_TEXTURE)
-    d.specular *= maxComponent(sampleTextureRef(d.specularColorTexture, uv).xyz);
+    d.specularColor *= sampleTextureRef(d.specularColorTexture, uv).xyz;
   if (d.anisotropyTexture != PT_NO_TEXTURE)
     d.anisotropyStrength = saturate(d.anisotropyStrength * sampleTextureRef(d.anisotropyTexture, uv).z);
 }

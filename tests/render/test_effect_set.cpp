@@ -75,6 +75,25 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   m.metallic = 1.0f;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR));
+  // A coloured dielectric F0 (glTF's specular colour, its texture, Disney's
+  // specularTint) or a grey one above 0.08; not on a metal (no dielectric
+  // layer) or without a specular layer.
+  const uint32_t colouredF0 = PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_SPECULAR_COLOR;
+  m = disney();
+  m.specular = 1.0f;
+  m.specularColor = {2.0f, 1.0f, 1.0f};
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
+  m.specularColor = glm::vec3(1.5f);
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
+  m.metallic = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR));
+  m = disney();
+  m.specular = 0.5f;
+  m.specularTint = 0.3f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
+  m.specular = 0.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
   m = disney();
   m.specTrans = 1.0f;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
@@ -161,7 +180,7 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) ==
           "path_trace.rgen");
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e1663.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e3711.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) == "path_trace.e1.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS | PT_OUTPUT_GUIDES) ==
           "path_trace.e257.rgen");
@@ -171,7 +190,7 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // Each effect (or the guides) removed makes the shader smaller.
   const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit <= PT_EFFECT_ORTHOGRAPHIC; bit <<= 1) {
+  for (uint32_t bit = 1; bit <= PT_EFFECT_SPECULAR_COLOR; bit <<= 1) {
     if ((PT_PATH_TRACE_EFFECT_BITS & bit) == 0) continue;  // alpha masking: no variant
     const auto without = shaders::shaderDesc(render::effectVariant("path_trace.rgen", all & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
@@ -220,6 +239,11 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   everything.specTrans = 0.5f;
   everything.clearcoat = 0.5f;
   everything.sheen = 0.5f;
+  auto tinted = disney();
+  tinted.baseColor = {0.8f, 0.3f, 0.1f};
+  tinted.specular = 1.0f;
+  tinted.specularColor = {12.5f, 3.0f, 0.2f};
+  tinted.roughness = 0.3f;
   auto brushed = disney();
   brushed.metallic = 1.0f;
   brushed.roughness = 0.2f;
@@ -282,6 +306,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
        render::Integrator::Path},
       {"rough glass sphere", cornellWithSphere(glass), render::Integrator::Path},
       {"every lobe, point light", cornellWithSphere(everything, true), render::Integrator::Path},
+      {"coloured dielectric F0 up to 1", cornellWithSphere(tinted), render::Integrator::Path},
       {"glTF anisotropy (surface detail)", brushedScene, render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},

@@ -348,7 +348,9 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     attach = [](scene::Material& m) { m.sheenColorTexture = 0; };
     plain.sheen *= srgbToLinear(188.0f / 255.0f);
   }
-  SECTION("specular from the specular texture's alpha and the specular colour's largest channel") {
+  SECTION(
+      "specular from the specular texture's alpha, specularColor per channel from the colour "
+      "texture") {
     plain.specular = 1.0f;
     plain.metallic = 0.0f;
     untextured = plain;
@@ -357,7 +359,9 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
       m.specularTexture = 0;
       m.specularColorTexture = 1;
     };
-    plain.specular *= (90.0f / 255.0f) * srgbToLinear(140.0f / 255.0f);
+    plain.specular *= 90.0f / 255.0f;
+    plain.specularColor *= glm::vec3(srgbToLinear(30.0f / 255.0f), srgbToLinear(140.0f / 255.0f),
+                                     srgbToLinear(60.0f / 255.0f));
   }
   // glTF anisotropy on a smooth metal, whose stretched highlight shows both
   // the strength and the direction. The texture's direction is 8-bit: red

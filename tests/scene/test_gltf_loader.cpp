@@ -40,6 +40,12 @@ void requireNear(glm::vec3 a, glm::vec3 b, float eps = 1e-5f) {
   REQUIRE(glm::length(a - b) <= eps);
 }
 
+// The dielectric F0 that a material's parameters stand for (docs/materials.md,
+// untinted): specular x min(0.08 x specularColor, 1) per channel.
+glm::vec3 dielectricF0(const scene::Material& m) {
+  return m.specular * glm::min(0.08f * m.specularColor, glm::vec3(1.0f));
+}
+
 const scene::Material& materialNamed(const scene::Scene& s, const std::string& name) {
   for (const auto& m : s.materials)
     if (m.name == name) return m;
@@ -323,19 +329,20 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   REQUIRE(base.baseColor == glm::vec3(0.5f, 0.25f, 1.0f));
   REQUIRE(base.metallic == Approx(0.3f));
   REQUIRE(base.roughness == Approx(0.7f));
-  // ior 1.5: F0 = (0.5 / 2.5)^2 = 0.04 = 0.08 * specular.
-  REQUIRE(base.specular == Approx(0.5f));
+  // ior 1.5: F0 = (0.5 / 2.5)^2 = 0.04.
+  for (int c = 0; c < 3; ++c) REQUIRE(dielectricF0(base)[c] == Approx(0.04f));
+  // A grey F0 up to 0.08 is `specular` alone: no coloured-F0 code for it.
+  REQUIRE(base.specularColor == glm::vec3(1.0f));
   REQUIRE(base.specTrans == 0.0f);
 
   // emissiveFactor (1, 0.5, 0.25) x emissiveStrength 4.
   REQUIRE(materialNamed(s, "emissive").emission == glm::vec3(4.0f, 2.0f, 1.0f));
 
-  // transmission 0.9, ior 1.33: F0 = (0.33 / 2.33)^2 = 0.0200593, specular = F0 / 0.08;
-  // no volume: thin-walled.
+  // transmission 0.9, ior 1.33: F0 = (0.33 / 2.33)^2 = 0.0200593; no volume: thin-walled.
   const auto& glass = materialNamed(s, "glass");
   REQUIRE(glass.specTrans == Approx(0.9f));
   REQUIRE(glass.ior == Approx(1.33f));
-  REQUIRE(glass.specular == Approx(0.0200593 / 0.08).epsilon(1e-4));
+  REQUIRE(dielectricF0(glass).x == Approx(0.0200593).epsilon(1e-4));
   REQUIRE(glass.thin);
 
   // A volume with thickness > 0 refracts (not thin) and absorbs as its
@@ -353,8 +360,12 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   REQUIRE(coat.clearcoat == Approx(0.8f));
   REQUIRE(coat.clearcoatGloss == Approx(0.06 / 0.099).epsilon(1e-5));
 
-  // F0 = 0.04 x max(specularColor) 0.8 x specularFactor 0.5 = 0.016 -> specular 0.2.
-  REQUIRE(materialNamed(s, "specular").specular == Approx(0.2f));
+  // KHR_materials_specular: F0 = min(F0(ior) x specularColorFactor, 1) x specularFactor,
+  // per channel; ior 2: F0(ior) = 1/9, colour (10, 1, 0.2), factor 0.5.
+  const glm::vec3 specularF0 = dielectricF0(materialNamed(s, "specular"));
+  CHECK(specularF0.x == Approx(0.5f));  // 10/9 clamped to 1
+  CHECK(specularF0.y == Approx(0.5f / 9.0f));
+  CHECK(specularF0.z == Approx(0.1f / 9.0f));
 
   // Sheen strength is the colour's largest channel, untinted.
   const auto& sheen = materialNamed(s, "sheen");
@@ -481,6 +492,7 @@ TEST_CASE("bad glTF input gives one clear error naming the file and the part", "
       {"invalid_nan.gltf", "not a finite number"},
       {"invalid_accessor_index.gltf", "accessor 9"},
       {"invalid_orthographic_height.gltf", "ymag 1e-40"},
+      {"invalid_specular_color.gltf", "specularColorFactor must be finite and non-negative"},
       {"no_such_file.gltf", "no such file"},
   };
   for (const auto& c : cases) {

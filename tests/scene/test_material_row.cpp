@@ -62,6 +62,9 @@ TEST_CASE("material-test: --vary and --set change the row", "[scene]") {
   scene::changeMaterialRow(s, "", "anisotropyStrength=0.7,anisotropyRotation=1.25");
   REQUIRE(sphereMaterial(s, 2).anisotropyStrength == 0.7f);
   REQUIRE(sphereMaterial(s, 2).anisotropyRotation == 1.25f);
+  // The dielectric F0's colour, unbounded above (F0 clamps at 1).
+  scene::changeMaterialRow(s, "", "specularColor=12.5,3,0.2");
+  REQUIRE(sphereMaterial(s, 4).specularColor == glm::vec3(12.5f, 3.0f, 0.2f));
 }
 
 TEST_CASE("material-test: bad --vary and --set are clear errors", "[scene]") {
@@ -73,6 +76,8 @@ TEST_CASE("material-test: bad --vary and --set are clear errors", "[scene]") {
   REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "metallic=abc"), ContainsSubstring("'abc'"));
   REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "baseColor=1,2"),
                       ContainsSubstring("needs 3 numbers"));
+  REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "specularColor=1,2"),
+                      ContainsSubstring("--set specularColor: needs 3 numbers"));
   REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "metallic=1,2"),
                       ContainsSubstring("needs 1 number"));
   REQUIRE_THROWS_WITH(scene::changeMaterialRow(s, "", "0.5"),

@@ -1,9 +1,10 @@
 // The Disney BSDF of the shading core, run where it ships (compute harness on
 // the test device): chi-square goodness of fit of sample() against pdf(),
 // energy, reciprocity, the perfectly specular limits, and a NaN/negative sweep.
-#include <boost/math/special_functions/gamma.hpp>
-#include <catch2/catch_test_macros.hpp>
 #include <algorithm>
+#include <boost/math/special_functions/gamma.hpp>
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -141,6 +142,13 @@ std::vector<Case> chiSquareCases() {
     m.roughness = std::sqrt(0.05f);
     m.anisotropyStrength = 0.7f;
     cases.push_back({"glass, glTF anisotropy 0.7" + at.str(), m, incident(c, false)});
+    // A coloured dielectric F0 of (1, 0.24, 0.016): glTF's specular colour,
+    // which picks the lobe by the Fresnel's luminance.
+    m = base();
+    m.specular = 1.0f;
+    m.specularColor = glm::vec3(12.5f, 3.0f, 0.2f);
+    m.roughness = std::sqrt(0.3f);
+    cases.push_back({"coloured F0 up to 1" + at.str(), m, incident(c, false)});
   }
   return cases;
 }
@@ -312,6 +320,30 @@ TEST_CASE("Disney BSDF: sample() matches pdf() (chi-square)", "[shaders][bsdf][g
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+// Mean and standard error of each channel of the sample weights: the
+// directional albedo for wo (radiance scaling by 1/eta^2 on refraction is not
+// energy, so it is undone).
+struct Albedo {
+  glm::dvec3 mean, sigma;
+};
+Albedo directionalAlbedo(BsdfHarness& harness, const scene::Material& m, glm::vec3 wo,
+                         uint32_t count, uint32_t seed) {
+  const double eta = wo.z > 0 ? m.ior : 1.0 / m.ior;
+  glm::dvec3 sum(0.0), sumSq(0.0);
+  const auto samples = harness.sample(m, wo, count, seed);
+  for (const auto& s : samples) {
+    glm::dvec3 w(s.weight);
+    if (!m.thin && s.lobe != 4u && s.wi.z * wo.z < 0) w *= eta * eta;
+    sum += w;
+    sumSq += w * w;
+  }
+  const double n = double(samples.size());
+  Albedo a;
+  a.mean = sum / n;
+  a.sigma = glm::sqrt(glm::max(glm::dvec3(0.0), sumSq / n - a.mean * a.mean) / n);
+  return a;
+}
+
 TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();
   BsdfHarness harness(*device);
@@ -319,21 +351,37 @@ TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gp
   for (const auto& c : chiSquareCases()) {
     auto m = c.material;
     m.baseColor = glm::vec3(1.0f);  // the most energy any parameter set can reflect
-    const auto samples = harness.sample(m, c.wo, 1u << 18, seed++);
-    const double eta = c.wo.z > 0 ? m.ior : 1.0 / m.ior;
-    double sum = 0, sumSq = 0;
-    for (const auto& s : samples) {
-      double w = s.weight.x;
-      // Radiance scaling by 1/eta^2 on refraction is not energy; undo it.
-      if (!m.thin && s.lobe != 4u && s.wi.z * c.wo.z < 0) w *= eta * eta;
-      sum += w;
-      sumSq += w * w;
+    const Albedo a = directionalAlbedo(harness, m, c.wo, 1u << 18, seed++);
+    for (int k = 0; k < 3; ++k) {
+      INFO(c.name << ": albedo of channel " << k << " " << a.mean[k] << " +- " << a.sigma[k]);
+      CHECK(a.mean[k] <= 1.0 + 3.0 * a.sigma[k]);
     }
-    const double n = double(samples.size());
-    const double mean = sum / n;
-    const double sigma = std::sqrt(std::max(0.0, sumSq / n - mean * mean) / n);
-    INFO(c.name << ": albedo " << mean << " +- " << sigma);
-    CHECK(mean <= 1.0 + 3.0 * sigma);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE("Disney BSDF: a dielectric F0 of 1 in one channel mirrors all of it; its base gets none",
+          "[shaders][bsdf][gpu][spirv-only]") {
+  // F0 = specular x min(0.08 x specularColor, 1) = (1, 0, 0): red meets a
+  // Fresnel of 1 at every angle (F90 = 1), so the smooth layer reflects every
+  // red photon and the white base below it receives none. Green and blue have
+  // the same F0 of 0, so they reflect identically, mostly through the base.
+  auto device = test::makeTestDevice();
+  BsdfHarness harness(*device);
+  auto m = base();
+  m.baseColor = glm::vec3(1.0f);
+  m.specular = 1.0f;
+  m.specularColor = glm::vec3(12.5f, 0.0f, 0.0f);
+  m.roughness = 0.0f;
+  for (float cosTheta : {1.0f, 0.6f, 0.2f}) {
+    const glm::vec3 wo = incident(cosTheta, false);
+    const Albedo a = directionalAlbedo(harness, m, wo, 1u << 18, 7);
+    INFO("cos " << cosTheta << ": albedo " << a.mean.x << " " << a.mean.y << " " << a.mean.z);
+    CHECK(std::abs(a.mean.x - 1.0) <= 3.0 * a.sigma.x + 1e-5);
+    // Green and blue: only the base, which the red mirror does not dim.
+    CHECK(a.mean.y == Catch::Approx(a.mean.z).epsilon(1e-6));
+    CHECK(a.mean.y > 0.5);
+    CHECK(a.mean.y <= 1.0 + 3.0 * a.sigma.y);
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

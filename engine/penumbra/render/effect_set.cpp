@@ -30,6 +30,10 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   if (m.model == scene::MaterialModel::Unlit) return effects | PT_EFFECT_TEXTURES;
   if (m.model == scene::MaterialModel::Phong) return effects;
   if (m.metallic > 0.0f || m.specular > 0.0f) effects |= PT_EFFECT_SPECULAR;
+  const bool greyF0 = m.specularColor == glm::vec3(1.0f) &&
+                      m.specularColorTexture == scene::Material::kNoTexture &&
+                      m.specularTint == 0.0f;
+  if (m.metallic < 1.0f && m.specular > 0.0f && !greyF0) effects |= PT_EFFECT_SPECULAR_COLOR;
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
   if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
   if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN;
@@ -93,11 +97,17 @@ uint32_t deriveEffects(const scene::Scene& scene, const std::optional<scene::Cam
 
 namespace {
 constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
-    {PT_EFFECT_AREA_LIGHTS, "area-lights"}, {PT_EFFECT_DELTA_LIGHTS, "delta-lights"},
-    {PT_EFFECT_SPECULAR, "specular"},       {PT_EFFECT_TRANSMISSION, "transmission"},
-    {PT_EFFECT_CLEARCOAT, "clearcoat"},     {PT_EFFECT_SHEEN, "sheen"},
-    {PT_EFFECT_TEXTURES, "textures"},       {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
-    {PT_EFFECT_ENVIRONMENT, "environment"}, {PT_EFFECT_ORTHOGRAPHIC, "orthographic"}};
+    {PT_EFFECT_AREA_LIGHTS, "area-lights"},
+    {PT_EFFECT_DELTA_LIGHTS, "delta-lights"},
+    {PT_EFFECT_SPECULAR, "specular"},
+    {PT_EFFECT_TRANSMISSION, "transmission"},
+    {PT_EFFECT_CLEARCOAT, "clearcoat"},
+    {PT_EFFECT_SHEEN, "sheen"},
+    {PT_EFFECT_TEXTURES, "textures"},
+    {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
+    {PT_EFFECT_ENVIRONMENT, "environment"},
+    {PT_EFFECT_ORTHOGRAPHIC, "orthographic"},
+    {PT_EFFECT_SPECULAR_COLOR, "specular-color"}};
 constexpr uint32_t namedEffects() {
   uint32_t bits = 0;
   for (const auto& [bit, name] : kEffectNames) bits |= bit;

@@ -179,6 +179,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.anisotropic = m.anisotropic;
   d.specular = m.specular;
   d.specularTint = m.specularTint;
+  d.specularColor = toFloat3(m.specularColor);
   d.sheen = m.sheen;
   d.sheenTint = m.sheenTint;
   d.clearcoat = m.clearcoat;

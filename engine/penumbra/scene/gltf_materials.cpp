@@ -119,10 +119,6 @@ float f0FromIor(float ior) {
   return r * r;
 }
 
-float specularFromF0(float f0) {
-  return std::clamp(f0 / 0.08f, 0.0f, 1.0f);
-}
-
 float clearcoatGlossFromRoughness(float roughness) {
   const float alpha = roughness * roughness;
   return std::clamp((0.1f - alpha) / (0.1f - 0.001f), 0.0f, 1.0f);
@@ -135,7 +131,7 @@ Material defaultMaterial() {
   m.baseColor = glm::vec3(1.0f);
   m.metallic = 1.0f;
   m.roughness = 1.0f;
-  m.specular = specularFromF0(f0FromIor(1.5f));
+  m.specular = f0FromIor(1.5f) / 0.08f;  // F0 0.04
   m.emissionIsLighting = false;
   return m;
 }
@@ -176,20 +172,32 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
       warnings.push_back(fmt::format("{}: ior {} clamped to {}", where, value, ior));
   }
   m.ior = ior;
-  float f0 = f0FromIor(ior);
+  // The dielectric F0 = min(F0(ior) * specularColorFactor, 1) * specularFactor
+  // (KHR_materials_specular), through the Disney F0 = specular * min(0.08 *
+  // specularColor, 1).
+  float factor = 1.0f;
+  glm::vec3 colorFactor(1.0f);
   if (const auto* e = extension(src, "KHR_materials_specular")) {
-    const float strength = clamp01(number(*e, "specularFactor", 1.0));
-    const glm::vec3 color =
-        glm::max(vec3(*e, "specularColorFactor", glm::vec3(1.0f)), glm::vec3(0.0f));
-    const float peak = std::max({color.x, color.y, color.z});
-    f0 = std::min(f0 * peak, 1.0f) * strength;
-    if (color.x != color.y || color.y != color.z)
-      warnings.push_back(
-          fmt::format("{}: specularColorFactor's hue is dropped (its largest "
-                      "channel scales the reflectance)",
-                      where));
+    factor = clamp01(number(*e, "specularFactor", 1.0));
+    colorFactor = vec3(*e, "specularColorFactor", glm::vec3(1.0f));
+    for (int i = 0; i < 3; ++i)
+      if (!(colorFactor[i] >= 0.0f) || !std::isfinite(colorFactor[i]))
+        throw Error(fmt::format(
+            "{}: KHR_materials_specular specularColorFactor must be finite and non-negative",
+            where));
   }
-  m.specular = specularFromF0(f0);
+  const glm::vec3 f0 = colorFactor * f0FromIor(ior);
+  // A grey F0 that `specular` alone reaches (<= 0.08) is written as `specular`
+  // with specularColor 1: a scene of such materials builds without the
+  // coloured F0's code (PT_EFFECT_SPECULAR_COLOR). A specular colour texture
+  // (<= 1) cannot push it past the clamp then, so both forms agree under it.
+  if (f0.x == f0.y && f0.y == f0.z && f0.x <= 1.0f && factor * f0.x <= 0.08f) {
+    m.specular = factor * f0.x / 0.08f;
+    m.specularColor = glm::vec3(1.0f);
+  } else {
+    m.specular = factor;
+    m.specularColor = f0 / 0.08f;
+  }
 
   if (const auto* e = extension(src, "KHR_materials_transmission"))
     m.specTrans = clamp01(number(*e, "transmissionFactor", 0.0));

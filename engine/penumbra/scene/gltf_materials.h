@@ -38,9 +38,6 @@ MaterialConversion convertMaterial(const tinygltf::Material& material, const std
 // metallic 1, roughness 1.
 Material defaultMaterial();
 
-// Disney `specular` for a dielectric Fresnel reflectance at normal incidence
-// f0 (Disney's F0 = 0.08 specular), clamped to the parameter's [0, 1].
-float specularFromF0(float f0);
 // Normal-incidence reflectance of a dielectric of index `ior` in air.
 float f0FromIor(float ior);
 // Disney clearcoatGloss whose GTR1 alpha, lerp(0.1, 0.001, gloss), equals

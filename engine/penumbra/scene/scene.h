@@ -73,6 +73,10 @@ struct Material {
   float anisotropic = 0.0f;
   float specular = 0.5f;
   float specularTint = 0.0f;
+  // Multiplies the dielectric F0 per channel before it is clamped to 1:
+  // F0 = specular * min(0.08 * lerp(1, tint, specularTint) * specularColor, 1).
+  // glTF's KHR_materials_specular colour lands here (times F0(ior) / 0.08).
+  glm::vec3 specularColor{1.0f};
   float sheen = 0.0f;
   float sheenTint = 0.5f;
   float clearcoat = 0.0f;
@@ -111,7 +115,7 @@ struct Material {
   // parameter its factor became: clearcoat by red, the coat's roughness by
   // green (clearcoatGloss follows), specTrans by the transmission's red,
   // sheen by the sheen colour's largest channel, specular by the specular
-  // texture's alpha and the specular colour's largest channel.
+  // texture's alpha, specularColor by the specular colour texture (rgb).
   uint32_t clearcoatTexture = kNoTexture;
   uint32_t clearcoatRoughnessTexture = kNoTexture;
   uint32_t transmissionTexture = kNoTexture;

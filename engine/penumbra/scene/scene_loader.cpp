@@ -58,6 +58,8 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
       readFloat(m, "anisotropyRotation", material.anisotropyRotation, where);
   material.specular = readFloat(m, "specular", material.specular, where);
   material.specularTint = readFloat(m, "specularTint", material.specularTint, where);
+  if (m.contains("specularColor"))
+    material.specularColor = readVec3(m.at("specularColor"), where + " specularColor");
   material.sheen = readFloat(m, "sheen", material.sheen, where);
   material.sheenTint = readFloat(m, "sheenTint", material.sheenTint, where);
   material.clearcoat = readFloat(m, "clearcoat", material.clearcoat, where);

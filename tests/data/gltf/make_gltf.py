@@ -314,7 +314,8 @@ def materials():
         {"name": "coat", "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.8,
                                                                     "clearcoatRoughnessFactor": 0.2}}},
         {"name": "specular", "extensions": {"KHR_materials_specular": {
-            "specularFactor": 0.5, "specularColorFactor": [0.8, 0.8, 0.8]}}},
+            "specularFactor": 0.5, "specularColorFactor": [10, 1, 0.2]},
+            "KHR_materials_ior": {"ior": 2}}},
         {"name": "sheen", "extensions": {"KHR_materials_sheen": {
             "sheenColorFactor": [0.2, 0.6, 0.4], "sheenRoughnessFactor": 0.5}}},
         {"name": "mask", "alphaMode": "MASK", "alphaCutoff": 0.5,
@@ -431,6 +432,13 @@ def invalid():
     b.add("nodes", {"camera": 0, "translation": [0, 0, 2]})
     b.doc["scenes"] = [{"nodes": [0, 1]}]
     b.write_gltf("invalid_orthographic_height.gltf")
+
+    b = triangle_file()
+    b.doc["materials"] = [{"name": "tinted", "extensions": {
+        "KHR_materials_specular": {"specularColorFactor": [1, -0.5, 1]}}}]
+    b.doc["extensionsUsed"] = ["KHR_materials_specular"]
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.write_gltf("invalid_specular_color.gltf")
 
 
 def quad(b, corners, normal):
