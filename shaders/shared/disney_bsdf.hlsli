@@ -12,7 +12,8 @@
 //   diffuse   (1-m)(1-t)   Burley diffuse with retro-reflection, blended towards a
 //                          Hanrahan-Krueger-like flat term by `subsurface`; or
 //                          Lambert for materials marked so (glTF, the Cornell box);
-//   sheen     (1-m)(1-t)   sheen * lerp(1, tint, sheenTint) * SchlickWeight(cos theta_d);
+//   sheen     (1-m)(1-t)   sheen * lerp(1, tint, sheenTint) * sheenColor
+//                          * SchlickWeight(cos theta_d);
 //   specular  m + (1-m)(1-t)  anisotropic GGX reflection; Fresnel Schlick from baseColor
 //                          (metal) or specular * min(0.08 * lerp(1, tint, specularTint)
 //                          * specularColor, 1) (dielectric; specularColor is glTF's
@@ -59,6 +60,7 @@ struct DisneyMaterial {
   float3 specularColor;  // multiplies the dielectric F0 per channel before its clamp to 1
   float sheen;
   float sheenTint;
+  float3 sheenColor;  // multiplies the sheen per channel, in [0, 1]
   float clearcoat;
   float clearcoatGloss;
   float specTrans;
@@ -233,7 +235,7 @@ float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
 }
 
 float3 sheenTerm(DisneyMaterial m, float cosThetaD) {
-  float3 tint = lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint);
+  float3 tint = lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint) * m.sheenColor;
   return m.sheen * tint * schlickWeight(cosThetaD);
 }
 

@@ -39,6 +39,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.specularColor = d.specularColor;
   m.sheen = d.sheen;
   m.sheenTint = d.sheenTint;
+  m.sheenColor = d.sheenColor;
   m.clearcoat = d.clearcoat;
   m.clearcoatGloss = d.clearcoatGloss;
   m.specTrans = d.specTrans;

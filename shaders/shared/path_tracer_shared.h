@@ -251,6 +251,8 @@ struct MaterialData {
   // KHR_materials_specular's colour times F0(ior) / 0.08; 1 for Disney).
   float3 specularColor;
   uint unused7;
+  float3 sheenColor;  // multiplies the sheen per channel (glTF's sheen colour's hue; 1 for Disney)
+  uint unused8;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -380,13 +382,14 @@ static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 
               offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
 static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
               offsetof(InstanceData, vertexAttributes) == 112);
-static_assert(sizeof(MaterialData) == 208 && offsetof(MaterialData, emission) == 16 &&
+static_assert(sizeof(MaterialData) == 224 && offsetof(MaterialData, emission) == 16 &&
               offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
               offsetof(MaterialData, baseColorTexture) == 112 &&
               offsetof(MaterialData, normalScale) == 144 &&
               offsetof(MaterialData, absorption) == 160 &&
               offsetof(MaterialData, anisotropyDirection) == 176 &&
-              offsetof(MaterialData, specularColor) == 192);
+              offsetof(MaterialData, specularColor) == 192 &&
+              offsetof(MaterialData, sheenColor) == 208);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

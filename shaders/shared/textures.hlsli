@@ -21,8 +21,8 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // The KHR_materials_* textures, as gltf_materials.cpp maps their factors
 // (docs/materials.md): clearcoat by red; the coat's roughness r by green,
 // where clearcoatGloss g stands for r^2 = lerp(0.1, 0.001, g); specTrans by
-// the transmission's red; sheen (the sheen colour's largest channel) by the
-// texture's largest channel; specular (glTF's specularFactor) by the specular
+// the transmission's red; sheenColor per channel by the sheen colour
+// texture; specular (glTF's specularFactor) by the specular
 // texture's alpha, specularColor per channel by the specular colour texture.
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
@@ -32,7 +32,7 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
   }
   if (d.transmissionTexture != PT_NO_TEXTURE) d.specTrans *= sampleTextureRef(d.transmissionTexture, uv).x;
   if (d.sheenColorTexture != PT_NO_TEXTURE)
-    d.sheen *= maxComponent(sampleTextureRef(d.sheenColorTexture, uv).xyz);
+    d.sheenColor *= sampleTextureRef(d.sheenColorTexture, uv).xyz;
   if (d.specularTexture != PT_NO_TEXTURE) d.specular *= sampleTextureRef(d.specularTexture, uv).w;
   if (d.specularColorTexture != PT_NO_TEXTURE)
     d.specularColor *= sampleTextureRef(d.specularColorTexture, uv).xyz;

@@ -329,7 +329,7 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     attach = [](scene::Material& m) { m.transmissionTexture = 0; };
     plain.specTrans *= 30.0f / 255.0f;
   }
-  SECTION("sheen from the sheen colour's largest channel (sRGB)") {
+  SECTION("sheenColor per channel from the sheen colour texture (sRGB)") {
     // Sheen is a grazing effect (Schlick weight of the half angle): the
     // camera and the light low over opposite edges of the quad.
     stage = [](scene::Scene& s) {
@@ -346,7 +346,8 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     untextured = plain;
     textures = {uniform({20, 188, 40, 255}, true)};
     attach = [](scene::Material& m) { m.sheenColorTexture = 0; };
-    plain.sheen *= srgbToLinear(188.0f / 255.0f);
+    plain.sheenColor *= glm::vec3(srgbToLinear(20.0f / 255.0f), srgbToLinear(188.0f / 255.0f),
+                                  srgbToLinear(40.0f / 255.0f));
   }
   SECTION(
       "specular from the specular texture's alpha, specularColor per channel from the colour "

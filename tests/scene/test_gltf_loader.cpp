@@ -369,8 +369,12 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
 
   // Sheen strength is the colour's largest channel, untinted.
   const auto& sheen = materialNamed(s, "sheen");
+  // sheenColorFactor (0.2, 0.6, 0.4): its largest channel is the strength,
+  // the colour over it the hue, so that sheen x sheenColor is the factor.
   REQUIRE(sheen.sheen == Approx(0.6f));
   REQUIRE(sheen.sheenTint == 0.0f);
+  for (int c = 0; c < 3; ++c)
+    REQUIRE(sheen.sheen * sheen.sheenColor[c] == Approx(glm::vec3(0.2f, 0.6f, 0.4f)[c]));
 
   // Unset factors take glTF's defaults: white, metallic 1, roughness 1.
   const auto& defaults = materialNamed(s, "defaults");

@@ -254,6 +254,15 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
   REQUIRE_THROWS_WITH(
       scene::parseScene(withGlass(R"({"metallic":1,"anisotropyStrength":1.5})"), "t.json"),
       ContainsSubstring("a parameter is outside [0, 1]"));
+  // The dielectric F0's colour (unbounded above) and the sheen's (in [0, 1]).
+  const auto coloured = scene::parseScene(
+      withGlass(R"({"specularColor":[12.5,3,0.2],"sheen":1,"sheenColor":[1,0.5,0]})"), "t.json");
+  CHECK(coloured.materials[0].specularColor == glm::vec3(12.5f, 3.0f, 0.2f));
+  CHECK(coloured.materials[0].sheenColor == glm::vec3(1.0f, 0.5f, 0.0f));
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"specularColor":[1,-1,1]})"), "t.json"),
+                      ContainsSubstring("specularColor must be finite and non-negative"));
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"sheenColor":[1,2,1]})"), "t.json"),
+                      ContainsSubstring("sheenColor must lie in [0, 1]"));
 }
 
 // Bounded inputs (docs/security.md, scene/input_limits.h): every refusal is

@@ -386,6 +386,33 @@ TEST_CASE("Disney BSDF: a dielectric F0 of 1 in one channel mirrors all of it; i
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+TEST_CASE("Disney BSDF: the sheen is sheen x sheenColor x (1 - cos theta_d)^5, channel by channel",
+          "[shaders][bsdf][gpu][spirv-only]") {
+  // A black base without a specular layer or coat: the sheen alone, with
+  // nothing above it to dim it (F0 = 0 fades F90 to 0).
+  auto device = test::makeTestDevice();
+  BsdfHarness harness(*device);
+  auto m = base();
+  m.baseColor = glm::vec3(0.0f);
+  m.sheen = 0.8f;
+  m.sheenTint = 0.0f;
+  m.sheenColor = {1.0f, 0.5f, 0.0f};
+  const glm::vec3 wo = incident(0.9f, false);
+  const std::vector<glm::vec3> wi = {incident(0.2f, false),
+                                     glm::normalize(glm::vec3(-0.9f, 0.1f, 0.3f)),
+                                     glm::vec3(0.0f, 0.0f, 1.0f)};
+  const auto e = harness.eval(m, wo, wi);
+  for (size_t k = 0; k < wi.size(); ++k) {
+    const glm::dvec3 h = glm::normalize(glm::dvec3(wo) + glm::dvec3(wi[k]));
+    const double weight = std::pow(1.0 - glm::dot(glm::dvec3(wi[k]), h), 5.0);
+    INFO("direction " << k << ": f " << e[k].f.x << " " << e[k].f.y << " " << e[k].f.z);
+    REQUIRE(e[k].f.x == Catch::Approx(0.8 * 1.0 * weight).epsilon(1e-4));
+    REQUIRE(e[k].f.y == Catch::Approx(0.8 * 0.5 * weight).epsilon(1e-4));
+    REQUIRE(e[k].f.z == 0.0f);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 TEST_CASE("Disney BSDF: a smooth dielectric reflects and transmits exactly all light",
           "[shaders][bsdf][gpu][spirv-only]") {
   auto device = test::makeTestDevice();

@@ -182,6 +182,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.specularColor = toFloat3(m.specularColor);
   d.sheen = m.sheen;
   d.sheenTint = m.sheenTint;
+  d.sheenColor = toFloat3(m.sheenColor);
   d.clearcoat = m.clearcoat;
   d.clearcoatGloss = m.clearcoatGloss;
   d.specTrans = m.specTrans;

@@ -228,6 +228,7 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     const glm::vec3 color = glm::clamp(vec3(*e, "sheenColorFactor", glm::vec3(0.0f)), 0.0f, 1.0f);
     m.sheen = std::max({color.x, color.y, color.z});
     m.sheenTint = 0.0f;
+    if (m.sheen > 0.0f) m.sheenColor = color / m.sheen;
   }
 
   if (const auto* e = extension(src, "KHR_materials_anisotropy")) {

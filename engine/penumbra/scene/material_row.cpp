@@ -76,7 +76,7 @@ const std::vector<std::string>& variableDisneyParameters() {
 void setMaterialParameter(Material& m, std::string_view name, const std::vector<float>& values) {
   for (auto [colorName, color] :
        {std::pair{"baseColor", &m.baseColor}, std::pair{"emission", &m.emission},
-        std::pair{"specularColor", &m.specularColor}})
+        std::pair{"specularColor", &m.specularColor}, std::pair{"sheenColor", &m.sheenColor}})
     if (name == colorName) {
       if (values.size() != 3) throw Error(fmt::format("--set {}: needs 3 numbers (r,g,b)", name));
       *color = {values[0], values[1], values[2]};
@@ -84,10 +84,10 @@ void setMaterialParameter(Material& m, std::string_view name, const std::vector<
     }
   float* scalar = scalarParameter(m, name);
   if (!scalar)
-    throw Error(fmt::format(
-        "--set: unknown material parameter '{}' (baseColor, emission, specularColor, ior, "
-        "anisotropyRotation, anisotropyStrength, {})",
-        name, joined(variableDisneyParameters())));
+    throw Error(
+        fmt::format("--set: unknown material parameter '{}' (baseColor, emission, specularColor, "
+                    "sheenColor, ior, anisotropyRotation, anisotropyStrength, {})",
+                    name, joined(variableDisneyParameters())));
   if (values.size() != 1) throw Error(fmt::format("--set {}: needs 1 number", name));
   *scalar = values[0];
 }

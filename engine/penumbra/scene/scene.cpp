@@ -201,6 +201,9 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
                   m.reflectivity, m.transparency, m.anisotropyStrength})
     if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
   for (int i = 0; i < 3; ++i)
+    if (!unit(m.sheenColor[i]))
+      fail(fmt::format("material '{}': sheenColor must lie in [0, 1]", m.name));
+  for (int i = 0; i < 3; ++i)
     if (!(m.specularColor[i] >= 0.0f) || !std::isfinite(m.specularColor[i]))
       fail(fmt::format("material '{}': specularColor must be finite and non-negative", m.name));
   if (!std::isfinite(m.anisotropyRotation))

@@ -79,6 +79,9 @@ struct Material {
   glm::vec3 specularColor{1.0f};
   float sheen = 0.0f;
   float sheenTint = 0.5f;
+  // Multiplies the sheen per channel, in [0, 1] (glTF's sheen colour is
+  // sheen = its largest channel, sheenColor = colour / sheen).
+  glm::vec3 sheenColor{1.0f};
   float clearcoat = 0.0f;
   float clearcoatGloss = 1.0f;
   float specTrans = 0.0f;
@@ -114,7 +117,7 @@ struct Material {
   // The KHR_materials_* textures (docs/materials.md), each multiplying the
   // parameter its factor became: clearcoat by red, the coat's roughness by
   // green (clearcoatGloss follows), specTrans by the transmission's red,
-  // sheen by the sheen colour's largest channel, specular by the specular
+  // sheenColor by the sheen colour texture (rgb), specular by the specular
   // texture's alpha, specularColor by the specular colour texture (rgb).
   uint32_t clearcoatTexture = kNoTexture;
   uint32_t clearcoatRoughnessTexture = kNoTexture;

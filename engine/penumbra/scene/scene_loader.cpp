@@ -62,6 +62,8 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
     material.specularColor = readVec3(m.at("specularColor"), where + " specularColor");
   material.sheen = readFloat(m, "sheen", material.sheen, where);
   material.sheenTint = readFloat(m, "sheenTint", material.sheenTint, where);
+  if (m.contains("sheenColor"))
+    material.sheenColor = readVec3(m.at("sheenColor"), where + " sheenColor");
   material.clearcoat = readFloat(m, "clearcoat", material.clearcoat, where);
   material.clearcoatGloss = readFloat(m, "clearcoatGloss", material.clearcoatGloss, where);
   material.specTrans = readFloat(m, "specTrans", material.specTrans, where);
