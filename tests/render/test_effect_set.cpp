@@ -76,8 +76,8 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR));
   // A coloured dielectric F0 (glTF's specular colour, its texture, Disney's
-  // specularTint) or a grey one above 0.08; not on a metal (no dielectric
-  // layer) or without a specular layer.
+  // specularTint) or a grey one above 0.08, also on a metal (a metallic
+  // texture can leave parts of it dielectric); not without a specular layer.
   const uint32_t colouredF0 = PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_SPECULAR_COLOR;
   m = disney();
   m.specular = 1.0f;
@@ -86,8 +86,7 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   m.specularColor = glm::vec3(1.5f);
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
   m.metallic = 1.0f;
-  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
-          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR));
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
   m = disney();
   m.specular = 0.5f;
   m.specularTint = 0.3f;

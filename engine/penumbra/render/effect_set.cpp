@@ -33,7 +33,8 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   const bool greyF0 = m.specularColor == glm::vec3(1.0f) &&
                       m.specularColorTexture == scene::Material::kNoTexture &&
                       m.specularTint == 0.0f;
-  if (m.metallic < 1.0f && m.specular > 0.0f && !greyF0) effects |= PT_EFFECT_SPECULAR_COLOR;
+  // Even a metal: a metallic texture can leave parts of it dielectric.
+  if (m.specular > 0.0f && !greyF0) effects |= PT_EFFECT_SPECULAR_COLOR;
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
   if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
   if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN;
