@@ -23,7 +23,10 @@
 //                          with the exact dielectric Fresnel of `ior`; the thin option
 //                          transmits without bending;
 //   clearcoat 0.25 c       GTR1 (alpha lerp(0.1, 0.001, clearcoatGloss)), F0 = 0.04,
-//                          separable Smith GGX masking with alpha 0.25.
+//                          separable Smith GGX masking with alpha 0.25; or, for
+//                          the Lambert model (glTF's), KHR_materials_clearcoat's
+//                          coat: weight c, GGX of alpha (1 - clearcoatGloss)^2 with
+//                          height-correlated masking, F0 = 0.04, a mirror when smooth.
 // Energy: Burley's layers are additive and a white material can reflect more
 // than it receives; here the diffuse base is renormalised (Lagarde & de
 // Rousiers 2014) and attenuated by the specular layer's Fresnel on the way in
@@ -68,6 +71,7 @@ struct DisneyMaterial {
   float subsurface;
   bool thin;
   bool lambertDiffuse;
+  bool ggxCoat;  // glTF's coat (full strength, GGX) instead of Disney's
 };
 
 struct BsdfEval {
@@ -97,9 +101,15 @@ struct LobeWeights {
 
 float clearcoatFresnelWeight(float cosTheta) { return 0.04 + 0.96 * pow(saturate(1.0 - cosTheta), 5.0); }
 
+// Burley scaled his coat to a quarter so that `clearcoat` 1 looks right
+// over his additive layers; glTF's coat reflects at full strength.
+float coatWeight(DisneyMaterial m) {
+  return m.ggxCoat ? m.clearcoat : 0.25 * m.clearcoat;
+}
+
 // Everything below the clearcoat passes it twice.
 float coatAttenuation(DisneyMaterial m, float cosO, float cosI) {
-  float c = 0.25 * m.clearcoat;
+  float c = coatWeight(m);
   return (1.0 - c * clearcoatFresnelWeight(cosO)) * (1.0 - c * clearcoatFresnelWeight(cosI));
 }
 
@@ -177,7 +187,7 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   w.diffuse = (1.0 - m.metallic) * (1.0 - m.specTrans);
   w.specularLayer = m.metallic + w.diffuse;
   w.glass = (1.0 - m.metallic) * m.specTrans;
-  w.clearcoat = 0.25 * m.clearcoat;
+  w.clearcoat = coatWeight(m);
   // Sampling estimates: each lobe's rough share of the reflected energy.
   float eDiffuse = w.diffuse * (luminance(m.baseColor) + m.sheen * 0.25);
   float eSpecular = luminance(specularFresnel(m, cosThetaO));
@@ -240,6 +250,15 @@ float3 sheenTerm(DisneyMaterial m, float cosThetaD) {
 }
 
 float clearcoatAlpha(DisneyMaterial m) { return lerp(0.1, 0.001, m.clearcoatGloss); }
+
+// glTF's coat: clearcoatGloss g holds 1 - clearcoatRoughness.
+Ggx ggxCoatDistribution(DisneyMaterial m) {
+  float r = 1.0 - m.clearcoatGloss;
+  Ggx g;
+  g.alphaX = max(kMinAlpha, r * r);
+  g.alphaY = g.alphaX;
+  return g;
+}
 
 float separableSmithGgx(float cosTheta, float alpha) {
   float a2 = alpha * alpha;
@@ -321,12 +340,21 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
     if (w.clearcoat > 0.0) {
-      float alpha = clearcoatAlpha(m);
-      float d = gtr1D(alpha, wh.z);
-      float fc = 0.04 + 0.96 * schlickWeight(cosThetaD);
-      float gc = separableSmithGgx(wo.z, 0.25) * separableSmithGgx(wi.z, 0.25);
-      r.f += splat3(w.clearcoat * d * fc * gc / (4.0 * wo.z * wi.z));
-      r.pdf += w.pClearcoat * d * wh.z * jacobian;
+      float fc = clearcoatFresnelWeight(cosThetaD);
+      if (m.ggxCoat) {
+        Ggx gc = ggxCoatDistribution(m);
+        if (!isSpecularGgx(gc)) {
+          float dg = ggxD(gc, wh) * ggxG2(gc, wo, wi) / (4.0 * wo.z * wi.z);
+          r.f += splat3(w.clearcoat * fc * dg);
+          r.pdf += w.pClearcoat * ggxVisibleNormalPdf(gc, wo, wh) * jacobian;
+        }
+      } else {
+        float alpha = clearcoatAlpha(m);
+        float d = gtr1D(alpha, wh.z);
+        float gc = separableSmithGgx(wo.z, 0.25) * separableSmithGgx(wi.z, 0.25);
+        r.f += splat3(w.clearcoat * d * fc * gc / (4.0 * wo.z * wi.z));
+        r.pdf += w.pClearcoat * d * wh.z * jacobian;
+      }
     }
 #endif
   }
@@ -452,10 +480,21 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
 #if PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
   else if (w.pClearcoat > 0.0) {
     s.lobe = BSDF_LOBE_CLEARCOAT;
-    float cosThetaM = gtr1SampleCosTheta(clearcoatAlpha(m), u1);
-    float sinThetaM = sqrt(max(0.0, 1.0 - cosThetaM * cosThetaM));
-    float phi = 2.0 * kPi * u2;
-    wi = reflectDirection(wo, float3(sinThetaM * cos(phi), sinThetaM * sin(phi), cosThetaM));
+    if (m.ggxCoat) {
+      Ggx gc = ggxCoatDistribution(m);
+      if (isSpecularGgx(gc)) {
+        s.wi = float3(-wo.x, -wo.y, wo.z * side);
+        s.weight = splat3(w.clearcoat * clearcoatFresnelWeight(wo.z) / w.pClearcoat);
+        s.isDelta = true;
+        return s;
+      }
+      wi = reflectDirection(wo, ggxSampleVisibleNormal(gc, wo, u1, u2));
+    } else {
+      float cosThetaM = gtr1SampleCosTheta(clearcoatAlpha(m), u1);
+      float sinThetaM = sqrt(max(0.0, 1.0 - cosThetaM * cosThetaM));
+      float phi = 2.0 * kPi * u2;
+      wi = reflectDirection(wo, float3(sinThetaM * cos(phi), sinThetaM * sin(phi), cosThetaM));
+    }
     if (wi.z <= 0.0) return disneyNoSample();
   }
 #endif
@@ -489,7 +528,9 @@ bool disneyHasDeltaLobe(DisneyMaterial m) {
   LobeWeights w = disneyLobeWeights(m, 1.0);
   Ggx g = disneyGgx(m);
   Ggx gg = glassGgx(m, g);
-  return (w.pSpecular > 0.0 && isSpecularGgx(g)) || (w.pGlass > 0.0 && (isSpecularGgx(gg) || m.ior == 1.0));
+  bool coatMirror = w.pClearcoat > 0.0 && m.ggxCoat && isSpecularGgx(ggxCoatDistribution(m));
+  return (w.pSpecular > 0.0 && isSpecularGgx(g)) ||
+         (w.pGlass > 0.0 && (isSpecularGgx(gg) || m.ior == 1.0)) || coatMirror;
 }
 
 #endif

@@ -47,6 +47,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.subsurface = d.subsurface;
   m.thin = (d.flags & MATERIAL_FLAG_THIN) != 0u;
   m.lambertDiffuse = (d.flags & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
+  m.ggxCoat = (d.flags & MATERIAL_FLAG_GGX_COAT) != 0u;
   if (d.model == MATERIAL_MODEL_PHONG) {
     PhongMaterial p = unpackPhong(d);
     m.metallic = p.reflectivity;

@@ -121,6 +121,9 @@ namespace penumbra::gpu {
 // MaterialData.flags bits
 #define MATERIAL_FLAG_THIN 1u
 #define MATERIAL_FLAG_LAMBERT_DIFFUSE 2u
+// The coat is glTF's KHR_materials_clearcoat (full strength, GGX) instead of
+// Disney's; set with the Lambert diffuse for the Lambert (glTF) model.
+#define MATERIAL_FLAG_GGX_COAT 4u
 
 // MaterialData.alphaMode: glTF alpha modes.
 #define MATERIAL_ALPHA_OPAQUE 0u

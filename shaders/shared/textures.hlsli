@@ -20,15 +20,21 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 
 // The KHR_materials_* textures, as gltf_materials.cpp maps their factors
 // (docs/materials.md): clearcoat by red; the coat's roughness r by green,
-// where clearcoatGloss g stands for r^2 = lerp(0.1, 0.001, g); specTrans by
+// where clearcoatGloss g stands for r = 1 - g (glTF's coat) or
+// r^2 = lerp(0.1, 0.001, g) (Disney's); specTrans by
 // the transmission's red; sheenColor per channel by the sheen colour
 // texture; specular (glTF's specularFactor) by the specular
 // texture's alpha, specularColor per channel by the specular colour texture.
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
-    float r = sqrt(lerp(0.1, 0.001, d.clearcoatGloss)) * sampleTextureRef(d.clearcoatRoughnessTexture, uv).y;
-    d.clearcoatGloss = saturate((0.1 - r * r) / 0.099);
+    float scale = sampleTextureRef(d.clearcoatRoughnessTexture, uv).y;
+    if ((d.flags & MATERIAL_FLAG_GGX_COAT) != 0u) {
+      d.clearcoatGloss = 1.0 - (1.0 - d.clearcoatGloss) * scale;
+    } else {
+      float r = sqrt(lerp(0.1, 0.001, d.clearcoatGloss)) * scale;
+      d.clearcoatGloss = saturate((0.1 - r * r) / 0.099);
+    }
   }
   if (d.transmissionTexture != PT_NO_TEXTURE) d.specTrans *= sampleTextureRef(d.transmissionTexture, uv).x;
   if (d.sheenColorTexture != PT_NO_TEXTURE)

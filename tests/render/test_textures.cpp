@@ -316,10 +316,10 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     untextured = plain;
     textures = {uniform({255, 40, 255, 255}, false)};
     attach = [](scene::Material& m) { m.clearcoatRoughnessTexture = 0; };
-    // gltf_materials.cpp: clearcoatGloss g stands for roughness r with
-    // r^2 = lerp(0.1, 0.001, g); glTF scales r by the texture's green.
-    const float r = std::sqrt(0.1f + (0.001f - 0.1f) * 0.2f) * (40.0f / 255.0f);
-    plain.clearcoatGloss = std::clamp((0.1f - r * r) / 0.099f, 0.0f, 1.0f);
+    // The Lambert (glTF) model's coat: clearcoatGloss g stands for the
+    // coat's roughness r = 1 - g; glTF scales r by the texture's green.
+    const float r = (1.0f - 0.2f) * (40.0f / 255.0f);
+    plain.clearcoatGloss = 1.0f - r;
   }
   SECTION("transmission from red") {
     plain.specTrans = 0.9f;

@@ -149,6 +149,14 @@ std::vector<Case> chiSquareCases() {
     m.specularColor = glm::vec3(12.5f, 3.0f, 0.2f);
     m.roughness = std::sqrt(0.3f);
     cases.push_back({"coloured F0 up to 1" + at.str(), m, incident(c, false)});
+    // The Lambert (glTF) model's coat: KHR_materials_clearcoat at full
+    // strength, GGX of alpha (1 - gloss)^2 = 0.09, over a rough plastic.
+    m = base();
+    m.model = scene::MaterialModel::Lambert;
+    m.specular = 0.5f;
+    m.clearcoat = 1.0f;
+    m.clearcoatGloss = 0.7f;
+    cases.push_back({"glTF coat alpha 0.09" + at.str(), m, incident(c, false)});
   }
   return cases;
 }
@@ -382,6 +390,34 @@ TEST_CASE("Disney BSDF: a dielectric F0 of 1 in one channel mirrors all of it; i
     CHECK(a.mean.y == Catch::Approx(a.mean.z).epsilon(1e-6));
     CHECK(a.mean.y > 0.5);
     CHECK(a.mean.y <= 1.0 + 3.0 * a.sigma.y);
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+TEST_CASE(
+    "Disney BSDF: glTF's smooth coat is a mirror of weight clearcoat x F(cos theta) at full "
+    "strength",
+    "[shaders][bsdf][gpu][spirv-only]") {
+  // A black base without a specular layer (F0 0): the coat is the only
+  // lobe, so every sample is its mirror direction and carries the coat's
+  // reflectance, clearcoat x Schlick(0.04) (Disney's coat would carry a
+  // quarter of it).
+  auto device = test::makeTestDevice();
+  BsdfHarness harness(*device);
+  auto m = base();
+  m.model = scene::MaterialModel::Lambert;
+  m.baseColor = glm::vec3(0.0f);
+  m.clearcoat = 0.6f;
+  m.clearcoatGloss = 1.0f;
+  for (float cosTheta : {1.0f, 0.5f, 0.2f}) {
+    const glm::vec3 wo = incident(cosTheta, false);
+    const double expected = 0.6 * (0.04 + 0.96 * std::pow(1.0 - double(cosTheta), 5.0));
+    for (const auto& s : harness.sample(m, wo, 4096, 11)) {
+      INFO("cos " << cosTheta << ": weight " << s.weight.x << " vs " << expected);
+      REQUIRE(s.isDelta);
+      REQUIRE(glm::length(s.wi - glm::vec3(-wo.x, -wo.y, wo.z)) < 1e-6f);
+      for (int k = 0; k < 3; ++k) REQUIRE(s.weight[k] == Catch::Approx(expected).epsilon(1e-5));
+    }
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

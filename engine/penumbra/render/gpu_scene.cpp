@@ -197,7 +197,8 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
                                                      : MATERIAL_MODEL_DISNEY;
   d.flags = 0;
   if (m.thin) d.flags |= MATERIAL_FLAG_THIN;
-  if (m.model == scene::MaterialModel::Lambert) d.flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE;
+  if (m.model == scene::MaterialModel::Lambert)
+    d.flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE | MATERIAL_FLAG_GGX_COAT;
   d.baseColorTexture = m.baseColorTexture;
   d.metallicRoughnessTexture = m.metallicRoughnessTexture;
   d.normalTexture = m.normalTexture;

@@ -119,11 +119,6 @@ float f0FromIor(float ior) {
   return r * r;
 }
 
-float clearcoatGlossFromRoughness(float roughness) {
-  const float alpha = roughness * roughness;
-  return std::clamp((0.1f - alpha) / (0.1f - 0.001f), 0.0f, 1.0f);
-}
-
 Material defaultMaterial() {
   Material m;
   m.name = "glTF default";
@@ -220,8 +215,8 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
 
   if (const auto* e = extension(src, "KHR_materials_clearcoat")) {
     m.clearcoat = clamp01(number(*e, "clearcoatFactor", 0.0));
-    m.clearcoatGloss =
-        clearcoatGlossFromRoughness(clamp01(number(*e, "clearcoatRoughnessFactor", 0.0)));
+    // The Lambert model's coat is this extension's: alpha = (1 - gloss)^2.
+    m.clearcoatGloss = 1.0f - clamp01(number(*e, "clearcoatRoughnessFactor", 0.0));
   }
 
   if (const auto* e = extension(src, "KHR_materials_sheen")) {

@@ -40,8 +40,5 @@ Material defaultMaterial();
 
 // Normal-incidence reflectance of a dielectric of index `ior` in air.
 float f0FromIor(float ior);
-// Disney clearcoatGloss whose GTR1 alpha, lerp(0.1, 0.001, gloss), equals
-// glTF's clearcoat alpha = clearcoatRoughness^2 (clamped to [0, 1]).
-float clearcoatGlossFromRoughness(float roughness);
 
 }  // namespace penumbra::scene::gltf

@@ -97,7 +97,8 @@ void main() {
     d.reflectivity = 0.0;
     d.transparency = 0.0;
     uint flags = (rngNext(rng) < 0.3 ? MATERIAL_FLAG_THIN : 0u) |
-                 (rngNext(rng) < 0.3 ? MATERIAL_FLAG_LAMBERT_DIFFUSE : 0u);
+                 (rngNext(rng) < 0.3 ? MATERIAL_FLAG_LAMBERT_DIFFUSE : 0u) |
+                 (rngNext(rng) < 0.3 ? MATERIAL_FLAG_GGX_COAT : 0u);
     d.model = MATERIAL_MODEL_DISNEY;
     d.flags = flags;
     // F0 colours from 0 to past the clamp at 1 (0.08 x 20 = 1.6).
