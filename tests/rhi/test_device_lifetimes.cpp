@@ -16,8 +16,10 @@
 using namespace penumbra;
 using namespace penumbra::rhi;
 
-TEST_CASE("device lifetimes: 200 devices in one process, each with work and a readback",
-          "[rhi][lifetimes]") {
+TEST_CASE(
+    "device lifetimes: 200 devices in one process (50 on D3D12 under Wine), each with work and a "
+    "readback",
+    "[rhi][lifetimes]") {
   // PENUMBRA_TEST_LIFETIMES overrides the count (the GPU runs try more).
   int lifetimes = 200;
   if (const char* n = std::getenv("PENUMBRA_TEST_LIFETIMES")) lifetimes = std::atoi(n);
