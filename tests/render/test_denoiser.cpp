@@ -29,23 +29,36 @@ struct Render {
   image::Image raw;
 };
 
+// `spp` samples with guides from a restarted `tracer` (what a new tracer
+// renders, without its pipeline compile), read back.
+image::Image renderSamples(render::PathTracer& tracer, uint32_t spp, uint32_t seed) {
+  render::PathTracerSettings settings;
+  settings.writeGuides = true;
+  settings.seed = seed;
+  tracer.resetAccumulation();
+  while (tracer.accumulatedSamples() < spp)
+    tracer.renderFrame(settings, std::min(16u, spp - tracer.accumulatedSamples()));
+  return tracer.readback();
+}
+
 Render renderTracer(rhi::IDevice& device, const scene::Scene& scene, uint32_t size, uint32_t spp,
                     uint32_t seed) {
   Render r;
   r.tracer = std::make_unique<render::PathTracer>(device, scene, size, size);
-  render::PathTracerSettings settings;
-  settings.writeGuides = true;
-  settings.seed = seed;
-  while (r.tracer->accumulatedSamples() < spp)
-    r.tracer->renderFrame(settings, std::min(16u, spp - r.tracer->accumulatedSamples()));
-  r.raw = r.tracer->readback();
+  r.raw = renderSamples(*r.tracer, spp, seed);
   return r;
 }
 
+// A new denoiser each time: the temporal filter's first frame.
+image::Image denoise(rhi::IDevice& device, render::PathTracer& tracer,
+                     const render::DenoiserSettings& settings) {
+  render::Denoiser denoiser(device, tracer.width(), tracer.height());
+  denoiser.run(tracer, tracer.camera(), tracer.accumulatedSamples(), settings);
+  return tracer.readback(denoiser.output());
+}
+
 image::Image denoise(rhi::IDevice& device, Render& r, const render::DenoiserSettings& settings) {
-  render::Denoiser denoiser(device, r.tracer->width(), r.tracer->height());
-  denoiser.run(*r.tracer, r.tracer->camera(), r.tracer->accumulatedSamples(), settings);
-  return r.tracer->readback(denoiser.output());
+  return denoise(device, *r.tracer, settings);
 }
 
 // One 1 spp frame from `camera` with `seed`, through the temporal denoiser:
@@ -631,19 +644,9 @@ TEST_CASE("denoiser: the denoised frame keeps the light at 1 and 4 spp",
     INFO(name);
     const scene::Scene scene = scene::loadScene(name);
     // One tracer per scene, restarted for each seed (a pipeline costs
-    // lavapipe seconds to compile; a restarted tracer renders what a new one
-    // does). A new denoiser per image: the temporal filter's first frame.
+    // lavapipe seconds to compile).
     render::PathTracer tracer(*device, scene, kSize, kSize);
-    auto renderSeed = [&](uint32_t spp, uint32_t seed) {
-      render::PathTracerSettings settings;
-      settings.writeGuides = true;
-      settings.seed = seed;
-      tracer.resetAccumulation();
-      while (tracer.accumulatedSamples() < spp)
-        tracer.renderFrame(settings, std::min(16u, spp - tracer.accumulatedSamples()));
-      return tracer.readback();
-    };
-    const image::Image reference = renderSeed(512, kReferenceSeed);
+    const image::Image reference = renderSamples(tracer, 512, kReferenceSeed);
     const image::Image emission = tracer.readback(tracer.guides().emission);
     const image::Image normalDepth = tracer.readback(tracer.guides().normalDepth);
     std::vector<bool> lit(size_t(kSize) * kSize);
@@ -658,15 +661,13 @@ TEST_CASE("denoiser: the denoised frame keeps the light at 1 and 4 spp",
     for (uint32_t spp : {1u, 4u}) {
       double raw = 0, rawError = 0, denoised[2] = {0, 0}, denoisedError[2] = {0, 0};
       for (int k = 0; k < kSeeds; ++k) {
-        const image::Image frame = renderSeed(spp, 100 + uint32_t(k));
+        const image::Image frame = renderSamples(tracer, spp, 100 + uint32_t(k));
         raw += meanLuminance(frame, lit) / kSeeds;
         rawError += relMse(frame, reference) / kSeeds;
         for (int m = 0; m < 2; ++m) {
           render::DenoiserSettings settings;
           settings.mode = modes[m];
-          render::Denoiser denoiser(*device, kSize, kSize);
-          denoiser.run(tracer, tracer.camera(), tracer.accumulatedSamples(), settings);
-          const image::Image out = tracer.readback(denoiser.output());
+          const image::Image out = denoise(*device, tracer, settings);
           REQUIRE(image::countNonFinite(out) == 0);
           denoised[m] += meanLuminance(out, lit) / kSeeds;
           denoisedError[m] += relMse(out, reference) / kSeeds;
