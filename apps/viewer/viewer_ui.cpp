@@ -289,6 +289,7 @@ void Viewer::drawMaterialMenu() {
                                 {"specular tint", &m.specularTint},
                                 {"sheen", &m.sheen},
                                 {"sheen tint", &m.sheenTint},
+                                {"sheen roughness (glTF)", &m.sheenRoughness},
                                 {"clearcoat", &m.clearcoat},
                                 {"clearcoat gloss", &m.clearcoatGloss},
                                 {"transmission", &m.specTrans},

@@ -13,7 +13,10 @@
 //                          Hanrahan-Krueger-like flat term by `subsurface`; or
 //                          Lambert for materials marked so (glTF, the Cornell box);
 //   sheen     (1-m)(1-t)   sheen * lerp(1, tint, sheenTint) * sheenColor
-//                          * SchlickWeight(cos theta_d);
+//                          * SchlickWeight(cos theta_d); or, for the Lambert model
+//                          (glTF's), KHR_materials_sheen's layer over diffuse,
+//                          specular and glass alike (sheen.hlsli), which dims them
+//                          by its albedo and is sampled as a lobe of its own;
 //   specular  m + (1-m)(1-t)  anisotropic GGX reflection; Fresnel Schlick from baseColor
 //                          (metal) or specular * min(0.08 * lerp(1, tint, specularTint)
 //                          * specularColor, 1) (dielectric; specularColor is glTF's
@@ -42,6 +45,7 @@
 #include "fresnel.hlsli"
 #include "microfacet.hlsli"
 #include "sampling.hlsli"
+#include "sheen.hlsli"
 
 static const float kSpecularAlphaThreshold = 1e-3;
 static const float kMinAlpha = 1e-4;
@@ -51,6 +55,7 @@ static const float kMinAlpha = 1e-4;
 #define BSDF_LOBE_GLASS 2u
 #define BSDF_LOBE_CLEARCOAT 3u
 #define BSDF_LOBE_NONE 4u
+#define BSDF_LOBE_SHEEN 5u
 
 struct DisneyMaterial {
   float3 baseColor;
@@ -64,6 +69,7 @@ struct DisneyMaterial {
   float sheen;
   float sheenTint;
   float3 sheenColor;  // multiplies the sheen per channel, in [0, 1]
+  float sheenRoughness;  // glTF's sheen (charlieSheen) only
   float clearcoat;
   float clearcoatGloss;
   float specTrans;
@@ -72,6 +78,7 @@ struct DisneyMaterial {
   bool thin;
   bool lambertDiffuse;
   bool ggxCoat;  // glTF's coat (full strength, GGX) instead of Disney's
+  bool charlieSheen;  // glTF's sheen layer instead of Disney's
 };
 
 struct BsdfEval {
@@ -92,8 +99,11 @@ struct LobeWeights {
   float specularLayer;  // weight of the specular reflection lobe (m + (1-m)(1-t))
   float glass;
   float clearcoat;
+  float sheen;         // glTF's sheen layer: its colour's largest channel (0 for Disney's sheen)
+  float sheenAlbedoO;  // the glTF sheen's albedo E(cos theta_o) (0 without it)
   // Probabilities of choosing each lobe in disneySample.
   float pDiffuse;
+  float pSheen;
   float pSpecular;
   float pGlass;
   float pClearcoat;
@@ -182,24 +192,67 @@ float3 specularFresnel(DisneyMaterial m, float cosThetaD) {
   return m.metallic * metal + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectric;
 }
 
+float3 sheenColorOf(DisneyMaterial m) {
+  return m.sheen * lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint) * m.sheenColor;
+}
+
+// glTF's sheen colour, at most 1 per channel: the layer cannot reflect more
+// than reaches it (Disney's sheenTint, which a scene file may give the
+// `lambert` model, can push a channel of sheenColorOf to 13.8).
+float3 gltfSheenColor(DisneyMaterial m) {
+  return min(sheenColorOf(m), splat3(1.0));
+}
+
 LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   LobeWeights w;
   w.diffuse = (1.0 - m.metallic) * (1.0 - m.specTrans);
   w.specularLayer = m.metallic + w.diffuse;
   w.glass = (1.0 - m.metallic) * m.specTrans;
   w.clearcoat = coatWeight(m);
+  w.sheen = 0.0;
+  w.sheenAlbedoO = 0.0;
   // Sampling estimates: each lobe's rough share of the reflected energy.
-  float eDiffuse = w.diffuse * (luminance(m.baseColor) + m.sheen * 0.25);
-  float eSpecular = luminance(specularFresnel(m, cosThetaO));
-  float eGlass = w.glass;
+  float disneySheen = m.sheen * 0.25;
+  float eSheen = 0.0;
+  float below = 1.0;  // what glTF's sheen lets through to the lobes below it
+#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+  if (m.charlieSheen) {
+    w.sheen = maxComponent(gltfSheenColor(m));
+    w.sheenAlbedoO = sheenAlbedo(cosThetaO, m.sheenRoughness);
+    eSheen = w.sheen * min(1.0, w.sheenAlbedoO);
+    below = 1.0 - eSheen;
+    disneySheen = 0.0;
+  }
+#endif
+  float eDiffuse = w.diffuse * (luminance(m.baseColor) + disneySheen) * below;
+  float eSpecular = luminance(specularFresnel(m, cosThetaO)) * below;
+  float eGlass = w.glass * below;
   float eClearcoat = w.clearcoat * (0.04 + 0.96 * schlickWeight(cosThetaO));
-  float total = eDiffuse + eSpecular + eGlass + eClearcoat;
+  float total = eDiffuse + eSheen + eSpecular + eGlass + eClearcoat;
   float inv = total > 0.0 ? 1.0 / total : 0.0;
   w.pDiffuse = eDiffuse * inv;
+  w.pSheen = eSheen * inv;
   w.pSpecular = eSpecular * inv;
   w.pGlass = eGlass * inv;
   w.pClearcoat = eClearcoat * inv;
   return w;
+}
+
+// The glTF sheen's albedo at cos theta_i (0 without it).
+float sheenAlbedoI(DisneyMaterial m, LobeWeights w, float cosI) {
+#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+  if (w.sheen > 0.0) return sheenAlbedo(cosI, m.sheenRoughness);
+#endif
+  return 0.0;
+}
+
+// The share of light that passes glTF's sheen layer to the lobes below it
+// (1 without one), for wo (w) and a wi of sheen albedo albedoI.
+float sheenLayerScaling(LobeWeights w, float albedoI) {
+#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+  if (w.sheen > 0.0) return sheenAlbedoScaling(w.sheen, w.sheenAlbedoO, albedoI);
+#endif
+  return 1.0;
 }
 
 // Burley's diffuse with the energy renormalisation of Lagarde & de Rousiers
@@ -244,9 +297,10 @@ float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
 #endif
 }
 
+// Burley's sheen (Disney materials); glTF's is its own layer.
 float3 sheenTerm(DisneyMaterial m, float cosThetaD) {
-  float3 tint = lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint) * m.sheenColor;
-  return m.sheen * tint * schlickWeight(cosThetaD);
+  if (m.charlieSheen) return zero3();
+  return sheenColorOf(m) * schlickWeight(cosThetaD);
 }
 
 float clearcoatAlpha(DisneyMaterial m) { return lerp(0.1, 0.001, m.clearcoatGloss); }
@@ -299,13 +353,15 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
   float eta = disneyEta(m, side);
   LobeWeights w = disneyLobeWeights(m, wo.z);
   Ggx g = disneyGgx(m);
+  float albedoI = sheenAlbedoI(m, w, abs(wi.z));
 
   if (wi.z > 0.0) {
     float3 wh = normalize(wo + wi);
     float cosThetaD = dot(wi, wh);
     float coat = coatAttenuation(m, wo.z, wi.z);
+    float sheenScale = sheenLayerScaling(w, albedoI);
     if (w.diffuse > 0.0) {
-      r.f += (w.diffuse * baseAttenuation(m, wo.z, wi.z)) *
+      r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z)) *
              (diffuseTerm(m, wo, wi, cosThetaD)
 #if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
               + sheenTerm(m, cosThetaD)
@@ -313,6 +369,13 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
              );
       r.pdf += w.pDiffuse * cosineHemispherePdf(wi.z);
     }
+#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+    if (w.sheen > 0.0) {
+      r.f += gltfSheenColor(m) *
+             (charlieSheen(m.sheenRoughness, wo, wi, w.sheenAlbedoO, albedoI) * coat);
+      r.pdf += w.pSheen * cosineHemispherePdf(wi.z);
+    }
+#endif
     float vndf = ggxVisibleNormalPdf(g, wo, wh);
     // wo.wh >= 0 in exact arithmetic; rounding can make it 0 or negative when
     // wo and wi are nearly opposite at the horizon, where no lobe has density.
@@ -323,7 +386,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR)
     if (w.pSpecular > 0.0 && !isSpecularGgx(g)) {
       float dg = ggxD(g, wh) * ggxG2(g, wo, wi) / (4.0 * wo.z * wi.z);
-      r.f += specularFresnel(m, cosThetaD) * (dg * coat);
+      r.f += specularFresnel(m, cosThetaD) * (dg * coat * sheenScale);
       r.pdf += w.pSpecular * vndf * jacobian;
     }
 #endif
@@ -333,7 +396,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
       if (!isSpecularGgx(gg) && eta != 1.0) {
         float fr = fresnelDielectric(dot(wo, wh), eta);
         float dg = ggxD(gg, wh) * ggxG2(gg, wo, wi) / (4.0 * wo.z * wi.z);
-        r.f += splat3(w.glass * fr * dg * coat);
+        r.f += splat3(w.glass * fr * dg * coat * sheenScale);
         r.pdf += w.pGlass * fr * ggxVisibleNormalPdf(gg, wo, wh) * jacobian;
       }
     }
@@ -368,7 +431,8 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         float3 wh = normalize(wo + wiAbs);
         float fr = fresnelDielectric(dot(wo, wh), eta);
         float dg = ggxD(gg, wh) * ggxG2(gg, wo, wiAbs) / (4.0 * wo.z * wiAbs.z);
-        r.f += m.baseColor * (w.glass * (1.0 - fr) * dg * coatAttenuation(m, wo.z, wiAbs.z));
+        r.f += m.baseColor * (w.glass * (1.0 - fr) * dg * coatAttenuation(m, wo.z, wiAbs.z) *
+                              sheenLayerScaling(w, albedoI));
         r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(gg, wo, wh) / (4.0 * dot(wo, wh));
       }
     } else if (!isSpecularGgx(g)) {
@@ -384,7 +448,8 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         float dg = ggxD(g, wh) * ggxG2(g, wo, wi);
         // Radiance crossing into a denser medium is compressed by 1 / eta^2.
         float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
-        r.f += m.baseColor * (w.glass * ft * coatAttenuation(m, wo.z, abs(wi.z)));
+        r.f += m.baseColor *
+               (w.glass * ft * coatAttenuation(m, wo.z, abs(wi.z)) * sheenLayerScaling(w, albedoI));
         r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
       }
     }
@@ -419,16 +484,26 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
   Ggx g = disneyGgx(m);
   float3 wi = float3(0.0, 0.0, 1.0);
 
+  // The lobes' cumulative probabilities, in the order they are tried.
+  float pToSpecular = w.pDiffuse + w.pSheen;
+  float pToGlass = pToSpecular + w.pSpecular;
   if (u0 < w.pDiffuse) {
     s.lobe = BSDF_LOBE_DIFFUSE;
     wi = sampleCosineHemisphere(u1, u2);
   }
+#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+  else if (u0 < pToSpecular) {
+    s.lobe = BSDF_LOBE_SHEEN;
+    wi = sampleCosineHemisphere(u1, u2);
+  }
+#endif
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR)
-  else if (u0 < w.pDiffuse + w.pSpecular) {
+  else if (u0 < pToGlass) {
     s.lobe = BSDF_LOBE_SPECULAR;
     if (isSpecularGgx(g)) {
       s.wi = float3(-wo.x, -wo.y, wo.z * side);
-      s.weight = specularFresnel(m, wo.z) * (coatAttenuation(m, wo.z, wo.z) / w.pSpecular);
+      s.weight = specularFresnel(m, wo.z) * (coatAttenuation(m, wo.z, wo.z) *
+                                             sheenLayerScaling(w, w.sheenAlbedoO) / w.pSpecular);
       s.isDelta = true;
       return s;
     }
@@ -437,15 +512,15 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
   }
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
-  else if (u0 < w.pDiffuse + w.pSpecular + w.pGlass) {
+  else if (u0 < pToGlass + w.pGlass) {
     s.lobe = BSDF_LOBE_GLASS;
     // Reuse u0 to choose reflection or transmission.
-    float uChoice = (u0 - w.pDiffuse - w.pSpecular) / w.pGlass;
+    float uChoice = (u0 - w.pDiffuse - w.pSheen - w.pSpecular) / w.pGlass;
     Ggx gg = glassGgx(m, g);
     if (eta == 1.0) {
       // An index-matched boundary neither reflects nor bends light.
       s.wi = -woIn;
-      s.weight = m.baseColor * (w.glass / w.pGlass);
+      s.weight = m.baseColor * (w.glass * sheenLayerScaling(w, w.sheenAlbedoO) / w.pGlass);
       s.isDelta = true;
       return s;
     }
@@ -469,7 +544,8 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
       s.wi = float3(wi.x, wi.y, wi.z * side);
       // Chosen with probability pGlass * (fr or 1 - fr), which cancels the Fresnel factor.
       float scale = m.thin ? 1.0 : 1.0 / (eta * eta);
-      float coat = coatAttenuation(m, wo.z, abs(wi.z));
+      float coat =
+          coatAttenuation(m, wo.z, abs(wi.z)) * sheenLayerScaling(w, sheenAlbedoI(m, w, abs(wi.z)));
       s.weight = reflected ? splat3(w.glass * coat / w.pGlass)
                            : m.baseColor * (w.glass * scale * coat / w.pGlass);
       s.isDelta = true;

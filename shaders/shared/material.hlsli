@@ -40,6 +40,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.sheen = d.sheen;
   m.sheenTint = d.sheenTint;
   m.sheenColor = d.sheenColor;
+  m.sheenRoughness = d.sheenRoughness;
   m.clearcoat = d.clearcoat;
   m.clearcoatGloss = d.clearcoatGloss;
   m.specTrans = d.specTrans;
@@ -48,6 +49,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.thin = (d.flags & MATERIAL_FLAG_THIN) != 0u;
   m.lambertDiffuse = (d.flags & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
   m.ggxCoat = (d.flags & MATERIAL_FLAG_GGX_COAT) != 0u;
+  m.charlieSheen = (d.flags & MATERIAL_FLAG_CHARLIE_SHEEN) != 0u;
   if (d.model == MATERIAL_MODEL_PHONG) {
     PhongMaterial p = unpackPhong(d);
     m.metallic = p.reflectivity;

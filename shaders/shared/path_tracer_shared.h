@@ -124,6 +124,9 @@ namespace penumbra::gpu {
 // The coat is glTF's KHR_materials_clearcoat (full strength, GGX) instead of
 // Disney's; set with the Lambert diffuse for the Lambert (glTF) model.
 #define MATERIAL_FLAG_GGX_COAT 4u
+// The sheen is glTF's KHR_materials_sheen layer (Charlie fibres of
+// sheenRoughness, sheen.hlsli) instead of Disney's; also the Lambert model's.
+#define MATERIAL_FLAG_CHARLIE_SHEEN 8u
 
 // MaterialData.alphaMode: glTF alpha modes.
 #define MATERIAL_ALPHA_OPAQUE 0u
@@ -253,9 +256,9 @@ struct MaterialData {
   // Multiplies the dielectric F0 per channel before its clamp to 1 (glTF
   // KHR_materials_specular's colour times F0(ior) / 0.08; 1 for Disney).
   float3 specularColor;
-  uint unused7;
+  uint sheenRoughnessTexture;  // alpha scales sheenRoughness
   float3 sheenColor;  // multiplies the sheen per channel (glTF's sheen colour's hue; 1 for Disney)
-  uint unused8;
+  float sheenRoughness;  // glTF's sheen fibres (MATERIAL_FLAG_CHARLIE_SHEEN); unused by Disney's
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -392,7 +395,8 @@ static_assert(sizeof(MaterialData) == 224 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, absorption) == 160 &&
               offsetof(MaterialData, anisotropyDirection) == 176 &&
               offsetof(MaterialData, specularColor) == 192 &&
-              offsetof(MaterialData, sheenColor) == 208);
+              offsetof(MaterialData, sheenColor) == 208 &&
+              offsetof(MaterialData, sheenRoughness) == 220);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

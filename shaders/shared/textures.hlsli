@@ -23,8 +23,8 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // where clearcoatGloss g stands for r = 1 - g (glTF's coat) or
 // r^2 = lerp(0.1, 0.001, g) (Disney's); specTrans by
 // the transmission's red; sheenColor per channel by the sheen colour
-// texture; specular (glTF's specularFactor) by the specular
-// texture's alpha, specularColor per channel by the specular colour texture.
+// texture, sheenRoughness by the sheen roughness texture's alpha; specular (glTF's specularFactor)
+// by the specular texture's alpha, specularColor per channel by the specular colour texture.
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
@@ -39,6 +39,8 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.transmissionTexture != PT_NO_TEXTURE) d.specTrans *= sampleTextureRef(d.transmissionTexture, uv).x;
   if (d.sheenColorTexture != PT_NO_TEXTURE)
     d.sheenColor *= sampleTextureRef(d.sheenColorTexture, uv).xyz;
+  if (d.sheenRoughnessTexture != PT_NO_TEXTURE)
+    d.sheenRoughness *= sampleTextureRef(d.sheenRoughnessTexture, uv).w;
   if (d.specularTexture != PT_NO_TEXTURE) d.specular *= sampleTextureRef(d.specularTexture, uv).w;
   if (d.specularColorTexture != PT_NO_TEXTURE)
     d.specularColor *= sampleTextureRef(d.specularColorTexture, uv).xyz;

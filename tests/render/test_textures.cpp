@@ -329,17 +329,19 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     attach = [](scene::Material& m) { m.transmissionTexture = 0; };
     plain.specTrans *= 30.0f / 255.0f;
   }
+  // Sheen is a grazing effect (the Lambert model's is glTF's, Charlie
+  // fibres): the camera and the light low over opposite edges of the quad.
+  auto grazing = [](scene::Scene& s) {
+    s.camera.position = {2.5, 0.0, 0.5};
+    s.camera.forward = glm::normalize(glm::vec3(-2.5f, 0.0f, -0.5f));
+    s.pointLights[0].position = {-3.0, 0.0, 0.3};
+    s.pointLights[0].intensity = glm::vec3(40.0f);
+  };
   SECTION("sheenColor per channel from the sheen colour texture (sRGB)") {
-    // Sheen is a grazing effect (Schlick weight of the half angle): the
-    // camera and the light low over opposite edges of the quad.
-    stage = [](scene::Scene& s) {
-      s.camera.position = {2.5, 0.0, 0.5};
-      s.camera.forward = glm::normalize(glm::vec3(-2.5f, 0.0f, -0.5f));
-      s.pointLights[0].position = {-3.0, 0.0, 0.3};
-      s.pointLights[0].intensity = glm::vec3(40.0f);
-    };
+    stage = grazing;
     plain.sheen = 1.0f;
     plain.sheenTint = 0.0f;
+    plain.sheenRoughness = 0.5f;
     plain.baseColor = glm::vec3(0.05f);
     plain.specular = 0.0f;  // no glossy highlight, which the grazing light would put in view
     plain.metallic = 0.0f;
@@ -348,6 +350,19 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     attach = [](scene::Material& m) { m.sheenColorTexture = 0; };
     plain.sheenColor *= glm::vec3(srgbToLinear(20.0f / 255.0f), srgbToLinear(188.0f / 255.0f),
                                   srgbToLinear(40.0f / 255.0f));
+  }
+  SECTION("sheenRoughness from the sheen roughness texture's alpha") {
+    stage = grazing;
+    plain.sheen = 1.0f;
+    plain.sheenTint = 0.0f;
+    plain.sheenRoughness = 0.9f;
+    plain.baseColor = glm::vec3(0.05f);
+    plain.specular = 0.0f;
+    plain.metallic = 0.0f;
+    untextured = plain;
+    textures = {uniform({255, 255, 255, 80}, false)};
+    attach = [](scene::Material& m) { m.sheenRoughnessTexture = 0; };
+    plain.sheenRoughness *= 80.0f / 255.0f;
   }
   SECTION(
       "specular from the specular texture's alpha, specularColor per channel from the colour "

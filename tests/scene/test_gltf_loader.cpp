@@ -377,6 +377,9 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   REQUIRE(sheen.sheenTint == 0.0f);
   for (int c = 0; c < 3; ++c)
     REQUIRE(sheen.sheen * sheen.sheenColor[c] == Approx(glm::vec3(0.2f, 0.6f, 0.4f)[c]));
+  // sheenRoughnessFactor 0.5, for the Lambert model's Charlie sheen.
+  REQUIRE(sheen.sheenRoughness == 0.5f);
+  REQUIRE(sheen.model == scene::MaterialModel::Lambert);
 
   // Unset factors take glTF's defaults: white, metallic 1, roughness 1.
   const auto& defaults = materialNamed(s, "defaults");

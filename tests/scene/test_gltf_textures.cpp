@@ -345,9 +345,11 @@ TEST_CASE("glTF KHR_materials_* textures fill their slots; unread ones are warne
   CHECK(transmission.transform2 == glm::vec2(0.5f, 0.0f));
   CHECK(transmission.transform0 == glm::vec2(1.0f, 0.0f));
   CHECK(layered.specTrans == Approx(1.0f));
-  CHECK(hasWarning(r,
-                   "material 9 'layered': KHR_materials_sheen textures "
-                   "(sheenRoughnessTexture) are not supported; factors used"));
+  // The sheen roughness texture (its alpha scales the roughness) is linear.
+  CHECK_FALSE(texture(s, layered.sheenRoughnessTexture).srgb);
+  CHECK(texture(s, layered.sheenRoughnessTexture).name ==
+        texture(s, materialNamed(s, "coated").clearcoatTexture).name);
+  CHECK_FALSE(hasWarning(r, "KHR_materials_sheen textures"));
   CHECK_FALSE(hasWarning(r, "KHR_materials_specular textures"));
   CHECK_FALSE(hasWarning(r, "KHR_materials_transmission textures"));
   // 'brushed': KHR_materials_anisotropy's strength, its rotation brought

@@ -259,6 +259,11 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
       withGlass(R"({"specularColor":[12.5,3,0.2],"sheen":1,"sheenColor":[1,0.5,0]})"), "t.json");
   CHECK(coloured.materials[0].specularColor == glm::vec3(12.5f, 3.0f, 0.2f));
   CHECK(coloured.materials[0].sheenColor == glm::vec3(1.0f, 0.5f, 0.0f));
+  const auto velvet = scene::parseScene(
+      withGlass(R"({"model":"lambert","sheen":1,"sheenRoughness":0.3})"), "t.json");
+  CHECK(velvet.materials[0].sheenRoughness == 0.3f);
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"sheenRoughness":1.5})"), "t.json"),
+                      ContainsSubstring("a parameter is outside [0, 1]"));
   REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"specularColor":[1,-1,1]})"), "t.json"),
                       ContainsSubstring("specularColor must be finite and non-negative"));
   REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"sheenColor":[1,2,1]})"), "t.json"),

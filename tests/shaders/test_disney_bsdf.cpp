@@ -158,6 +158,31 @@ std::vector<Case> chiSquareCases() {
     m.clearcoatGloss = 0.7f;
     cases.push_back({"glTF coat alpha 0.09" + at.str(), m, incident(c, false)});
   }
+  // The Lambert model's sheen, KHR_materials_sheen's layer, a lobe of its
+  // own sampled by cosine: over a plastic, and at sheen roughness 0.05 over
+  // a metal and glass mixture (at grazing incidence the extension's lobe
+  // alone would reflect up to 4x what it receives there: sheen.hlsli).
+  for (float c : cosines) {
+    std::ostringstream at;
+    at << " at cos " << c;
+    auto m = base();
+    m.model = scene::MaterialModel::Lambert;
+    m.specular = 0.5f;
+    m.sheen = 1.0f;
+    m.sheenTint = 0.0f;
+    m.sheenColor = {1.0f, 0.6f, 0.3f};
+    m.sheenRoughness = 0.3f;
+    cases.push_back({"glTF sheen r 0.3 over plastic" + at.str(), m, incident(c, false)});
+    m = base();
+    m.model = scene::MaterialModel::Lambert;
+    m.metallic = 0.3f;
+    m.specTrans = 0.4f;
+    m.specular = 0.5f;
+    m.sheen = 0.8f;
+    m.sheenTint = 0.0f;
+    m.sheenRoughness = 0.05f;
+    cases.push_back({"glTF sheen r 0.05 over metal and glass" + at.str(), m, incident(c, false)});
+  }
   return cases;
 }
 

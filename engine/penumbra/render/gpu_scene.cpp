@@ -183,6 +183,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.sheen = m.sheen;
   d.sheenTint = m.sheenTint;
   d.sheenColor = toFloat3(m.sheenColor);
+  d.sheenRoughness = m.sheenRoughness;
   d.clearcoat = m.clearcoat;
   d.clearcoatGloss = m.clearcoatGloss;
   d.specTrans = m.specTrans;
@@ -198,7 +199,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.flags = 0;
   if (m.thin) d.flags |= MATERIAL_FLAG_THIN;
   if (m.model == scene::MaterialModel::Lambert)
-    d.flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE | MATERIAL_FLAG_GGX_COAT;
+    d.flags |= MATERIAL_FLAG_LAMBERT_DIFFUSE | MATERIAL_FLAG_GGX_COAT | MATERIAL_FLAG_CHARLIE_SHEEN;
   d.baseColorTexture = m.baseColorTexture;
   d.metallicRoughnessTexture = m.metallicRoughnessTexture;
   d.normalTexture = m.normalTexture;
@@ -208,6 +209,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.clearcoatRoughnessTexture = m.clearcoatRoughnessTexture;
   d.transmissionTexture = m.transmissionTexture;
   d.sheenColorTexture = m.sheenColorTexture;
+  d.sheenRoughnessTexture = m.sheenRoughnessTexture;
   d.specularTexture = m.specularTexture;
   d.specularColorTexture = m.specularColorTexture;
   d.anisotropyTexture = m.anisotropyTexture;

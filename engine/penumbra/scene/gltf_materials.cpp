@@ -224,6 +224,7 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     m.sheen = std::max({color.x, color.y, color.z});
     m.sheenTint = 0.0f;
     if (m.sheen > 0.0f) m.sheenColor = color / m.sheen;
+    m.sheenRoughness = clamp01(number(*e, "sheenRoughnessFactor", 0.0));
   }
 
   if (const auto* e = extension(src, "KHR_materials_anisotropy")) {

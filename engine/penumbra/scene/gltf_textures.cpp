@@ -306,6 +306,7 @@ const std::vector<ExtensionTexture>& extensionTextures() {
        &Material::clearcoatRoughnessTexture},
       {"KHR_materials_transmission", "transmissionTexture", false, &Material::transmissionTexture},
       {"KHR_materials_sheen", "sheenColorTexture", true, &Material::sheenColorTexture},
+      {"KHR_materials_sheen", "sheenRoughnessTexture", false, &Material::sheenRoughnessTexture},
       {"KHR_materials_specular", "specularTexture", false, &Material::specularTexture},
       {"KHR_materials_specular", "specularColorTexture", true, &Material::specularColorTexture},
       {"KHR_materials_anisotropy", "anisotropyTexture", false, &Material::anisotropyTexture}};

@@ -22,6 +22,7 @@ float* scalarParameter(Material& m, std::string_view name) {
   if (name == "specularTint") return &m.specularTint;
   if (name == "sheen") return &m.sheen;
   if (name == "sheenTint") return &m.sheenTint;
+  if (name == "sheenRoughness") return &m.sheenRoughness;
   if (name == "clearcoat") return &m.clearcoat;
   if (name == "clearcoatGloss") return &m.clearcoatGloss;
   if (name == "specTrans") return &m.specTrans;
@@ -86,7 +87,7 @@ void setMaterialParameter(Material& m, std::string_view name, const std::vector<
   if (!scalar)
     throw Error(
         fmt::format("--set: unknown material parameter '{}' (baseColor, emission, specularColor, "
-                    "sheenColor, ior, anisotropyRotation, anisotropyStrength, {})",
+                    "sheenColor, sheenRoughness, ior, anisotropyRotation, anisotropyStrength, {})",
                     name, joined(variableDisneyParameters())));
   if (values.size() != 1) throw Error(fmt::format("--set {}: needs 1 number", name));
   *scalar = values[0];

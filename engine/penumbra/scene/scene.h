@@ -82,6 +82,9 @@ struct Material {
   // Multiplies the sheen per channel, in [0, 1] (glTF's sheen colour is
   // sheen = its largest channel, sheenColor = colour / sheen).
   glm::vec3 sheenColor{1.0f};
+  // The Lambert model's sheen is glTF's (KHR_materials_sheen: Charlie fibres
+  // of this roughness, in [0, 1]); Disney's sheen has no roughness.
+  float sheenRoughness = 0.0f;
   float clearcoat = 0.0f;
   float clearcoatGloss = 1.0f;
   float specTrans = 0.0f;
@@ -117,12 +120,14 @@ struct Material {
   // The KHR_materials_* textures (docs/materials.md), each multiplying the
   // parameter its factor became: clearcoat by red, the coat's roughness by
   // green (clearcoatGloss follows), specTrans by the transmission's red,
-  // sheenColor by the sheen colour texture (rgb), specular by the specular
-  // texture's alpha, specularColor by the specular colour texture (rgb).
+  // sheenColor by the sheen colour texture (rgb), sheenRoughness by the sheen
+  // roughness texture's alpha, specular by the specular texture's alpha,
+  // specularColor by the specular colour texture (rgb).
   uint32_t clearcoatTexture = kNoTexture;
   uint32_t clearcoatRoughnessTexture = kNoTexture;
   uint32_t transmissionTexture = kNoTexture;
   uint32_t sheenColorTexture = kNoTexture;  // sRGB
+  uint32_t sheenRoughnessTexture = kNoTexture;
   uint32_t specularTexture = kNoTexture;
   uint32_t specularColorTexture = kNoTexture;  // sRGB
   // Red and green: the anisotropy direction in tangent space ([0, 1] for
@@ -145,17 +150,19 @@ struct Material {
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // Every texture slot above, for code that treats them alike (validation,
   // merging scenes, hashing, the textures' effect bit).
-  std::array<uint32_t, 12> textures() const {
+  std::array<uint32_t, 13> textures() const {
     return {baseColorTexture,          metallicRoughnessTexture, normalTexture,
             emissiveTexture,           occlusionTexture,         clearcoatTexture,
             clearcoatRoughnessTexture, transmissionTexture,      sheenColorTexture,
-            specularTexture,           specularColorTexture,     anisotropyTexture};
+            sheenRoughnessTexture,     specularTexture,          specularColorTexture,
+            anisotropyTexture};
   }
-  std::array<uint32_t*, 12> textureSlots() {
+  std::array<uint32_t*, 13> textureSlots() {
     return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,
             &emissiveTexture,           &occlusionTexture,         &clearcoatTexture,
             &clearcoatRoughnessTexture, &transmissionTexture,      &sheenColorTexture,
-            &specularTexture,           &specularColorTexture,     &anisotropyTexture};
+            &sheenRoughnessTexture,     &specularTexture,          &specularColorTexture,
+            &anisotropyTexture};
   }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));

@@ -62,6 +62,7 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
     material.specularColor = readVec3(m.at("specularColor"), where + " specularColor");
   material.sheen = readFloat(m, "sheen", material.sheen, where);
   material.sheenTint = readFloat(m, "sheenTint", material.sheenTint, where);
+  material.sheenRoughness = readFloat(m, "sheenRoughness", material.sheenRoughness, where);
   if (m.contains("sheenColor"))
     material.sheenColor = readVec3(m.at("sheenColor"), where + " sheenColor");
   material.clearcoat = readFloat(m, "clearcoat", material.clearcoat, where);

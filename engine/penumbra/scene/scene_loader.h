@@ -14,7 +14,8 @@
 //         specular, specularTint, sheen, sheenTint, clearcoat, clearcoatGloss,
 //         specTrans, ior, subsurface, thin, anisotropyStrength and
 //         anisotropyRotation (radians; glTF's anisotropy, along the mesh's
-//         tangents); "lambert": albedo (= baseColor);
+//         tangents); "lambert": albedo (= baseColor), the same parameters
+//         with glTF's coat and sheen (sheenRoughness: its fibres' roughness);
 //       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior;
 //       "unlit": baseColor, the radiance seen (glTF KHR_materials_unlit)
 //     "lights": [ { "type": "point", "position": [..], "intensity": [..],  // W/sr

@@ -98,12 +98,14 @@ void main() {
     d.transparency = 0.0;
     uint flags = (rngNext(rng) < 0.3 ? MATERIAL_FLAG_THIN : 0u) |
                  (rngNext(rng) < 0.3 ? MATERIAL_FLAG_LAMBERT_DIFFUSE : 0u) |
-                 (rngNext(rng) < 0.3 ? MATERIAL_FLAG_GGX_COAT : 0u);
+                 (rngNext(rng) < 0.3 ? MATERIAL_FLAG_GGX_COAT : 0u) |
+                 (rngNext(rng) < 0.3 ? MATERIAL_FLAG_CHARLIE_SHEEN : 0u);
     d.model = MATERIAL_MODEL_DISNEY;
     d.flags = flags;
     // F0 colours from 0 to past the clamp at 1 (0.08 x 20 = 1.6).
     d.specularColor = 20.0 * float3(pick(rng), pick(rng), pick(rng));
     d.sheenColor = float3(pick(rng), pick(rng), pick(rng));
+    d.sheenRoughness = pick(rng);
     DisneyMaterial m = unpackDisney(d);
     float3 wo = pickDirection(rng);
     float3 wi = pickDirection(rng);
