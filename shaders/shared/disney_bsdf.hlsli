@@ -100,7 +100,8 @@ struct LobeWeights {
   float glass;
   float clearcoat;
   float sheen;         // glTF's sheen layer: its colour's largest channel (0 for Disney's sheen)
-  float sheenAlbedoO;  // the glTF sheen's albedo E(cos theta_o) (0 without it)
+  float2 sheenAlbedoO;  // the glTF sheen's albedo E(cos theta_o), its bound (sheenAlbedo); 0
+                        // without it
   // Probabilities of choosing each lobe in disneySample.
   float pDiffuse;
   float pSheen;
@@ -193,7 +194,8 @@ float3 specularFresnel(DisneyMaterial m, float cosThetaD) {
 }
 
 float3 sheenColorOf(DisneyMaterial m) {
-  return m.sheen * lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint) * m.sheenColor;
+  // In this order, as Disney's sheen always multiplied it (bit for bit).
+  return m.sheen * (lerp(splat3(1.0), tintColor(m.baseColor), m.sheenTint) * m.sheenColor);
 }
 
 // glTF's sheen colour, at most 1 per channel: the layer cannot reflect more
@@ -210,7 +212,7 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   w.glass = (1.0 - m.metallic) * m.specTrans;
   w.clearcoat = coatWeight(m);
   w.sheen = 0.0;
-  w.sheenAlbedoO = 0.0;
+  w.sheenAlbedoO = float2(0.0, 0.0);
   // Sampling estimates: each lobe's rough share of the reflected energy.
   float disneySheen = m.sheen * 0.25;
   float eSheen = 0.0;
@@ -219,7 +221,7 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   if (m.charlieSheen) {
     w.sheen = maxComponent(gltfSheenColor(m));
     w.sheenAlbedoO = sheenAlbedo(cosThetaO, m.sheenRoughness);
-    eSheen = w.sheen * min(1.0, w.sheenAlbedoO);
+    eSheen = w.sheen * min(1.0, w.sheenAlbedoO.x);
     below = 1.0 - eSheen;
     disneySheen = 0.0;
   }
@@ -239,16 +241,16 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
 }
 
 // The glTF sheen's albedo at cos theta_i (0 without it).
-float sheenAlbedoI(DisneyMaterial m, LobeWeights w, float cosI) {
+float2 sheenAlbedoI(DisneyMaterial m, LobeWeights w, float cosI) {
 #if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
   if (w.sheen > 0.0) return sheenAlbedo(cosI, m.sheenRoughness);
 #endif
-  return 0.0;
+  return float2(0.0, 0.0);
 }
 
 // The share of light that passes glTF's sheen layer to the lobes below it
 // (1 without one), for wo (w) and a wi of sheen albedo albedoI.
-float sheenLayerScaling(LobeWeights w, float albedoI) {
+float sheenLayerScaling(LobeWeights w, float2 albedoI) {
 #if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
   if (w.sheen > 0.0) return sheenAlbedoScaling(w.sheen, w.sheenAlbedoO, albedoI);
 #endif
@@ -353,7 +355,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
   float eta = disneyEta(m, side);
   LobeWeights w = disneyLobeWeights(m, wo.z);
   Ggx g = disneyGgx(m);
-  float albedoI = sheenAlbedoI(m, w, abs(wi.z));
+  float2 albedoI = sheenAlbedoI(m, w, abs(wi.z));
 
   if (wi.z > 0.0) {
     float3 wh = normalize(wo + wi);

@@ -6,17 +6,25 @@
 // tools/sheen_albedo).
 //
 // The extension's shadowing fit is not exact: below a sheen roughness of
-// 0.25 the lobe reflects more than it receives at grazing angles (E up to 18
-// at r = 0.01). Dividing the lobe by max(1, E(cos_o), E(cos_i)) keeps it
-// reciprocal and its albedo <= 1, and leaves it as the extension defines it
-// wherever E <= 1 (every roughness from 0.25 up, every angle).
+// about 0.26 the lobe reflects more than it receives at grazing angles (E
+// up to 2.9 at the clamp, r = 0.07). Dividing the lobe by max(1, E(cos_o),
+// E(cos_i)) keeps it reciprocal and its albedo <= 1, and leaves it as the
+// extension defines it wherever the table's E <= 1 (from r = 0.32 up).
 #ifndef PENUMBRA_SHEEN_HLSLI
 #define PENUMBRA_SHEEN_HLSLI
 #include "effects.h"
 #include "math.hlsli"
 
-// Below it the fibres' distribution is too narrow for float (1 / alpha in pow).
-static const float kMinSheenRoughness = 0.01;
+// Sheen roughness below this acts as it, as Filament and three.js clamp it:
+// below it the extension's lobe gains up to 18x at grazing angles (r =
+// 0.01), faster than a 16 x 16 table can follow (tools/sheen_albedo).
+static const float kMinSheenRoughness = 0.07;
+
+// The extension's visibility grows as 1 / cos at grazing angles (its
+// shadowing term stays finite), and so does E without bound; the table
+// stops here (tools/sheen_albedo's kMinCosine), and so does the lobe's
+// visibility, so that the normalisation below always sees the lobe's E.
+static const float kMinSheenCosine = 1e-4;
 
 float charlieAlpha(float sheenRoughness) {
   float r = max(sheenRoughness, kMinSheenRoughness);
@@ -57,18 +65,25 @@ float sheenAlbedoNode(uint j, uint i) {
   return k == 0u ? v.x : (k == 1u ? v.y : (k == 2u ? v.z : v.w));
 }
 
-// E(cos_o, r), bilinear in (sqrt(cos_o), r) between the table's nodes.
-float sheenAlbedo(float cosTheta, float sheenRoughness) {
+// E(cos_o, r), bilinear in (cos_o^(1/4), r) between the table's nodes
+// (.x), and the largest of the four nodes (.y): bilinear interpolation
+// undershoots E near its grazing peak by up to 6 %, the nodes' largest never
+// did on a fine grid of angles and roughnesses (tools/sheen_albedo), so the
+// lobe's normalisation uses it.
+float2 sheenAlbedo(float cosTheta, float sheenRoughness) {
   const float last = float(PT_SHEEN_ALBEDO_SIZE - 1);
-  float x = sqrt(saturate(cosTheta)) * last;
-  float y = saturate(sheenRoughness) * last;
+  float x = sqrt(sqrt(saturate(cosTheta))) * last;
+  float y = saturate((sheenRoughness - kMinSheenRoughness) / (1.0 - kMinSheenRoughness)) * last;
   uint x0 = min(uint(x), PT_SHEEN_ALBEDO_SIZE - 2u);
   uint y0 = min(uint(y), PT_SHEEN_ALBEDO_SIZE - 2u);
   float fx = x - float(x0);
   float fy = y - float(y0);
-  float lower = lerp(sheenAlbedoNode(x0, y0), sheenAlbedoNode(x0 + 1u, y0), fx);
-  float upper = lerp(sheenAlbedoNode(x0, y0 + 1u), sheenAlbedoNode(x0 + 1u, y0 + 1u), fx);
-  return lerp(lower, upper, fy);
+  float e00 = sheenAlbedoNode(x0, y0);
+  float e10 = sheenAlbedoNode(x0 + 1u, y0);
+  float e01 = sheenAlbedoNode(x0, y0 + 1u);
+  float e11 = sheenAlbedoNode(x0 + 1u, y0 + 1u);
+  float e = lerp(lerp(e00, e10, fx), lerp(e01, e11, fx), fy);
+  return float2(e, max(max(e00, e10), max(e01, e11)));
 }
 #endif
 
@@ -76,18 +91,20 @@ float sheenAlbedo(float cosTheta, float sheenRoughness) {
 // albedoO and albedoI are sheenAlbedo at wo and wi. (Callers look each
 // albedo up once: every lookup is compiled into its own copy of the table
 // search, which lavapipe takes long to compile.)
-float charlieSheen(float sheenRoughness, float3 wo, float3 wi, float albedoO, float albedoI) {
+float charlieSheen(float sheenRoughness, float3 wo, float3 wi, float2 albedoO, float2 albedoI) {
   float alpha = charlieAlpha(sheenRoughness);
   float3 wh = normalize(wo + wi);
+  float cosO = max(wo.z, kMinSheenCosine);
+  float cosI = max(wi.z, kMinSheenCosine);
   float visibility =
-      1.0 / ((1.0 + charlieLambda(wo.z, alpha) + charlieLambda(wi.z, alpha)) * (4.0 * wo.z * wi.z));
-  return charlieD(alpha, wh.z) * visibility / max(1.0, max(albedoO, albedoI));
+      1.0 / ((1.0 + charlieLambda(cosO, alpha) + charlieLambda(cosI, alpha)) * (4.0 * cosO * cosI));
+  return charlieD(alpha, wh.z) * visibility / max(1.0, max(albedoO.y, albedoI.y));
 }
 
 // What of the light reaches the base below a sheen of largest channel
 // `strength`, on the way in and out (the extension's min form: symmetric).
-float sheenAlbedoScaling(float strength, float albedoO, float albedoI) {
-  return 1.0 - strength * min(1.0, max(albedoO, albedoI));
+float sheenAlbedoScaling(float strength, float2 albedoO, float2 albedoI) {
+  return 1.0 - strength * min(1.0, max(albedoO.x, albedoI.x));
 }
 
 #endif

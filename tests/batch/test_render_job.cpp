@@ -239,6 +239,7 @@ TEST_CASE(
   auto edited = loaded.materials;
   render::setEditableParameter(edited[0], "anisotropyStrength", {0.75f});
   render::setEditableParameter(edited[0], "anisotropyRotation", {-1.25f});
+  render::setEditableParameter(edited[0], "sheenRoughness", {0.4f});
   render::RenderJob job;
   job.materials = render::materialOverrides(loaded.materials, edited);
   REQUIRE(job.materials.size() == 1);
@@ -248,6 +249,7 @@ TEST_CASE(
                                  "new.json");
   CHECK(applied.materials[0].anisotropyStrength == 0.75f);
   CHECK(applied.materials[0].anisotropyRotation == -1.25f);
+  CHECK(applied.materials[0].sheenRoughness == 0.4f);
 
   // The same record as written before the fields were editable: the other
   // edits apply, the scene's anisotropy stays, and writing it again does
@@ -256,6 +258,7 @@ TEST_CASE(
   nlohmann::json& override0 = old.at("materials").at(0);
   override0.erase("anisotropyStrength");
   override0.erase("anisotropyRotation");
+  override0.erase("sheenRoughness");
   override0.at("metallic") = 1.0;
   const auto oldJob = render::renderJobFromJson(old.dump(), "old.json");
   scene::Scene fromOld = loaded;
@@ -263,8 +266,10 @@ TEST_CASE(
   CHECK(fromOld.materials[0].metallic == 1.0f);
   CHECK(fromOld.materials[0].anisotropyStrength == 0.25f);
   CHECK(fromOld.materials[0].anisotropyRotation == 0.5f);
+  CHECK(fromOld.materials[0].sheenRoughness == 0.0f);
   const std::string rewritten = render::renderJobToJson(oldJob);
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("anisotropy"));
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenRoughness"));
   // Fields there from the start stay required.
   override0.erase("sheen");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(old.dump(), "older.json"),

@@ -159,9 +159,10 @@ std::vector<Case> chiSquareCases() {
     cases.push_back({"glTF coat alpha 0.09" + at.str(), m, incident(c, false)});
   }
   // The Lambert model's sheen, KHR_materials_sheen's layer, a lobe of its
-  // own sampled by cosine: over a plastic, and at sheen roughness 0.05 over
-  // a metal and glass mixture (at grazing incidence the extension's lobe
-  // alone would reflect up to 4x what it receives there: sheen.hlsli).
+  // own sampled by cosine: over a plastic, and at sheen roughness 0.05
+  // (which acts as the clamp, 0.07) over a metal and glass mixture (at
+  // grazing incidence the extension's lobe alone would reflect up to 2.9x
+  // what it receives there: sheen.hlsli).
   for (float c : cosines) {
     std::ostringstream at;
     at << " at cos " << c;

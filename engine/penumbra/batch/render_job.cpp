@@ -62,7 +62,8 @@ constexpr FloatField kFloatFields[] = {
     {"reflectivity", &scene::Material::reflectivity},
     {"transparency", &scene::Material::transparency},
     {"anisotropyStrength", &scene::Material::anisotropyStrength, true},
-    {"anisotropyRotation", &scene::Material::anisotropyRotation, true}};
+    {"anisotropyRotation", &scene::Material::anisotropyRotation, true},
+    {"sheenRoughness", &scene::Material::sheenRoughness, true}};
 
 bool sameEditableParameters(const scene::Material& a, const scene::Material& b) {
   if (a.model != b.model || a.baseColor != b.baseColor || a.thin != b.thin) return false;

@@ -23,7 +23,8 @@
 //                      "clearcoatGloss": 1, "specTrans": 0, "ior": 1.5,
 //                      "subsurface": 0, "thin": false, "ks": 0, "exponent": 32,
 //                      "reflectivity": 0, "transparency": 0,
-//                      "anisotropyStrength": 0, "anisotropyRotation": 0 } ] }  // optional
+//                      "anisotropyStrength": 0, "anisotropyRotation": 0,
+//                      "sheenRoughness": 0 } ] }  // the last three optional
 // Floats are written with enough digits to read back bit-identical.
 //
 // "materials" records the viewer's Material-menu edits: every material whose
@@ -54,7 +55,8 @@ struct MaterialOverride {
   uint32_t index = 0;  // into scene.materials
   scene::Material material;
   // Parameters made editable after the record was written, which it does
-  // not give: the scene's values stay (anisotropyStrength, anisotropyRotation).
+  // not give: the scene's values stay (anisotropyStrength, anisotropyRotation,
+  // sheenRoughness).
   std::vector<std::string> sceneValues;
 };
 
