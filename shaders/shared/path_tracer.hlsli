@@ -14,13 +14,15 @@
 //     the surface a radiance ray's record describes (surface_from_record.hlsli)
 //   FrameConstants frameConstants();  // this launch's constants
 //   uint2 launchPixel();  // the pixel this invocation renders
-//   void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission);
+//   void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3
+//   emission);
 //     one sample's guides into the guide buffers' running means
 //   InstanceData loadInstanceData(uint index);
 //   MaterialData loadMaterial(uint index);
 //   EmissiveTriangle loadEmissiveTriangle(uint index);
 //   PointLight loadPointLight(uint index);
 //   and environment.hlsli's loadEnvironment, loadEnvironmentTexel, loadEnvironmentCdf
+//   and sheen.hlsli's loadSheenAlbedo
 #ifndef PENUMBRA_PATH_TRACER_HLSLI
 #define PENUMBRA_PATH_TRACER_HLSLI
 #include "camera.hlsli"

@@ -39,9 +39,10 @@ namespace penumbra::gpu {
 #define PT_T_ENVIRONMENT 14        // float4 per texel of the map: rgb radiance, w the texel's probability
 #define PT_T_ENVIRONMENT_CDF 15    // float: the rows' cumulative probabilities, then each row's own
 #define PT_T_COLORS 16             // float4 per vertex: COLOR_0, linear RGBA (with PT_VERTEX_COLORS)
+#define PT_T_SHEEN_ALBEDO 17       // float: the glTF sheen's directional albedo table (sheen.hlsli)
 // Texture2D[], bindless: the highest t register (a D3D12 unbounded range
 // covers every register above its first).
-#define PT_T_TEXTURES 17
+#define PT_T_TEXTURES 18
 #define PT_S_SAMPLERS 0            // SamplerState[] (bindless): the distinct samplers of the texture refs
 #define PT_U_ACCUMULATION 0        // RGBA32F running mean
 #define PT_U_RAY_COUNTER 1         // uint: rays traced this dispatch
@@ -53,6 +54,8 @@ namespace penumbra::gpu {
 #define PT_U_GUIDE_EMISSION 5      // rgb radiance emitted there towards the camera (not filtered)
 #define PT_U_GUIDE_MOMENTS 6       // x mean luminance of (radiance - emission) per sample, y its mean square
 // clang-format on
+// Nodes along each axis of PT_T_SHEEN_ALBEDO's table (size^2 floats).
+#define PT_SHEEN_ALBEDO_SIZE 16
 #define PT_SLOT_SCENE PENUMBRA_T(PT_T_SCENE)
 #define PT_SLOT_VERTICES PENUMBRA_T(PT_T_VERTICES)
 #define PT_SLOT_INDICES PENUMBRA_T(PT_T_INDICES)
@@ -69,6 +72,7 @@ namespace penumbra::gpu {
 #define PT_SLOT_ENVIRONMENT_INFO PENUMBRA_T(PT_T_ENVIRONMENT_INFO)
 #define PT_SLOT_ENVIRONMENT PENUMBRA_T(PT_T_ENVIRONMENT)
 #define PT_SLOT_ENVIRONMENT_CDF PENUMBRA_T(PT_T_ENVIRONMENT_CDF)
+#define PT_SLOT_SHEEN_ALBEDO PENUMBRA_T(PT_T_SHEEN_ALBEDO)
 #define PT_SLOT_TEXTURES PENUMBRA_T(PT_T_TEXTURES)
 #define PT_SLOT_TEXTURE_REFS PENUMBRA_T(PT_T_TEXTURE_REFS)
 #define PT_SLOT_SAMPLERS PENUMBRA_S(PT_S_SAMPLERS)

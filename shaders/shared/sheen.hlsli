@@ -2,8 +2,7 @@
 // Burley's sheen, disney_bsdf.hlsli): the "Charlie" fibre distribution of
 // Estevez and Kulla 2017 with the extension's shadowing fit, laid over the
 // base by albedo scaling, f = sheen + base * (1 - max(colour) E), where E is
-// the sheen's directional albedo (sheen_albedo_table.hlsli, integrated by
-// tools/sheen_albedo).
+// the sheen's directional albedo (a table integrated by tools/sheen_albedo).
 //
 // The extension's shadowing fit is not exact: below a sheen roughness of
 // about 0.26 the lobe reflects more than it receives at grazing angles (E
@@ -14,6 +13,7 @@
 #define PENUMBRA_SHEEN_HLSLI
 #include "effects.h"
 #include "math.hlsli"
+#include "path_tracer_shared.h"
 
 // Sheen roughness below this acts as it, as Filament and three.js clamp it:
 // below it the extension's lobe gains up to 18x at grazing angles (r =
@@ -53,16 +53,16 @@ float charlieLambda(float cosTheta, float alpha) {
                  : exp(2.0 * charlieFit(0.5, alpha) - charlieFit(1.0 - c, alpha));
 }
 
-// Only variants with the sheen effect hold the table (DXC keeps an unused
-// constant array in the module).
-#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
-#include "sheen_albedo_table.hlsli"
-
-// Node (column j, row i) of the table (four columns to a float4).
+// Node (column j, row i) of the albedo table: E(mu_j, r_i) with
+// mu_j = (j / (PT_SHEEN_ALBEDO_SIZE - 1))^4 (column 0 at kMinSheenCosine) and
+// r_i = kMinSheenRoughness + (1 - kMinSheenRoughness) i / (PT_SHEEN_ALBEDO_SIZE - 1),
+// row-major, read through the includer's accessor
+//   float loadSheenAlbedo(uint index);
+// (a buffer, PT_T_SHEEN_ALBEDO; render/sheen_albedo_table.h holds the data).
+// Not a constant array in the shader: compilers copy such an array for every
+// dynamic index, and lavapipe took minutes per pipeline through DXIL.
 float sheenAlbedoNode(uint j, uint i) {
-  float4 v = kSheenAlbedo[(i * PT_SHEEN_ALBEDO_SIZE + j) / 4u];
-  uint k = j % 4u;
-  return k == 0u ? v.x : (k == 1u ? v.y : (k == 2u ? v.z : v.w));
+  return loadSheenAlbedo(i * PT_SHEEN_ALBEDO_SIZE + j);
 }
 
 // E(cos_o, r), bilinear in (cos_o^(1/4), r) between the table's nodes
@@ -85,12 +85,10 @@ float2 sheenAlbedo(float cosTheta, float sheenRoughness) {
   float e = lerp(lerp(e00, e10, fx), lerp(e01, e11, fx), fy);
   return float2(e, max(max(e00, e10), max(e01, e11)));
 }
-#endif
 
 // The sheen BRDF for colour 1 (no cosine), wo and wi above the surface;
-// albedoO and albedoI are sheenAlbedo at wo and wi. (Callers look each
-// albedo up once: every lookup is compiled into its own copy of the table
-// search, which lavapipe takes long to compile.)
+// albedoO and albedoI are sheenAlbedo at wo and wi (callers look each up
+// once: four loads each).
 float charlieSheen(float sheenRoughness, float3 wo, float3 wi, float2 albedoO, float2 albedoI) {
   float alpha = charlieAlpha(sheenRoughness);
   float3 wh = normalize(wo + wi);

@@ -26,6 +26,7 @@ PT_BUFFER(TextureRefData, gTextureRefs, PT_T_TEXTURE_REFS);
 PT_BUFFER(EnvironmentData, gEnvironment, PT_T_ENVIRONMENT_INFO);
 PT_BUFFER(float4, gEnvironmentTexels, PT_T_ENVIRONMENT);
 PT_BUFFER(float, gEnvironmentCdf, PT_T_ENVIRONMENT_CDF);
+PT_BUFFER(float, gSheenAlbedo, PT_T_SHEEN_ALBEDO);
 PT_TEXTURE_ARRAY(gTextures, PT_T_TEXTURES);
 PT_SAMPLER_ARRAY(gSamplers, PT_S_SAMPLERS);
 PT_RW_TEXTURE(gAccumulation, PT_U_ACCUMULATION);
@@ -40,6 +41,9 @@ TextureRefData loadTextureRef(uint index) { return gTextureRefs[index]; }
 EnvironmentData loadEnvironment() { return gEnvironment[0]; }
 float4 loadEnvironmentTexel(uint index) { return gEnvironmentTexels[index]; }
 float loadEnvironmentCdf(uint index) { return gEnvironmentCdf[index]; }
+float loadSheenAlbedo(uint index) {
+  return gSheenAlbedo[index];
+}
 float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) {
   return PT_SAMPLE_LEVEL0(gTextures, gSamplers, textureIndex, samplerIndex, uv);
 }

@@ -52,14 +52,14 @@ TEST_CASE(
   CHECK(rs.pushConstants->shaderRegister == 0);
   CHECK(rs.pushConstants->registerSpace == kOffsets.pushConstantSpace);
   CHECK(rs.pushConstants->num32BitValues == sizeof(gpu::FrameConstants) / 4);
-  // The bounded views, then the bindless textures (t17[], the highest t
+  // The bounded views, then the bindless textures (t18[], the highest t
   // register: an unbounded range covers every register above it) and the
   // bindless samplers, each in a table of its own.
   REQUIRE(rs.tables.size() == 3);
   const auto& table = rs.tables[0];
   CHECK(table.space == 0);
   CHECK(table.rootParameterIndex == 1);
-  CHECK(table.descriptorCount == 24);
+  CHECK(table.descriptorCount == 25);
   CHECK(rs.parameterCount() == 4);
   CHECK(rs.dwordCost == 32 + 3);  // 128 bytes of root constants + three tables
   const auto* textures = rs.tableForSlot(0, PT_SLOT_TEXTURES);
@@ -71,7 +71,7 @@ TEST_CASE(
   CHECK(samplers->unbounded);
   CHECK(samplers->heap == DescriptorHeapKind::Sampler);
 
-  // t0..t16 are SRVs (TLAS + read-only structured buffers), u0..u6 UAVs, in slot order.
+  // t0..t17 are SRVs (TLAS + read-only structured buffers), u0..u6 UAVs, in slot order.
   const auto* scene = table.rangeForSlot(PT_SLOT_SCENE);
   REQUIRE(scene);
   CHECK(scene->type == DescriptorRangeType::SRV);
@@ -117,29 +117,34 @@ TEST_CASE(
   CHECK(colors->type == DescriptorRangeType::SRV);
   CHECK(colors->baseRegister == 16);
   CHECK(colors->offsetInTable == 16);
+  const auto* sheenAlbedo = table.rangeForSlot(PT_SLOT_SHEEN_ALBEDO);
+  REQUIRE(sheenAlbedo);
+  CHECK(sheenAlbedo->type == DescriptorRangeType::SRV);
+  CHECK(sheenAlbedo->baseRegister == 17);
+  CHECK(sheenAlbedo->offsetInTable == 17);
   const auto* accumulation = table.rangeForSlot(PT_SLOT_ACCUMULATION);
   REQUIRE(accumulation);
   CHECK(accumulation->type == DescriptorRangeType::UAV);
   CHECK(accumulation->baseRegister == 0);
-  CHECK(accumulation->offsetInTable == 17);
+  CHECK(accumulation->offsetInTable == 18);
   const auto* counter = table.rangeForSlot(PT_SLOT_RAY_COUNTER);
   REQUIRE(counter);
   CHECK(counter->type == DescriptorRangeType::UAV);
   CHECK(counter->baseRegister == 1);
-  CHECK(counter->offsetInTable == 18);
+  CHECK(counter->offsetInTable == 19);
   const auto* probeHits = table.rangeForSlot(PT_SLOT_PROBE_HITS);
   REQUIRE(probeHits);
   CHECK(probeHits->type == DescriptorRangeType::UAV);
   CHECK(probeHits->baseRegister == 2);
-  CHECK(probeHits->offsetInTable == 19);
+  CHECK(probeHits->offsetInTable == 20);
   // The denoiser's guide buffers, u3..u6.
-  uint32_t offset = 20;
+  uint32_t offset = 21;
   for (uint32_t guide : {uint32_t(PT_SLOT_GUIDE_ALBEDO), uint32_t(PT_SLOT_GUIDE_NORMAL_DEPTH),
                          uint32_t(PT_SLOT_GUIDE_EMISSION), uint32_t(PT_SLOT_GUIDE_MOMENTS)}) {
     const auto* range = table.rangeForSlot(guide);
     REQUIRE(range);
     CHECK(range->type == DescriptorRangeType::UAV);
-    CHECK(range->baseRegister == offset - 17);
+    CHECK(range->baseRegister == offset - 18);
     CHECK(range->offsetInTable == offset);
     offset += 1;
   }

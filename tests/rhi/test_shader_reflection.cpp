@@ -37,7 +37,7 @@ const BindingLayoutItem& slot(const PipelineBindingLayout& layout, uint32_t s) {
 TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][reflection]") {
   auto layout = reflectPathTracer();
   REQUIRE(layout.spaces.size() == 1);
-  REQUIRE(layout.spaces[0].items.size() == 26);
+  REQUIRE(layout.spaces[0].items.size() == 27);
   REQUIRE(layout.pushConstantBytes == sizeof(gpu::FrameConstants));
 
   REQUIRE(slot(layout, PT_SLOT_SCENE).type == ResourceType::AccelStruct);
@@ -60,6 +60,9 @@ TEST_CASE("reflection derives the path tracer's layout from SPIR-V", "[rhi][refl
   REQUIRE(slot(layout, PT_SLOT_ENVIRONMENT).structureStride == 16u);
   REQUIRE(slot(layout, PT_SLOT_ENVIRONMENT_CDF).structureStride == 4u);
   REQUIRE_FALSE(slot(layout, PT_SLOT_ENVIRONMENT_CDF).writable);
+  // The glTF sheen's albedo table (float).
+  REQUIRE(slot(layout, PT_SLOT_SHEEN_ALBEDO).structureStride == 4u);
+  REQUIRE_FALSE(slot(layout, PT_SLOT_SHEEN_ALBEDO).writable);
   REQUIRE_FALSE(slot(layout, PT_SLOT_PROBE_RAYS).writable);
   REQUIRE(slot(layout, PT_SLOT_PROBE_HITS).writable);
   // The denoiser's guide buffers: writable storage images.

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "penumbra/render/path_tracer.h"
+#include "penumbra/render/sheen_albedo_table.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::test {
@@ -23,10 +24,11 @@ std::vector<glm::vec4> BsdfHarness::run(uint32_t mode, uint32_t count, uint32_t 
     float wo[4];
   } push{mode, count, seed, 0, {wo.x, wo.y, wo.z, 0.0f}};
   const uint64_t resultBytes = uint64_t(count) * resultsPerItem * 16;
-  const auto bytes =
-      harness_.run(&push, sizeof(push),
-                   {{&material, sizeof(material)}, {directions.data(), directions.size() * 16}},
-                   resultBytes, (count + 63) / 64);
+  const auto bytes = harness_.run(&push, sizeof(push),
+                                  {{&material, sizeof(material)},
+                                   {directions.data(), directions.size() * 16},
+                                   {render::kSheenAlbedo.data(), sizeof(render::kSheenAlbedo)}},
+                                  resultBytes, (count + 63) / 64);
   std::vector<glm::vec4> out(size_t(count) * resultsPerItem);
   std::memcpy(out.data(), bytes.data(), resultBytes);
   return out;

@@ -1,10 +1,10 @@
-// Writes shaders/shared/sheen_albedo_table.hlsli: the directional albedo
+// Writes engine/penumbra/render/sheen_albedo_table.h: the directional albedo
 // E(mu, r) of KHR_materials_sheen's sheen BRDF (Charlie distribution, the
 // extension's visibility; sheen colour 1), which the albedo-scaling layering
 // needs and which has no closed form. Integrated over the hemisphere with a
 // midpoint rule in (theta, phi), in double precision, written out with the
 // formulas again here so that the table does not depend on the shader.
-//   penumbra_sheen_albedo_table > shaders/shared/sheen_albedo_table.hlsli
+//   penumbra_sheen_albedo_table > engine/penumbra/render/sheen_albedo_table.h
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,7 +14,7 @@
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kSize = 16;          // nodes along each axis (a multiple of 4)
+constexpr int kSize = 16;          // nodes along each axis (PT_SHEEN_ALBEDO_SIZE)
 constexpr int kThetaSteps = 1024;  // integration grid over wi's hemisphere
 constexpr int kPhiSteps = 512;     // over phi in [0, pi]; the lobe is symmetric about wo's plane
 constexpr double kMinRoughness = 0.07;  // the shader's clamp (sheen.hlsli)
@@ -69,25 +69,27 @@ int main() {
       "// is mu = (j / %d)^4, denser at grazing angles where E changes fastest (column 0\n"
       "// holds mu = %g).\n"
       "// The extension's shadowing fit is not exact: below r = 0.27, E exceeds 1 at grazing.\n"
-      "// Four columns to a float4: a shader indexes an array of vectors with a quarter of\n"
-      "// the selects an array of floats takes (lavapipe compiles each dynamic index into\n"
-      "// a chain of them).\n"
-      "#ifndef PENUMBRA_SHEEN_ALBEDO_TABLE_HLSLI\n#define PENUMBRA_SHEEN_ALBEDO_TABLE_HLSLI\n"
-      "#define PT_SHEEN_ALBEDO_SIZE %d\n"
-      "static const float4 kSheenAlbedo[%d] = {\n",
+      "// GpuScene uploads it to PT_T_SHEEN_ALBEDO for shaders/shared/sheen.hlsli.\n"
+      "#pragma once\n\n#include <array>\n\nnamespace penumbra::render {\n\n"
+      "// Nodes along each axis.\n"
+      "inline constexpr int kSheenAlbedoSize = %d;\n"
+      "// Row-major: E(mu_j, r_i) at [i * kSheenAlbedoSize + j], four to a line.\n"
+      "// clang-format off\n"
+      "inline constexpr std::array<float, %d> kSheenAlbedo = {\n",
       kMinRoughness, kMinRoughness, kMinRoughness, kSize - 1, kSize - 1, kMinCosine, kSize,
-      kSize * kSize / 4);
+      kSize * kSize);
   for (int i = 0; i < kSize; ++i) {
     for (int j = 0; j < kSize; j += 4) {
-      std::printf("    float4(");
+      std::printf("   ");
       for (int k = j; k < j + 4; ++k) {
         const double x = double(k) / (kSize - 1);
         const double mu = std::max(x * x * x * x, kMinCosine);
         const double e = albedo(mu, kMinRoughness + (1.0 - kMinRoughness) * i / (kSize - 1));
         // Below float's normal range: 0.
-        std::printf("%.6e%s", e < 1e-30 ? 0.0 : e, k + 1 < j + 4 ? ", " : "),\n");
+        std::printf(" %.6ef,", e < 1e-30 ? 0.0 : e);
       }
+      std::printf("\n");
     }
   }
-  std::printf("};\n#endif\n");
+  std::printf("};\n// clang-format on\n\n}  // namespace penumbra::render\n");
 }

@@ -16,6 +16,7 @@
 #include "penumbra/render/environment_map.h"
 #include "penumbra/render/gpu_vectors.h"
 #include "penumbra/render/scene_textures.h"
+#include "penumbra/render/sheen_albedo_table.h"
 #include "penumbra/util/error.h"
 
 namespace penumbra::render {
@@ -241,6 +242,7 @@ struct GpuScene::Buffers {
   SceneTextures textures;
   rhi::BufferHandle textureRefs;
   rhi::BufferHandle environmentInfo, environmentTexels, environmentCdf;
+  rhi::BufferHandle sheenAlbedo;  // the glTF sheen's albedo table, the same for every scene
   std::vector<rhi::rt::AccelStructHandle> mergedBottomLevels;  // one per MergeGroup
   rhi::BufferHandle
       mergedTransforms;  // their geometries' transforms, 3x4 rows, in GPU instance order
@@ -441,6 +443,10 @@ void GpuScene::upload(const scene::Scene& scene, bool allImplicitFamilies) {
   s.textureRefs = makeStorageBuffer(device_, s.textures.refs, BufferUsage::None, "texture refs");
   cmd->writeBuffer(s.textureRefs.get(), s.textures.refs.data(),
                    s.textures.refs.size() * sizeof(gpu::TextureRefData));
+  static_assert(kSheenAlbedoSize == PT_SHEEN_ALBEDO_SIZE);
+  const std::vector<float> sheenAlbedo(kSheenAlbedo.begin(), kSheenAlbedo.end());
+  s.sheenAlbedo = makeStorageBuffer(device_, sheenAlbedo, BufferUsage::None, "sheen albedo");
+  writeAll(*cmd, s.sheenAlbedo, sheenAlbedo);
 
   // The builds go in a list of their own, after the uploads, so that GPU
   // timestamps around them time the builds alone (accelStructBuildTimes).
@@ -704,6 +710,7 @@ std::vector<rhi::BindingSetItem> GpuScene::bindingItems() const {
           Item::storageBuffer(PT_SLOT_ENVIRONMENT_INFO, b.environmentInfo),
           Item::storageBuffer(PT_SLOT_ENVIRONMENT, b.environmentTexels),
           Item::storageBuffer(PT_SLOT_ENVIRONMENT_CDF, b.environmentCdf),
+          Item::storageBuffer(PT_SLOT_SHEEN_ALBEDO, b.sheenAlbedo),
           Item::sampledTextures(PT_SLOT_TEXTURES, b.textures.textures),
           Item::samplers(PT_SLOT_SAMPLERS, b.textures.samplers)};
 }

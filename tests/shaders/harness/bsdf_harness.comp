@@ -4,6 +4,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "prelude.glsl"
 #include "path_tracer_shared.h"
+layout(set = 0, binding = PENUMBRA_T(2), std430) readonly buffer SheenAlbedo {
+  float gSheenAlbedo[];
+};
+float loadSheenAlbedo(uint index) {
+  return gSheenAlbedo[index];
+}
 #include "material.hlsli"
 #include "rng.hlsli"
 

@@ -159,6 +159,8 @@ EnvironmentData loadEnvironment() {
 }
 float4 loadEnvironmentTexel(uint index) { return float4(0.0, 0.0, 0.0, 1.0); }
 float loadEnvironmentCdf(uint index) { return 1.0; }
+// The furnace's sphere has no glTF sheen: the table is never read.
+float loadSheenAlbedo(uint index) { return 0.0; }
 
 // The harness keeps no guides.
 static uint2 gPixel;
