@@ -1,5 +1,5 @@
 # The effect variants built ahead of time (docs/ARCHITECTURE.md, "Effect
-# specialization"): not every subset of the bits (2048 path-tracer variants)
+# specialization"): not every subset of the bits (8192 path-tracer variants)
 # but the ones the built-in scenes, the test suite and the size checks use.
 # A scene whose exact set is not here renders with the smallest built
 # variant that holds every effect it needs (render::effectVariant): the same

@@ -115,7 +115,10 @@ float clearcoatFresnelWeight(float cosTheta) { return 0.04 + 0.96 * pow(saturate
 // Burley scaled his coat to a quarter so that `clearcoat` 1 looks right
 // over his additive layers; glTF's coat reflects at full strength.
 float coatWeight(DisneyMaterial m) {
-  return m.ggxCoat ? m.clearcoat : 0.25 * m.clearcoat;
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_COAT)
+  if (m.ggxCoat) return m.clearcoat;
+#endif
+  return 0.25 * m.clearcoat;
 }
 
 // Everything below the clearcoat passes it twice.
@@ -217,7 +220,7 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   float disneySheen = m.sheen * 0.25;
   float eSheen = 0.0;
   float below = 1.0;  // what glTF's sheen lets through to the lobes below it
-#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
   if (m.charlieSheen) {
     w.sheen = maxComponent(gltfSheenColor(m));
     w.sheenAlbedoO = sheenAlbedo(cosThetaO, m.sheenRoughness);
@@ -242,7 +245,7 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
 
 // The glTF sheen's albedo at cos theta_i (0 without it).
 float2 sheenAlbedoI(DisneyMaterial m, LobeWeights w, float cosI) {
-#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
   if (w.sheen > 0.0) return sheenAlbedo(cosI, m.sheenRoughness);
 #endif
   return float2(0.0, 0.0);
@@ -251,7 +254,7 @@ float2 sheenAlbedoI(DisneyMaterial m, LobeWeights w, float cosI) {
 // The share of light that passes glTF's sheen layer to the lobes below it
 // (1 without one), for wo (w) and a wi of sheen albedo albedoI.
 float sheenLayerScaling(LobeWeights w, float2 albedoI) {
-#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
   if (w.sheen > 0.0) return sheenAlbedoScaling(w.sheen, w.sheenAlbedoO, albedoI);
 #endif
   return 1.0;
@@ -301,7 +304,9 @@ float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
 
 // Burley's sheen (Disney materials); glTF's is its own layer.
 float3 sheenTerm(DisneyMaterial m, float cosThetaD) {
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
   if (m.charlieSheen) return zero3();
+#endif
   return sheenColorOf(m) * schlickWeight(cosThetaD);
 }
 
@@ -371,7 +376,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
              );
       r.pdf += w.pDiffuse * cosineHemispherePdf(wi.z);
     }
-#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
     if (w.sheen > 0.0) {
       r.f += gltfSheenColor(m) *
              (charlieSheen(m.sheenRoughness, wo, wi, w.sheenAlbedoO, albedoI) * coat);
@@ -406,6 +411,7 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
 #if PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
     if (w.clearcoat > 0.0) {
       float fc = clearcoatFresnelWeight(cosThetaD);
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_COAT)
       if (m.ggxCoat) {
         Ggx gc = ggxCoatDistribution(m);
         if (!isSpecularGgx(gc)) {
@@ -413,7 +419,9 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
           r.f += splat3(w.clearcoat * fc * dg);
           r.pdf += w.pClearcoat * ggxVisibleNormalPdf(gc, wo, wh) * jacobian;
         }
-      } else {
+      } else
+#endif
+      {
         float alpha = clearcoatAlpha(m);
         float d = gtr1D(alpha, wh.z);
         float gc = separableSmithGgx(wo.z, 0.25) * separableSmithGgx(wi.z, 0.25);
@@ -493,7 +501,7 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
     s.lobe = BSDF_LOBE_DIFFUSE;
     wi = sampleCosineHemisphere(u1, u2);
   }
-#if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
   else if (u0 < pToSpecular) {
     s.lobe = BSDF_LOBE_SHEEN;
     wi = sampleCosineHemisphere(u1, u2);
@@ -558,6 +566,7 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
 #if PT_HAS_EFFECT(PT_EFFECT_CLEARCOAT)
   else if (w.pClearcoat > 0.0) {
     s.lobe = BSDF_LOBE_CLEARCOAT;
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_COAT)
     if (m.ggxCoat) {
       Ggx gc = ggxCoatDistribution(m);
       if (isSpecularGgx(gc)) {
@@ -567,7 +576,9 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
         return s;
       }
       wi = reflectDirection(wo, ggxSampleVisibleNormal(gc, wo, u1, u2));
-    } else {
+    } else
+#endif
+    {
       float cosThetaM = gtr1SampleCosTheta(clearcoatAlpha(m), u1);
       float sinThetaM = sqrt(max(0.0, 1.0 - cosThetaM * cosThetaM));
       float phi = 2.0 * kPi * u2;
@@ -606,7 +617,10 @@ bool disneyHasDeltaLobe(DisneyMaterial m) {
   LobeWeights w = disneyLobeWeights(m, 1.0);
   Ggx g = disneyGgx(m);
   Ggx gg = glassGgx(m, g);
-  bool coatMirror = w.pClearcoat > 0.0 && m.ggxCoat && isSpecularGgx(ggxCoatDistribution(m));
+  bool coatMirror = false;
+#if PT_HAS_EFFECT(PT_EFFECT_GLTF_COAT)
+  coatMirror = w.pClearcoat > 0.0 && m.ggxCoat && isSpecularGgx(ggxCoatDistribution(m));
+#endif
   return (w.pSpecular > 0.0 && isSpecularGgx(g)) ||
          (w.pGlass > 0.0 && (isSpecularGgx(gg) || m.ior == 1.0)) || coatMirror;
 }

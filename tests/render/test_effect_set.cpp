@@ -104,6 +104,19 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   m = disney();
   m.sheen = 1.0f;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN));
+  // The lambert model's (glTF's) coat and sheen are the extensions', with
+  // code of their own.
+  m = disney();
+  m.model = scene::MaterialModel::Lambert;
+  m.clearcoat = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_CLEARCOAT | PT_EFFECT_GLTF_COAT));
+  m.clearcoat = 0.0f;
+  m.sheen = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN | PT_EFFECT_GLTF_SHEEN));
+  m.sheen = 0.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
   // glTF anisotropy turns the tangent where the hit is built: surface detail.
   m = disney();
   m.metallic = 1.0f;
@@ -174,12 +187,14 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
 
   REQUIRE(render::effectNames(PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN) ==
           std::vector<std::string>{"area-lights", "sheen"});
+  REQUIRE(render::effectNames(PT_EFFECT_CLEARCOAT | PT_EFFECT_GLTF_COAT | PT_EFFECT_GLTF_SHEEN) ==
+          std::vector<std::string>{"clearcoat", "gltf-coat", "gltf-sheen"});
 }
 
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) ==
           "path_trace.rgen");
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e3711.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e15999.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) == "path_trace.e1.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS | PT_OUTPUT_GUIDES) ==
           "path_trace.e257.rgen");
@@ -189,7 +204,7 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // Each effect (or the guides) removed makes the shader smaller.
   const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit <= PT_EFFECT_SPECULAR_COLOR; bit <<= 1) {
+  for (uint32_t bit = 1; bit <= PT_EFFECT_GLTF_SHEEN; bit <<= 1) {
     if ((PT_PATH_TRACE_EFFECT_BITS & bit) == 0) continue;  // alpha masking: no variant
     const auto without = shaders::shaderDesc(render::effectVariant("path_trace.rgen", all & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
@@ -243,6 +258,18 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   tinted.specular = 1.0f;
   tinted.specularColor = {12.5f, 3.0f, 0.2f};
   tinted.roughness = 0.3f;
+  // glTF's coat and sheen over a partly metallic, partly transmitting base:
+  // the derivation must ask for their bits, or the variant renders Disney's.
+  auto gltfLayers = disney();
+  gltfLayers.model = scene::MaterialModel::Lambert;
+  gltfLayers.metallic = 0.3f;
+  gltfLayers.specular = 0.5f;
+  gltfLayers.specTrans = 0.3f;
+  gltfLayers.clearcoat = 0.8f;
+  gltfLayers.clearcoatGloss = 0.7f;
+  gltfLayers.sheen = 1.0f;
+  gltfLayers.sheenColor = {0.9f, 0.6f, 0.3f};
+  gltfLayers.sheenRoughness = 0.4f;
   auto brushed = disney();
   brushed.metallic = 1.0f;
   brushed.roughness = 0.2f;
@@ -306,6 +333,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
       {"rough glass sphere", cornellWithSphere(glass), render::Integrator::Path},
       {"every lobe, point light", cornellWithSphere(everything, true), render::Integrator::Path},
       {"coloured dielectric F0 up to 1", cornellWithSphere(tinted), render::Integrator::Path},
+      {"glTF coat and sheen", cornellWithSphere(gltfLayers), render::Integrator::Path},
       {"glTF anisotropy (surface detail)", brushedScene, render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},

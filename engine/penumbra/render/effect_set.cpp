@@ -36,8 +36,11 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   // Even a metal: a metallic texture can leave parts of it dielectric.
   if (m.specular > 0.0f && !greyF0) effects |= PT_EFFECT_SPECULAR_COLOR;
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
-  if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT;
-  if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN;
+  // The lambert model (glTF's) has the extensions' coat and sheen
+  // (MATERIAL_FLAG_GGX_COAT, MATERIAL_FLAG_CHARLIE_SHEEN); Disney has its own.
+  const bool gltf = m.model == scene::MaterialModel::Lambert;
+  if (m.clearcoat > 0.0f) effects |= PT_EFFECT_CLEARCOAT | (gltf ? PT_EFFECT_GLTF_COAT : 0u);
+  if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN | (gltf ? PT_EFFECT_GLTF_SHEEN : 0u);
   // glTF anisotropy turns the tangent frame (effects.h): surface detail.
   if (m.anisotropyStrength > 0.0f) effects |= PT_EFFECT_TEXTURES;
   return effects;
@@ -108,7 +111,9 @@ constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
     {PT_EFFECT_ALPHA_MASK, "alpha-mask"},
     {PT_EFFECT_ENVIRONMENT, "environment"},
     {PT_EFFECT_ORTHOGRAPHIC, "orthographic"},
-    {PT_EFFECT_SPECULAR_COLOR, "specular-color"}};
+    {PT_EFFECT_SPECULAR_COLOR, "specular-color"},
+    {PT_EFFECT_GLTF_COAT, "gltf-coat"},
+    {PT_EFFECT_GLTF_SHEEN, "gltf-sheen"}};
 constexpr uint32_t namedEffects() {
   uint32_t bits = 0;
   for (const auto& [bit, name] : kEffectNames) bits |= bit;
