@@ -26,7 +26,10 @@ foreach(scene ${_builtin_scenes})
     list(APPEND _builtin_path_trace ${mask})
   endforeach()
 endforeach()
-# What the test scenes call for (logged over the whole suite).
+# What the test scenes call for (logged over the whole suite; the two with
+# GLTF_COAT+GLTF_SHEEN serve the glTF-model coat and sheen cases of
+# test_effect_set and test_textures, which the two before them served until
+# those bits had code of their own).
 penumbra_effect_masks(_tests_path_trace
   NONE DELTA_LIGHTS SPECULAR DELTA_LIGHTS+SPECULAR TRANSMISSION
   AREA_LIGHTS+TRANSMISSION AREA_LIGHTS+DELTA_LIGHTS+TRANSMISSION
@@ -36,6 +39,8 @@ penumbra_effect_masks(_tests_path_trace
   DELTA_LIGHTS+SPECULAR+TEXTURES SPECULAR+GUIDES ENVIRONMENT SPECULAR+ENVIRONMENT
   AREA_LIGHTS+DELTA_LIGHTS+TRANSMISSION+ENVIRONMENT
   AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+TRANSMISSION+CLEARCOAT+SHEEN+TEXTURES+ENVIRONMENT
+  AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+TRANSMISSION+CLEARCOAT+SHEEN+GLTF_COAT+GLTF_SHEEN
+  AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+TRANSMISSION+CLEARCOAT+SHEEN+TEXTURES+ENVIRONMENT+GLTF_COAT+GLTF_SHEEN
   SPECULAR+GUIDES+ENVIRONMENT AREA_LIGHTS+SPECULAR+SPECULAR_COLOR
   DELTA_LIGHTS+SPECULAR+TEXTURES+SPECULAR_COLOR)
 # Every effect but one: what each effect costs in code size and time
