@@ -78,6 +78,10 @@ struct DisneyMaterial {
   bool thin;
   bool lambertDiffuse;
   bool ggxCoat;  // glTF's coat (full strength, GGX) instead of Disney's
+  // glTF's coat's own normal (its normal map, or the vertex normal), unit, in
+  // this frame; (0, 0, 1) lays the coat on the base. Read where
+  // PT_COAT_NORMALS builds it.
+  float3 coatNormal;
   bool charlieSheen;  // glTF's sheen layer instead of Disney's
 };
 
@@ -121,7 +125,24 @@ float coatWeight(DisneyMaterial m) {
   return 0.25 * m.clearcoat;
 }
 
-// Everything below the clearcoat passes it twice.
+#if PT_COAT_NORMALS
+// The coat's normal in disneyEval's frame, flipped to wo's side `side`:
+// seen from below, the coat's normal is -coatNormal.
+float3 coatNormalOn(DisneyMaterial m, float side) {
+  return side > 0.0 ? m.coatNormal : float3(-m.coatNormal.x, -m.coatNormal.y, m.coatNormal.z);
+}
+#endif
+
+// The cosine of v (in disneyEval's flipped frame) to the coat's normal.
+float coatCosine(DisneyMaterial m, float side, float3 v) {
+#if PT_COAT_NORMALS
+  return dot(v, coatNormalOn(m, side));
+#else
+  return v.z;
+#endif
+}
+
+// Everything below the clearcoat passes it twice (cosines to the coat's normal).
 float coatAttenuation(DisneyMaterial m, float cosO, float cosI) {
   float c = coatWeight(m);
   return (1.0 - c * clearcoatFresnelWeight(cosO)) * (1.0 - c * clearcoatFresnelWeight(cosI));
@@ -288,17 +309,17 @@ float3 layerTransmission(float3 fresnelO, float3 fresnelI) {
 // Attenuation of the diffuse base by the dielectric specular layer, per
 // channel (what a coloured F0 reflects of a channel does not reach the base,
 // so each channel's albedo stays <= 1), and of everything below the clearcoat
-// by the clearcoat.
-float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI) {
+// by the clearcoat (`coat`: coatAttenuation).
+float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI, float coat) {
   float3 f0 = dielectricSpecularF0(m);
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
   float3 specO = fresnelSchlickFaded(f0, cosO);
   float3 specI = fresnelSchlickFaded(f0, cosI);
-  return layerTransmission(specO, specI) * coatAttenuation(m, cosO, cosI);
+  return layerTransmission(specO, specI) * coat;
 #else
   float specO = fresnelSchlickFaded(f0, cosO).x;
   float specI = fresnelSchlickFaded(f0, cosI).x;
-  return splat3((1.0 - specO) * (1.0 - specI) * coatAttenuation(m, cosO, cosI));
+  return splat3((1.0 - specO) * (1.0 - specI) * coat);
 #endif
 }
 
@@ -365,10 +386,10 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
   if (wi.z > 0.0) {
     float3 wh = normalize(wo + wi);
     float cosThetaD = dot(wi, wh);
-    float coat = coatAttenuation(m, wo.z, wi.z);
+    float coat = coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wi));
     float sheenScale = sheenLayerScaling(w, albedoI);
     if (w.diffuse > 0.0) {
-      r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z)) *
+      r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z, coat)) *
              (diffuseTerm(m, wo, wi, cosThetaD)
 #if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
               + sheenTerm(m, cosThetaD)
@@ -415,9 +436,24 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
       if (m.ggxCoat) {
         Ggx gc = ggxCoatDistribution(m);
         if (!isSpecularGgx(gc)) {
+#if PT_COAT_NORMALS
+          // The lobe about the coat's normal. The integrator multiplies f by
+          // the base frame's cosine wi.z, so f carries the coat's cosine over
+          // it: the coat's own cosine cancels out of the denominator.
+          Frame cf = frameFromNormal(coatNormalOn(m, side));
+          float3 woC = frameToLocal(cf, wo);
+          float3 wiC = frameToLocal(cf, wi);
+          if (woC.z > 0.0 && wiC.z > 0.0) {
+            float3 whC = frameToLocal(cf, wh);
+            float dg = ggxD(gc, whC) * ggxG2(gc, woC, wiC) / (4.0 * woC.z * wi.z);
+            r.f += splat3(w.clearcoat * fc * dg);
+            r.pdf += w.pClearcoat * ggxVisibleNormalPdf(gc, woC, whC) * jacobian;
+          }
+#else
           float dg = ggxD(gc, wh) * ggxG2(gc, wo, wi) / (4.0 * wo.z * wi.z);
           r.f += splat3(w.clearcoat * fc * dg);
           r.pdf += w.pClearcoat * ggxVisibleNormalPdf(gc, wo, wh) * jacobian;
+#endif
         }
       } else
 #endif
@@ -441,8 +477,10 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         float3 wh = normalize(wo + wiAbs);
         float fr = fresnelDielectric(dot(wo, wh), eta);
         float dg = ggxD(gg, wh) * ggxG2(gg, wo, wiAbs) / (4.0 * wo.z * wiAbs.z);
-        r.f += m.baseColor * (w.glass * (1.0 - fr) * dg * coatAttenuation(m, wo.z, wiAbs.z) *
-                              sheenLayerScaling(w, albedoI));
+        r.f +=
+            m.baseColor * (w.glass * (1.0 - fr) * dg *
+                           coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wiAbs)) *
+                           sheenLayerScaling(w, albedoI));
         r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(gg, wo, wh) / (4.0 * dot(wo, wh));
       }
     } else if (!isSpecularGgx(g)) {
@@ -459,7 +497,9 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
         // Radiance crossing into a denser medium is compressed by 1 / eta^2.
         float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
         r.f += m.baseColor *
-               (w.glass * ft * coatAttenuation(m, wo.z, abs(wi.z)) * sheenLayerScaling(w, albedoI));
+               (w.glass * ft *
+                coatAttenuation(m, coatCosine(m, side, wo), abs(coatCosine(m, side, wi))) *
+                sheenLayerScaling(w, albedoI));
         r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
       }
     }
@@ -512,7 +552,8 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
     s.lobe = BSDF_LOBE_SPECULAR;
     if (isSpecularGgx(g)) {
       s.wi = float3(-wo.x, -wo.y, wo.z * side);
-      s.weight = specularFresnel(m, wo.z) * (coatAttenuation(m, wo.z, wo.z) *
+      float coatO = coatCosine(m, side, wo);
+      s.weight = specularFresnel(m, wo.z) * (coatAttenuation(m, coatO, coatO) *
                                              sheenLayerScaling(w, w.sheenAlbedoO) / w.pSpecular);
       s.isDelta = true;
       return s;
@@ -554,8 +595,8 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
       s.wi = float3(wi.x, wi.y, wi.z * side);
       // Chosen with probability pGlass * (fr or 1 - fr), which cancels the Fresnel factor.
       float scale = m.thin ? 1.0 : 1.0 / (eta * eta);
-      float coat =
-          coatAttenuation(m, wo.z, abs(wi.z)) * sheenLayerScaling(w, sheenAlbedoI(m, w, abs(wi.z)));
+      float coat = coatAttenuation(m, coatCosine(m, side, wo), abs(coatCosine(m, side, wi))) *
+                   sheenLayerScaling(w, sheenAlbedoI(m, w, abs(wi.z)));
       s.weight = reflected ? splat3(w.glass * coat / w.pGlass)
                            : m.baseColor * (w.glass * scale * coat / w.pGlass);
       s.isDelta = true;
@@ -569,6 +610,24 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
 #if PT_HAS_EFFECT(PT_EFFECT_GLTF_COAT)
     if (m.ggxCoat) {
       Ggx gc = ggxCoatDistribution(m);
+#if PT_COAT_NORMALS
+      // Sampled about the coat's normal, then taken back to this frame.
+      Frame cf = frameFromNormal(coatNormalOn(m, side));
+      float3 woC = frameToLocal(cf, wo);
+      if (woC.z <= 0.0) return disneyNoSample();
+      float3 wiC = isSpecularGgx(gc)
+                       ? float3(-woC.x, -woC.y, woC.z)
+                       : reflectDirection(woC, ggxSampleVisibleNormal(gc, woC, u1, u2));
+      if (wiC.z <= 0.0) return disneyNoSample();
+      wi = frameToWorld(cf, wiC);
+      if (isSpecularGgx(gc)) {
+        if (wi.z <= 0.0) return disneyNoSample();
+        s.wi = float3(wi.x, wi.y, wi.z * side);
+        s.weight = splat3(w.clearcoat * clearcoatFresnelWeight(woC.z) / w.pClearcoat);
+        s.isDelta = true;
+        return s;
+      }
+#else
       if (isSpecularGgx(gc)) {
         s.wi = float3(-wo.x, -wo.y, wo.z * side);
         s.weight = splat3(w.clearcoat * clearcoatFresnelWeight(wo.z) / w.pClearcoat);
@@ -576,6 +635,7 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
         return s;
       }
       wi = reflectDirection(wo, ggxSampleVisibleNormal(gc, wo, u1, u2));
+#endif
     } else
 #endif
     {

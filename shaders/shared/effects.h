@@ -52,5 +52,8 @@
 #define PT_EFFECTS (PT_EFFECTS_ALL | PT_OUTPUT_GUIDES)
 #endif
 #define PT_HAS_EFFECT(effect) ((PT_EFFECTS & (effect)) != 0)
+// glTF's coat has a normal of its own (its normal map, else the vertex
+// normal) only where both the coat and surface detail are built.
+#define PT_COAT_NORMALS (PT_HAS_EFFECT(PT_EFFECT_GLTF_COAT) && PT_HAS_EFFECT(PT_EFFECT_TEXTURES))
 
 #endif

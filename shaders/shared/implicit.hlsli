@@ -196,6 +196,9 @@ SurfaceHit implicitSurfaceHit(ImplicitData o, float3 worldOrigin, float3 worldDi
   h.uv = float4(0.0, 0.0, 0.0, 0.0);
   h.color = float4(1.0, 1.0, 1.0, 1.0);
   h.shadingTangent = float3(0.0, 0.0, 0.0);
+#if PT_COAT_NORMALS
+  h.coatNormal = h.geometricNormal;
+#endif
   return h;
 }
 

@@ -50,6 +50,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.lambertDiffuse = (d.flags & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
   m.ggxCoat = (d.flags & MATERIAL_FLAG_GGX_COAT) != 0u;
   m.charlieSheen = (d.flags & MATERIAL_FLAG_CHARLIE_SHEEN) != 0u;
+  m.coatNormal = float3(0.0, 0.0, 1.0);  // the path tracer sets glTF's in its shading frame
   if (d.model == MATERIAL_MODEL_PHONG) {
     PhongMaterial p = unpackPhong(d);
     m.metallic = p.reflectivity;

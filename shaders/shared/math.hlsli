@@ -35,4 +35,8 @@ Frame frameFromNormal(float3 n) {
 
 float3 frameToWorld(Frame f, float3 v) { return v.x * f.tangent + v.y * f.bitangent + v.z * f.normal; }
 
+float3 frameToLocal(Frame f, float3 v) {
+  return float3(dot(v, f.tangent), dot(v, f.bitangent), dot(v, f.normal));
+}
+
 #endif

@@ -55,10 +55,6 @@ float3 sampleUniformSphere(float u0, float u1) {
 
 bool isFiniteColor(float3 c) { return !any(isnan(c)) && !any(isinf(c)); }
 
-float3 frameToLocal(Frame f, float3 v) {
-  return float3(dot(v, f.tangent), dot(v, f.bitangent), dot(v, f.normal));
-}
-
 // The shading frame about unit n. An anisotropic material's lobes follow
 // the mesh's tangents, so its frame is oriented by the hit's vertex tangent
 // where it has one (turned by glTF's anisotropy direction: triangleSurfaceHit). Every other BSDF is the same about any tangent: its
@@ -454,7 +450,13 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   float3 ng = hit.geometricNormal;
   Frame frame = shadingFrame(hit, shadingNormalFor(hit, -direction), material);
   float3 wo = frameToLocal(frame, -direction);
-  // Unlit, at the maximum depth, or exactly grazing (no side to scatter into).
+#if PT_COAT_NORMALS
+  // glTF's coat has a normal of its own, bent for the viewer as the base's
+  // is; Disney's coat lies on the base.
+  if (material.ggxCoat)
+    material.coatNormal = frameToLocal(frame, normalSeenFrom(hit.coatNormal, ng, -direction));
+#endif
+    // Unlit, at the maximum depth, or exactly grazing (no side to scatter into).
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   if (unlit || p.depth >= c.maxDepth || wo.z == 0.0 || dot(direction, ng) == 0.0) {
 #else

@@ -256,13 +256,19 @@ struct MaterialData {
   float anisotropyStrength;
   float2 anisotropyDirection;  // (cos, sin) of the rotation from the tangent towards the bitangent
   uint anisotropyTexture;  // rg: direction in tangent space, rotated further; b: scales strength
-  uint unused6;
+  // glTF's coat normal map (tangent space, xy scaled by clearcoatNormalScale);
+  // without it the glTF coat follows the vertex normal.
+  uint clearcoatNormalTexture;
   // Multiplies the dielectric F0 per channel before its clamp to 1 (glTF
   // KHR_materials_specular's colour times F0(ior) / 0.08; 1 for Disney).
   float3 specularColor;
   uint sheenRoughnessTexture;  // alpha scales sheenRoughness
   float3 sheenColor;  // multiplies the sheen per channel (glTF's sheen colour's hue; 1 for Disney)
   float sheenRoughness;  // glTF's sheen fibres (MATERIAL_FLAG_CHARLIE_SHEEN); unused by Disney's
+  float clearcoatNormalScale;
+  uint unused7;
+  uint unused8;
+  uint unused9;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -392,7 +398,7 @@ static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 
               offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
 static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
               offsetof(InstanceData, vertexAttributes) == 112);
-static_assert(sizeof(MaterialData) == 224 && offsetof(MaterialData, emission) == 16 &&
+static_assert(sizeof(MaterialData) == 240 && offsetof(MaterialData, emission) == 16 &&
               offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
               offsetof(MaterialData, baseColorTexture) == 112 &&
               offsetof(MaterialData, normalScale) == 144 &&
@@ -400,7 +406,8 @@ static_assert(sizeof(MaterialData) == 224 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, anisotropyDirection) == 176 &&
               offsetof(MaterialData, specularColor) == 192 &&
               offsetof(MaterialData, sheenColor) == 208 &&
-              offsetof(MaterialData, sheenRoughness) == 220);
+              offsetof(MaterialData, sheenRoughness) == 220 &&
+              offsetof(MaterialData, clearcoatNormalScale) == 224);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

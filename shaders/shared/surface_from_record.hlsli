@@ -80,6 +80,13 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
   float3 worldBitangent = transformVector3x4(instance.objectToWorld0, instance.objectToWorld1,
                                              instance.objectToWorld2, objectBitangent);
   MaterialData material = loadMaterial(instance.materialIndex);
+#if PT_COAT_NORMALS
+  // The coat's own map, or the vertex normal: not the base's map (glTF).
+  hit.coatNormal =
+      resolveShadingNormal(mapNormal(material.clearcoatNormalTexture, material.clearcoatNormalScale,
+                                     hit.uv, worldNormal, worldTangent, worldBitangent),
+                           hit.geometricNormal);
+#endif
   worldNormal = applyNormalMap(material, hit.uv, worldNormal, worldTangent, worldBitangent);
   if (material.anisotropyStrength > 0.0)
     worldTangent = anisotropyTangent(material, hit.uv, worldTangent, worldBitangent);

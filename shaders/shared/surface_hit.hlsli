@@ -2,6 +2,7 @@
 // ray's payload). World space throughout.
 #ifndef PENUMBRA_SURFACE_HIT_HLSLI
 #define PENUMBRA_SURFACE_HIT_HLSLI
+#include "effects.h"
 
 // 76 bytes (RayTracingPipelineDesc::maxPayloadBytes in the path tracer).
 struct SurfaceHit {
@@ -14,6 +15,9 @@ struct SurfaceHit {
   float3 shadingTangent;  // unit and orthogonal to shadingNormal, or zero without vertex tangents
   float4 uv;              // xy TEXCOORD_0, zw TEXCOORD_1 (zero without)
   float4 color;           // COLOR_0, linear RGBA: multiplies base colour and alpha (1 without)
+#if PT_COAT_NORMALS
+  float3 coatNormal;  // glTF's coat: unit, on geometricNormal's side (its normal map applied)
+#endif
 };
 
 SurfaceHit surfaceMiss() {
@@ -27,6 +31,9 @@ SurfaceHit surfaceMiss() {
   h.uv = float4(0.0, 0.0, 0.0, 0.0);
   h.color = float4(1.0, 1.0, 1.0, 1.0);
   h.shadingTangent = float3(0.0, 0.0, 0.0);
+#if PT_COAT_NORMALS
+  h.coatNormal = float3(0.0, 0.0, 1.0);
+#endif
   return h;
 }
 
@@ -107,17 +114,21 @@ float3 bendForValidReflection(float3 n, float3 ng, float3 wo) {
 }
 
 // The normal to shade with for a viewer in direction `wo` (unit, away from
-// the surface): the shading normal, bent for a valid mirror reflection
+// the surface): the shading normal n (or the coat's), bent for a valid mirror reflection
 // (bendForValidReflection), unless wo lies on the other side of it than of
 // the geometric surface; then the shading normal cannot describe what the
 // viewer sees and the geometric normal takes over (no black fringes, no
 // negative cosines). The result stays on the geometric normal's side.
-float3 shadingNormalFor(SurfaceHit hit, float3 wo) {
-  float sideG = dot(wo, hit.geometricNormal);
-  float sideS = dot(wo, hit.shadingNormal);
-  if (!(sideG * sideS > 0.0)) return hit.geometricNormal;
+float3 normalSeenFrom(float3 n, float3 ng, float3 wo) {
+  float sideG = dot(wo, ng);
+  float sideS = dot(wo, n);
+  if (!(sideG * sideS > 0.0)) return ng;
   float facing = sideG > 0.0 ? 1.0 : -1.0;
-  return facing * bendForValidReflection(facing * hit.shadingNormal, facing * hit.geometricNormal, wo);
+  return facing * bendForValidReflection(facing * n, facing * ng, wo);
+}
+
+float3 shadingNormalFor(SurfaceHit hit, float3 wo) {
+  return normalSeenFrom(hit.shadingNormal, hit.geometricNormal, wo);
 }
 
 // Whether wi continues on the side of the geometric surface that the shading

@@ -109,14 +109,19 @@ float materialOcclusion(MaterialData d, float4 uv) {
 // normal; t and b: tangent and bitangent, bitangent = cross(n, t) * w taken in
 // object space so mirroring transforms keep the map's handedness). The map's
 // xy are scaled by normalScale (glTF normalTexture.scale). Returns an
-// unnormalised normal; a degenerate frame returns n.
-float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
-  if (d.normalTexture == PT_NO_TEXTURE) return n;
-  float3 m = sampleTextureRef(d.normalTexture, uv).xyz * 2.0 - splat3(1.0);
-  m.x *= d.normalScale;
-  m.y *= d.normalScale;
+// unnormalised normal; a degenerate frame returns n. glTF's coat normal map
+// (clearcoatNormalTexture) is read the same way.
+float3 mapNormal(uint map, float scale, float4 uv, float3 n, float3 t, float3 b) {
+  if (map == PT_NO_TEXTURE) return n;
+  float3 m = sampleTextureRef(map, uv).xyz * 2.0 - splat3(1.0);
+  m.x *= scale;
+  m.y *= scale;
   float3 mapped = t * m.x + b * m.y + n * m.z;
   return dot(t, t) > 0.0 && dot(b, b) > 0.0 ? mapped : n;
+}
+
+float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
+  return mapNormal(d.normalTexture, d.normalScale, uv, n, t, b);
 }
 
 // The tangent glTF anisotropy stretches the lobes along

@@ -473,6 +473,53 @@ TEST_CASE("textures: a normal map shades as the vertex normals it encodes",
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+TEST_CASE("textures: glTF's coat normal map shades the coat as the vertex normals it encodes",
+          "[render][gpu][textures]") {
+  // A black base without a specular layer under a rough glTF coat: the
+  // point light's highlight is the coat's alone. KHR_materials_clearcoat:
+  // the coat follows clearcoatNormalTexture (xy x its scale), else the
+  // vertex normal, never the base's normal map.
+  auto device = test::makeTestDevice();
+  const glm::u8vec4 texel(200, 100, 230, 255);
+  const float scale = 0.7f;
+  glm::vec3 m = glm::vec3(texel) / 255.0f * 2.0f - 1.0f;
+  m.x *= scale;
+  m.y *= scale;
+  const glm::vec3 encoded = glm::normalize(m);
+
+  auto coat = scene::Material::lambert("coat", glm::vec3(0.0f));
+  coat.specular = 0.0f;
+  coat.clearcoat = 1.0f;
+  coat.clearcoatGloss = 0.6f;
+  auto withMap = [&](scene::Scene s) {
+    s.meshes[0].tangents.assign(4, glm::vec4(1, 0, 0, 1));
+    s.textures = {makeTexture(1, 1, false, [&](uint32_t, uint32_t) { return texel; })};
+    s.textureRefs = {scene::TextureRef{}};
+    return s;
+  };
+  auto reference = litQuadScene(coat);
+  reference.meshes[0].normals.assign(4, encoded);
+  auto mapped = withMap(litQuadScene(coat));
+  mapped.materials[0].clearcoatNormalTexture = 0;
+  mapped.materials[0].clearcoatNormalScale = scale;
+  auto baseMapOnly = withMap(litQuadScene(coat));
+  baseMapOnly.materials[0].normalTexture = 0;
+  baseMapOnly.materials[0].normalScale = scale;
+  const auto expected = test::renderScene(*device, reference, kSize, kSize, 4, oneBounce());
+  const auto image = test::renderScene(*device, mapped, kSize, kSize, 4, oneBounce());
+  const auto flat = test::renderScene(*device, litQuadScene(coat), kSize, kSize, 4, oneBounce());
+  const auto baseMapped = test::renderScene(*device, baseMapOnly, kSize, kSize, 4, oneBounce());
+  INFO("coat map vs vertex normals " << relativeMaxDifference(image, expected) << ", vs flat "
+                                     << relativeMaxDifference(image, flat)
+                                     << "; base map only vs flat "
+                                     << relativeMaxDifference(baseMapped, flat));
+  REQUIRE(relativeMaxDifference(image, expected) < 2e-3f);
+  REQUIRE(relativeMaxDifference(image, flat) > 0.05f);
+  // The base's normal map leaves the coat (and this black base) as it was.
+  REQUIRE(relativeMaxDifference(baseMapped, flat) < 2e-3f);
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 namespace {
 
 // 4x4 base-colour texture, mid grey, alpha alternating 0 and 255 per texel.

@@ -315,17 +315,23 @@ TEST_CASE("glTF KHR_materials_* textures fill their slots; unread ones are warne
           "[gltf]") {
   const auto r = scene::importGltf(gltf("textures.gltf"));
   const auto& s = r.scene;
-  // 'coated': clearcoat and its roughness from texture 1 (image 0), linear;
-  // its normal map is not read.
+  // 'coated': clearcoat, its roughness and its normal map from texture 1
+  // (image 0), linear; the normal map reads TEXCOORD_1, scaled by 0.6. The
+  // volume's thickness texture is not read.
   const auto& coated = materialNamed(s, "coated");
   CHECK(coated.clearcoat == Approx(0.5f));
-  for (uint32_t slot : {coated.clearcoatTexture, coated.clearcoatRoughnessTexture}) {
+  for (uint32_t slot :
+       {coated.clearcoatTexture, coated.clearcoatRoughnessTexture, coated.clearcoatNormalTexture}) {
     requireChecker2x2(texture(s, slot));
     CHECK_FALSE(texture(s, slot).srgb);
   }
+  CHECK(ref(s, coated.clearcoatNormalTexture).texCoord == 1u);
+  CHECK(coated.clearcoatNormalScale == Approx(0.6f));
+  CHECK(materialNamed(s, "layered").clearcoatNormalScale == 1.0f);
+  CHECK_FALSE(hasWarning(r, "KHR_materials_clearcoat textures"));
   CHECK(hasWarning(r,
-                   "material 8 'coated': KHR_materials_clearcoat textures "
-                   "(clearcoatNormalTexture) are not supported; factors used"));
+                   "material 8 'coated': KHR_materials_volume textures "
+                   "(thicknessTexture) are not supported; factors used"));
   // 'layered': sheen and specular colour are colours (sRGB), the specular
   // strength and transmission data; the transmission's texCoord and
   // transform are its own.

@@ -29,10 +29,12 @@ struct BsdfEvalResult {
 class BsdfHarness {
  public:
   explicit BsdfHarness(rhi::IDevice& device);
+  // `coatNormal`: the glTF coat's own normal in the shading frame (unit).
   std::vector<BsdfSampleResult> sample(const scene::Material& m, glm::vec3 wo, uint32_t count,
-                                       uint32_t seed);
+                                       uint32_t seed, glm::vec3 coatNormal = {0, 0, 1});
   std::vector<BsdfEvalResult> eval(const scene::Material& m, glm::vec3 wo,
-                                   const std::vector<glm::vec3>& wi);
+                                   const std::vector<glm::vec3>& wi,
+                                   glm::vec3 coatNormal = {0, 0, 1});
   // Per item: (bad eval, bad sample, bad direction) flags over random extreme inputs.
   std::vector<glm::vec4> sweep(uint32_t count, uint32_t seed);
   // Per item: orthonormality error of the frame of an extreme normal.
@@ -40,7 +42,7 @@ class BsdfHarness {
 
  private:
   std::vector<glm::vec4> run(uint32_t mode, uint32_t count, uint32_t seed, glm::vec3 wo,
-                             const gpu::MaterialData& material,
+                             glm::vec3 coatNormal, const gpu::MaterialData& material,
                              const std::vector<glm::vec4>& directions, uint32_t resultsPerItem);
   ComputeHarness harness_;
 };

@@ -41,6 +41,7 @@ struct Case {
   std::string name;
   scene::Material material;
   glm::vec3 wo;
+  glm::vec3 coatNormal{0.0f, 0.0f, 1.0f};  // glTF's coat's own normal (its normal map)
 };
 
 // Unpolarised Fresnel reflectance of a smooth dielectric (the textbook
@@ -157,6 +158,21 @@ std::vector<Case> chiSquareCases() {
     m.clearcoat = 1.0f;
     m.clearcoatGloss = 0.7f;
     cases.push_back({"glTF coat alpha 0.09" + at.str(), m, incident(c, false)});
+    // The same coat with a normal of its own (clearcoatNormalTexture),
+    // tilted 30 degrees away from the base's: sampled about that normal,
+    // then taken back into the shading frame. At 60 degrees and at grazing
+    // incidence part of the view lies below the coat's hemisphere. A
+    // rougher coat spreads the lobe over the base's horizon too.
+    for (float gloss : {0.7f, 0.3f}) {
+      m.clearcoatGloss = gloss;
+      const float tilt = 0.5235988f, phi = 2.0f;
+      const glm::vec3 n(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi),
+                        std::cos(tilt));
+      std::ostringstream name;
+      name << "glTF coat alpha " << (1 - gloss) * (1 - gloss) << ", coat normal tilted 30 degrees"
+           << at.str();
+      cases.push_back({name.str(), m, incident(c, false), n});
+    }
   }
   // The Lambert model's sheen, KHR_materials_sheen's layer, a lobe of its
   // own sampled by cosine: over a plastic, and at sheen roughness 0.05
@@ -199,7 +215,7 @@ struct ChiSquare {
 ChiSquare chiSquareTest(BsdfHarness& h, const Case& c, uint32_t seed) {
   const double dTheta = kPi / kThetaBins, dPhi = 2 * kPi / kPhiBins;
   std::vector<double> observed(kThetaBins * kPhiBins, 0.0), expected(kThetaBins * kPhiBins, 0.0);
-  for (const auto& s : h.sample(c.material, c.wo, kSamples, seed)) {
+  for (const auto& s : h.sample(c.material, c.wo, kSamples, seed, c.coatNormal)) {
     if (s.lobe == 4u || s.isDelta) continue;
     const double theta = std::acos(std::clamp<double>(s.wi.z, -1.0, 1.0));
     double phi = std::atan2(double(s.wi.y), double(s.wi.x));
@@ -239,7 +255,7 @@ ChiSquare chiSquareTest(BsdfHarness& h, const Case& c, uint32_t seed) {
           weights.push_back(std::sin(theta) * dTheta * dPhi * reg.size * reg.size / (n * n));
         }
     }
-    const auto evals = h.eval(c.material, c.wo, dirs);
+    const auto evals = h.eval(c.material, c.wo, dirs, c.coatNormal);
     integral.assign(regions.size(), 0.0);
     lo.assign(regions.size(), 1e300);
     hi.assign(regions.size(), 0.0);
@@ -361,10 +377,10 @@ struct Albedo {
   glm::dvec3 mean, sigma;
 };
 Albedo directionalAlbedo(BsdfHarness& harness, const scene::Material& m, glm::vec3 wo,
-                         uint32_t count, uint32_t seed) {
+                         uint32_t count, uint32_t seed, glm::vec3 coatNormal = {0, 0, 1}) {
   const double eta = wo.z > 0 ? m.ior : 1.0 / m.ior;
   glm::dvec3 sum(0.0), sumSq(0.0);
-  const auto samples = harness.sample(m, wo, count, seed);
+  const auto samples = harness.sample(m, wo, count, seed, coatNormal);
   for (const auto& s : samples) {
     glm::dvec3 w(s.weight);
     if (!m.thin && s.lobe != 4u && s.wi.z * wo.z < 0) w *= eta * eta;
@@ -385,7 +401,7 @@ TEST_CASE("Disney BSDF: directional albedo never exceeds 1", "[shaders][bsdf][gp
   for (const auto& c : chiSquareCases()) {
     auto m = c.material;
     m.baseColor = glm::vec3(1.0f);  // the most energy any parameter set can reflect
-    const Albedo a = directionalAlbedo(harness, m, c.wo, 1u << 18, seed++);
+    const Albedo a = directionalAlbedo(harness, m, c.wo, 1u << 18, seed++, c.coatNormal);
     for (int k = 0; k < 3; ++k) {
       INFO(c.name << ": albedo of channel " << k << " " << a.mean[k] << " +- " << a.sigma[k]);
       CHECK(a.mean[k] <= 1.0 + 3.0 * a.sigma[k]);
@@ -442,6 +458,22 @@ TEST_CASE(
       INFO("cos " << cosTheta << ": weight " << s.weight.x << " vs " << expected);
       REQUIRE(s.isDelta);
       REQUIRE(glm::length(s.wi - glm::vec3(-wo.x, -wo.y, wo.z)) < 1e-6f);
+      for (int k = 0; k < 3; ++k) REQUIRE(s.weight[k] == Catch::Approx(expected).epsilon(1e-5));
+    }
+  }
+  // With a normal of its own (clearcoatNormalTexture), the mirror is about
+  // that normal n: wi = 2 (wo.n) n - wo, weight clearcoat x F(wo.n).
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, -0.2, 1.0));
+  for (float cosTheta : {1.0f, 0.7f}) {
+    const glm::vec3 wo = incident(cosTheta, false);
+    const double cosN = glm::dot(glm::dvec3(wo), n);
+    const glm::dvec3 mirror = 2.0 * cosN * n - glm::dvec3(wo);
+    const double expected = 0.6 * (0.04 + 0.96 * std::pow(1.0 - cosN, 5.0));
+    for (const auto& s : harness.sample(m, wo, 1024, 12, glm::vec3(n))) {
+      INFO("cos " << cosTheta << ": wi " << s.wi.x << " " << s.wi.y << " " << s.wi.z << " vs "
+                  << mirror.x << " " << mirror.y << " " << mirror.z);
+      REQUIRE(s.isDelta);
+      REQUIRE(glm::length(glm::dvec3(s.wi) - mirror) < 1e-5);
       for (int k = 0; k < 3; ++k) REQUIRE(s.weight[k] == Catch::Approx(expected).epsilon(1e-5));
     }
   }

@@ -275,6 +275,46 @@ TEST_CASE(
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+TEST_CASE(
+    "glTF BRDF: a coat with its own normal is the extension's coat about that normal, times its "
+    "cosine over the base's",
+    "[shaders][bsdf][gpu][gltf][spirv-only]") {
+  // clearcoatNormalTexture tilts the coat's normal n away from the base's
+  // (z). The extension's coat term is then D V F in n's frame, integrated
+  // against n.l; the engine's integrator multiplies by the base's cosine
+  // l.z, so f l.z must equal the coat's BRDF in n's frame times n.l. The
+  // frame here is a rotation about z x n (Rodrigues), not the shader's.
+  auto device = test::makeTestDevice();
+  test::BsdfHarness harness(*device);
+  const glm::dvec3 n = glm::normalize(glm::dvec3(-0.35, 0.25, 1.0));
+  const glm::dvec3 axis = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), n));
+  const double angle = std::acos(n.z);
+  // Rotates by -angle about axis: n to z (into n's frame).
+  auto toCoat = [&](glm::dvec3 v) {
+    const double c = std::cos(-angle), s = std::sin(-angle);
+    return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0 - c);
+  };
+  for (double roughness : {0.3, 0.7}) {
+    const auto m = clearcoatExtensionMaterial(0.7, roughness);
+    for (const auto& p : kPairs) {
+      const glm::dvec3 vc = toCoat(p.v), lc = toCoat(p.l);
+      const auto e = harness.eval(m, glm::vec3(p.v), {glm::vec3(p.l)}, glm::vec3(n))[0];
+      double ref = 0.0;
+      if (vc.z > 0.0 && lc.z > 0.0) {
+        // The microfacet Fresnel F(VdotH), as the untilted case above says.
+        const double vh = glm::dot(p.v, glm::normalize(p.v + p.l));
+        const double ratio =
+            (0.04 + 0.96 * std::pow(1.0 - vh, 5.0)) / (0.04 + 0.96 * std::pow(1.0 - vc.z, 5.0));
+        ref = clearcoatExtension(0.7, roughness, vc, lc) * lc.z * ratio;
+      }
+      INFO("roughness " << roughness << " v.z " << p.v.z << " l.z " << p.l.z << " (coat frame "
+                        << vc.z << ", " << lc.z << "): f l.z " << e.f.x * p.l.z << " vs " << ref);
+      REQUIRE(e.f.x * p.l.z == Catch::Approx(ref).epsilon(2e-4).margin(1e-7));
+    }
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 namespace {
 
 // A base of colour `base` with ior 1 (F0 0: no specular layer) under

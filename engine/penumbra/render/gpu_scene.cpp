@@ -214,6 +214,8 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.specularTexture = m.specularTexture;
   d.specularColorTexture = m.specularColorTexture;
   d.anisotropyTexture = m.anisotropyTexture;
+  d.clearcoatNormalTexture = m.clearcoatNormalTexture;
+  d.clearcoatNormalScale = m.clearcoatNormalScale;
   // Only the Disney lobes have it: a Phong material mapped onto Disney in
   // the path tracer (material.hlsli) has no tangent frame to stretch along,
   // and the effect bit that holds the code is not derived for Phong.

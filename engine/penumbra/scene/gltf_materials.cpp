@@ -217,6 +217,11 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     m.clearcoat = clamp01(number(*e, "clearcoatFactor", 0.0));
     // The Lambert model's coat is this extension's: alpha = (1 - gloss)^2.
     m.clearcoatGloss = 1.0f - clamp01(number(*e, "clearcoatRoughnessFactor", 0.0));
+    const tinygltf::Value& normal = e->Get("clearcoatNormalTexture");
+    if (normal.IsObject()) {
+      const float scale = float(number(normal, "scale", 1.0));
+      m.clearcoatNormalScale = std::isfinite(scale) ? scale : 1.0f;
+    }
   }
 
   if (const auto* e = extension(src, "KHR_materials_sheen")) {

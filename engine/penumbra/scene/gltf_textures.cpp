@@ -304,6 +304,8 @@ const std::vector<ExtensionTexture>& extensionTextures() {
       {"KHR_materials_clearcoat", "clearcoatTexture", false, &Material::clearcoatTexture},
       {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", false,
        &Material::clearcoatRoughnessTexture},
+      {"KHR_materials_clearcoat", "clearcoatNormalTexture", false,
+       &Material::clearcoatNormalTexture},
       {"KHR_materials_transmission", "transmissionTexture", false, &Material::transmissionTexture},
       {"KHR_materials_sheen", "sheenColorTexture", true, &Material::sheenColorTexture},
       {"KHR_materials_sheen", "sheenRoughnessTexture", false, &Material::sheenRoughnessTexture},

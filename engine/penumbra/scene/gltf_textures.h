@@ -72,8 +72,8 @@ void setTextureTransform(TextureRef& ref, glm::vec2 offset, float rotation, glm:
 
 // The KHR_materials_* textures read, each with the Material slot it fills
 // (scene.h says which channel scales which parameter) and its colour space.
-// Others (clearcoatNormalTexture, thicknessTexture,
-// those of extensions not read) are warned about and their factors used.
+// Others (thicknessTexture, those of extensions not read) are warned about
+// and their factors used.
 struct ExtensionTexture {
   const char* extension;
   const char* key;

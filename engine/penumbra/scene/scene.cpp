@@ -221,11 +221,13 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
     if (ref != Material::kNoTexture && ref >= scene.textureRefs.size())
       fail(fmt::format("material '{}' uses texture reference {} of {}", m.name, ref,
                        scene.textureRefs.size()));
-  if (!std::isfinite(m.normalScale) || !unit(m.occlusionStrength) || !unit(m.alpha) ||
+  if (!std::isfinite(m.normalScale) || !std::isfinite(m.clearcoatNormalScale) ||
+      !unit(m.occlusionStrength) || !unit(m.alpha) ||
       !(m.alphaCutoff >= 0.0f && std::isfinite(m.alphaCutoff)))
     fail(
-        fmt::format("material '{}': normalScale must be finite, occlusionStrength and alpha "
-                    "lie in [0, 1] and alphaCutoff be finite and non-negative",
+        fmt::format("material '{}': normalScale and clearcoatNormalScale must be finite, "
+                    "occlusionStrength and alpha lie in [0, 1] and alphaCutoff be finite and "
+                    "non-negative",
                     m.name));
 }
 

@@ -133,6 +133,11 @@ struct Material {
   // Red and green: the anisotropy direction in tangent space ([0, 1] for
   // [-1, 1]), turned further by anisotropyRotation; blue scales the strength.
   uint32_t anisotropyTexture = kNoTexture;
+  // KHR_materials_clearcoat's own normal map (tangent space, xy scaled by
+  // clearcoatNormalScale). Without it the glTF coat follows the vertex
+  // normal, not the base's normal map (the extension says so).
+  uint32_t clearcoatNormalTexture = kNoTexture;
+  float clearcoatNormalScale = 1.0f;
   float normalScale = 1.0f;
   float occlusionStrength = 1.0f;
   float alpha = 1.0f;  // base colour alpha factor
@@ -150,19 +155,19 @@ struct Material {
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // Every texture slot above, for code that treats them alike (validation,
   // merging scenes, hashing, the textures' effect bit).
-  std::array<uint32_t, 13> textures() const {
+  std::array<uint32_t, 14> textures() const {
     return {baseColorTexture,          metallicRoughnessTexture, normalTexture,
             emissiveTexture,           occlusionTexture,         clearcoatTexture,
             clearcoatRoughnessTexture, transmissionTexture,      sheenColorTexture,
             sheenRoughnessTexture,     specularTexture,          specularColorTexture,
-            anisotropyTexture};
+            anisotropyTexture,         clearcoatNormalTexture};
   }
-  std::array<uint32_t*, 13> textureSlots() {
+  std::array<uint32_t*, 14> textureSlots() {
     return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,
             &emissiveTexture,           &occlusionTexture,         &clearcoatTexture,
             &clearcoatRoughnessTexture, &transmissionTexture,      &sheenColorTexture,
             &sheenRoughnessTexture,     &specularTexture,          &specularColorTexture,
-            &anisotropyTexture};
+            &anisotropyTexture,         &clearcoatNormalTexture};
   }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));

@@ -14,7 +14,7 @@ namespace {
 // then update the count.
 // Material::emissionIsLighting only decides whether the default environment
 // is added, and the environment is hashed: not hashed.
-static_assert(fieldCount<Material>() == 47, "a Material field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Material>() == 49, "a Material field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Camera>() == 9, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
@@ -46,7 +46,7 @@ void hashMaterial(ContentHash& h, const Material& m) {
   h.value(m.attenuationDistance);
   for (float v : {m.ks, m.exponent, m.reflectivity, m.transparency}) h.value(v);
   for (uint32_t t : m.textures()) h.value(t);
-  for (float v : {m.normalScale, m.occlusionStrength, m.alpha}) h.value(v);
+  for (float v : {m.normalScale, m.occlusionStrength, m.alpha, m.clearcoatNormalScale}) h.value(v);
   h.value(m.alphaMode);
   h.value(m.alphaCutoff);
 }

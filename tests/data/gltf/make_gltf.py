@@ -682,9 +682,13 @@ def textures():
         {"name": "rgba16", "pbrMetallicRoughness": {"baseColorTexture": {"index": 6}}},
         {"name": "grey16", "pbrMetallicRoughness": {"baseColorTexture": {"index": 7}}},
         {"name": "blend", "alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
-        {"name": "coated", "extensions": {"KHR_materials_clearcoat": {
-            "clearcoatFactor": 0.5, "clearcoatTexture": {"index": 1},
-            "clearcoatRoughnessTexture": {"index": 1}, "clearcoatNormalTexture": {"index": 1}}}},
+        {"name": "coated", "extensions": {
+            "KHR_materials_clearcoat": {
+                "clearcoatFactor": 0.5, "clearcoatTexture": {"index": 1},
+                "clearcoatRoughnessTexture": {"index": 1},
+                "clearcoatNormalTexture": {"index": 1, "texCoord": 1, "scale": 0.6}},
+            # Not read: warned about.
+            "KHR_materials_volume": {"thicknessFactor": 0.5, "thicknessTexture": {"index": 1}}}},
         {"name": "layered", "extensions": {
             "KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1], "sheenColorTexture": {"index": 3},
                                     "sheenRoughnessTexture": {"index": 1}},
@@ -701,7 +705,7 @@ def textures():
     ]
     b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
                                "KHR_materials_transmission", "KHR_materials_anisotropy",
-                               "KHR_texture_transform"]
+                               "KHR_materials_volume", "KHR_texture_transform"]
     b.write_gltf("textures.gltf")
 
     # The checker again, stored in the .glb's binary chunk.

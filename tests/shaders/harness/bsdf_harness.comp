@@ -25,6 +25,7 @@ layout(push_constant, std430) uniform Push {
   uint gSeed;
   uint gPad;
   float4 gWo;
+  float4 gCoatNormal;  // DisneyMaterial.coatNormal for MODE_SAMPLE and MODE_EVAL
 };
 layout(set = 0, binding = PENUMBRA_T(0), std430) readonly buffer Materials { MaterialData gMaterial[]; };
 layout(set = 0, binding = PENUMBRA_T(1), std430) readonly buffer Directions { float4 gDirections[]; };
@@ -63,6 +64,7 @@ void main() {
   if (i >= gCount) return;
   if (gMode == MODE_SAMPLE) {
     DisneyMaterial m = unpackDisney(gMaterial[0]);
+    m.coatNormal = gCoatNormal.xyz;
     Rng rng = rngCreate(uint2(i, 0u), 0u, gSeed, RNG_SAMPLER_RANDOM);
     uint k = pcgHash(gSeed);
     float u0 = float(pcgHash(pcgHash(3u * i + 0u) ^ k) >> 8u) * (1.0 / 16777216.0);
@@ -73,6 +75,7 @@ void main() {
     gResults[2u * i + 1u] = float4(s.weight, float(s.lobe) + (s.isDelta ? 16.0 : 0.0));
   } else if (gMode == MODE_EVAL) {
     DisneyMaterial m = unpackDisney(gMaterial[0]);
+    m.coatNormal = gCoatNormal.xyz;
     float3 wi = gDirections[i].xyz;
     BsdfEval forward = disneyEval(m, gWo.xyz, wi);
     BsdfEval backward = disneyEval(m, wi, gWo.xyz);
@@ -113,6 +116,9 @@ void main() {
     d.sheenColor = float3(pick(rng), pick(rng), pick(rng));
     d.sheenRoughness = pick(rng);
     DisneyMaterial m = unpackDisney(d);
+    // Half the time a coat normal of its own, any direction (the path
+    // tracer keeps it on the geometric side, not always the shading one).
+    if (rngNext(rng) < 0.5) m.coatNormal = pickDirection(rng);
     float3 wo = pickDirection(rng);
     float3 wi = pickDirection(rng);
     BsdfEval e = disneyEval(m, wo, wi);

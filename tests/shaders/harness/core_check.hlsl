@@ -84,6 +84,8 @@ MaterialData loadMaterial(uint index) {
   m.occlusionTexture = PT_NO_TEXTURE;
   m.alphaMode = MATERIAL_ALPHA_OPAQUE;
   m.normalScale = 1.0;
+  m.clearcoatNormalTexture = PT_NO_TEXTURE;
+  m.clearcoatNormalScale = 1.0;
   m.occlusionStrength = 1.0;
   m.alpha = 1.0;
   m.alphaCutoff = 0.5;
