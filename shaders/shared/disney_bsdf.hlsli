@@ -12,6 +12,10 @@
 //   diffuse   (1-m)(1-t)   Burley diffuse with retro-reflection, blended towards a
 //                          Hanrahan-Krueger-like flat term by `subsurface`; or
 //                          Lambert for materials marked so (glTF, the Cornell box);
+//             with diffuseTransmission d, a share d of it is Lambertian
+//             transmission of diffuseTransmissionColor to the other side
+//             (KHR_materials_diffuse_transmission), dimmed by the layers
+//             above as the reflection is;
 //   sheen     (1-m)(1-t)   sheen * lerp(1, tint, sheenTint) * sheenColor
 //                          * SchlickWeight(cos theta_d); or, for the Lambert model
 //                          (glTF's), KHR_materials_sheen's layer over diffuse,
@@ -75,6 +79,8 @@ struct DisneyMaterial {
   float specTrans;
   float ior;
   float subsurface;
+  float diffuseTransmission;        // the diffuse lobe's share sent to the other side
+  float3 diffuseTransmissionColor;  // its colour (the reflected share keeps baseColor)
   bool thin;
   bool lambertDiffuse;
   bool ggxCoat;  // glTF's coat (full strength, GGX) instead of Disney's
@@ -250,7 +256,13 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
     disneySheen = 0.0;
   }
 #endif
-  float eDiffuse = w.diffuse * (luminance(m.baseColor) + disneySheen) * below;
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+  float diffuseColor =
+      lerp(luminance(m.baseColor), luminance(m.diffuseTransmissionColor), m.diffuseTransmission);
+#else
+  float diffuseColor = luminance(m.baseColor);
+#endif
+  float eDiffuse = w.diffuse * (diffuseColor + disneySheen) * below;
   float eSpecular = luminance(specularFresnel(m, cosThetaO)) * below;
   float eGlass = w.glass * below;
   float eClearcoat = w.clearcoat * (0.04 + 0.96 * schlickWeight(cosThetaO));
@@ -368,6 +380,62 @@ float3 reflectDirection(float3 wo, float3 wm) { return 2.0 * dot(wo, wm) * wm - 
 // reflection from the back).
 float disneyEta(DisneyMaterial m, float side) { return (side > 0.0 || m.thin) ? m.ior : 1.0 / m.ior; }
 
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+// disneyEval's glass lobe for wi on the other side of the surface (wi.z < 0).
+void addGlassTransmission(DisneyMaterial m, LobeWeights w, Ggx g, float eta, float side, float3 wo,
+                          float3 wi, float2 albedoI, inout BsdfEval r) {
+  float3 wiAbs = float3(wi.x, wi.y, -wi.z);
+  if (m.thin) {
+    // Thin: the transmitted lobe is the reflected one mirrored through the sheet.
+    Ggx gg = thinGlassGgx(m);
+    if (!isSpecularGgx(gg)) {
+      float3 wh = normalize(wo + wiAbs);
+      float fr = fresnelDielectric(dot(wo, wh), eta);
+      float dg = ggxD(gg, wh) * ggxG2(gg, wo, wiAbs) / (4.0 * wo.z * wiAbs.z);
+      r.f +=
+          m.baseColor * (w.glass * (1.0 - fr) * dg *
+                         coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wiAbs)) *
+                         sheenLayerScaling(w, albedoI));
+      r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(gg, wo, wh) / (4.0 * dot(wo, wh));
+    }
+  } else if (!isSpecularGgx(g)) {
+    // Generalised half vector of refraction (Walter et al. 2007), on wo's side.
+    float3 wh = normalize(wo + wi * eta);
+    if (wh.z < 0.0) wh = -wh;
+    float cosO = dot(wo, wh);
+    float cosI = dot(wi, wh);
+    if (cosO > 0.0 && cosI < 0.0) {
+      float fr = fresnelDielectric(cosO, eta);
+      float denom = cosI + cosO / eta;
+      float denom2 = denom * denom;
+      float dg = ggxD(g, wh) * ggxG2(g, wo, wi);
+      // Radiance crossing into a denser medium is compressed by 1 / eta^2.
+      float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
+      r.f +=
+          m.baseColor * (w.glass * ft *
+                         coatAttenuation(m, coatCosine(m, side, wo), abs(coatCosine(m, side, wi))) *
+                         sheenLayerScaling(w, albedoI));
+      r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
+    }
+  }
+}
+#endif
+
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+// disneyEval's diffuse transmission for wi on the other side (wi.z < 0):
+// Lambertian, of diffuseTransmissionColor, through the layers above as the
+// reflection passes them (at wi's cosines taken on wo's side).
+void addDiffuseTransmission(DisneyMaterial m, LobeWeights w, float side, float3 wo, float3 wi,
+                            float2 albedoI, inout BsdfEval r) {
+  float3 wiUp = float3(wi.x, wi.y, -wi.z);
+  float coat = coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wiUp));
+  r.f += (w.diffuse * m.diffuseTransmission * sheenLayerScaling(w, albedoI) *
+          baseAttenuation(m, wo.z, wiUp.z, coat)) *
+         (m.diffuseTransmissionColor * kInvPi);
+  r.pdf += w.pDiffuse * m.diffuseTransmission * cosineHemispherePdf(wiUp.z);
+}
+#endif
+
 // The part of the BSDF that can be evaluated (all non-delta lobes), and the
 // density disneySample gives wi.
 BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
@@ -389,13 +457,24 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
     float coat = coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wi));
     float sheenScale = sheenLayerScaling(w, albedoI);
     if (w.diffuse > 0.0) {
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+      // The transmitted share leaves the diffuse reflection (not the sheen).
+      float reflected = 1.0 - m.diffuseTransmission;
+      r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z, coat)) *
+             (diffuseTerm(m, wo, wi, cosThetaD) * reflected
+#else
       r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z, coat)) *
              (diffuseTerm(m, wo, wi, cosThetaD)
+#endif
 #if PT_HAS_EFFECT(PT_EFFECT_SHEEN)
               + sheenTerm(m, cosThetaD)
 #endif
              );
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+      r.pdf += w.pDiffuse * reflected * cosineHemispherePdf(wi.z);
+#else
       r.pdf += w.pDiffuse * cosineHemispherePdf(wi.z);
+#endif
     }
 #if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
     if (w.sheen > 0.0) {
@@ -467,42 +546,15 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
     }
 #endif
   }
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION) || PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+  else {
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+    if (w.diffuse > 0.0 && m.diffuseTransmission > 0.0)
+      addDiffuseTransmission(m, w, side, wo, wi, albedoI, r);
+#endif
 #if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
-  else if (w.glass > 0.0 && eta != 1.0) {
-    float3 wiAbs = float3(wi.x, wi.y, -wi.z);
-    if (m.thin) {
-      // Thin: the transmitted lobe is the reflected one mirrored through the sheet.
-      Ggx gg = thinGlassGgx(m);
-      if (!isSpecularGgx(gg)) {
-        float3 wh = normalize(wo + wiAbs);
-        float fr = fresnelDielectric(dot(wo, wh), eta);
-        float dg = ggxD(gg, wh) * ggxG2(gg, wo, wiAbs) / (4.0 * wo.z * wiAbs.z);
-        r.f +=
-            m.baseColor * (w.glass * (1.0 - fr) * dg *
-                           coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wiAbs)) *
-                           sheenLayerScaling(w, albedoI));
-        r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(gg, wo, wh) / (4.0 * dot(wo, wh));
-      }
-    } else if (!isSpecularGgx(g)) {
-      // Generalised half vector of refraction (Walter et al. 2007), on wo's side.
-      float3 wh = normalize(wo + wi * eta);
-      if (wh.z < 0.0) wh = -wh;
-      float cosO = dot(wo, wh);
-      float cosI = dot(wi, wh);
-      if (cosO > 0.0 && cosI < 0.0) {
-        float fr = fresnelDielectric(cosO, eta);
-        float denom = cosI + cosO / eta;
-        float denom2 = denom * denom;
-        float dg = ggxD(g, wh) * ggxG2(g, wo, wi);
-        // Radiance crossing into a denser medium is compressed by 1 / eta^2.
-        float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
-        r.f += m.baseColor *
-               (w.glass * ft *
-                coatAttenuation(m, coatCosine(m, side, wo), abs(coatCosine(m, side, wi))) *
-                sheenLayerScaling(w, albedoI));
-        r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
-      }
-    }
+    if (w.glass > 0.0 && eta != 1.0) addGlassTransmission(m, w, g, eta, side, wo, wi, albedoI, r);
+#endif
   }
 #endif
   return r;
@@ -540,6 +592,10 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
   if (u0 < w.pDiffuse) {
     s.lobe = BSDF_LOBE_DIFFUSE;
     wi = sampleCosineHemisphere(u1, u2);
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+    // Reuse u0: the transmitted share with probability diffuseTransmission.
+    if (u0 < w.pDiffuse * m.diffuseTransmission) wi.z = -wi.z;
+#endif
   }
 #if PT_HAS_EFFECT(PT_EFFECT_GLTF_SHEEN)
   else if (u0 < pToSpecular) {

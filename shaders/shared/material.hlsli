@@ -46,6 +46,8 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.specTrans = d.specTrans;
   m.ior = d.ior;
   m.subsurface = d.subsurface;
+  m.diffuseTransmission = d.diffuseTransmission;
+  m.diffuseTransmissionColor = d.diffuseTransmissionColor;
   m.thin = (d.flags & MATERIAL_FLAG_THIN) != 0u;
   m.lambertDiffuse = (d.flags & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
   m.ggxCoat = (d.flags & MATERIAL_FLAG_GGX_COAT) != 0u;
@@ -75,6 +77,9 @@ DisneyMaterial unpackDisney(MaterialData d) {
 #endif
 #if !PT_HAS_EFFECT(PT_EFFECT_SHEEN)
   m.sheen = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+  m.diffuseTransmission = 0.0;
 #endif
 #if !PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   m.anisotropyStrength = 0.0;

@@ -241,7 +241,13 @@ bool scatter(FrameConstants c, ScatterDirection d, BsdfEval e, Frame frame, floa
 // (diffuse, metal, glass tint) plus the dielectric specular layer's normal
 // reflectance, so a black glossy surface still has something to filter.
 float3 demodulationAlbedo(DisneyMaterial m) {
-  return m.baseColor + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectricSpecularF0(m);
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+  // A leaf lit from behind shows its transmission colour, not its base.
+  float3 diffuse = lerp(m.baseColor, m.diffuseTransmissionColor, m.diffuseTransmission);
+#else
+  float3 diffuse = m.baseColor;
+#endif
+  return diffuse + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectricSpecularF0(m);
 }
 
 // One path between two traced rays: only what the next vertex needs, since
@@ -394,7 +400,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   float3 radianceBefore = p.radiance;
   InstanceData instance = loadInstanceData(hit.instanceIndex);
   MaterialData data = hitMaterial(instance, hit);
-#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION) || PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
   // Beer-Lambert: a ray that meets a surface from behind travelled inside
   // it (closed, non-nested solids) through the medium the material holds.
   if (dot(direction, hit.geometricNormal) > 0.0)

@@ -266,9 +266,13 @@ struct MaterialData {
   float3 sheenColor;  // multiplies the sheen per channel (glTF's sheen colour's hue; 1 for Disney)
   float sheenRoughness;  // glTF's sheen fibres (MATERIAL_FLAG_CHARLIE_SHEEN); unused by Disney's
   float clearcoatNormalScale;
+  // KHR_materials_diffuse_transmission: the share of the diffuse lobe
+  // transmitted (Lambertian, to the other side) with this colour.
+  float diffuseTransmission;
+  uint diffuseTransmissionTexture;       // alpha scales diffuseTransmission
+  uint diffuseTransmissionColorTexture;  // rgb (sRGB) scales diffuseTransmissionColor
+  float3 diffuseTransmissionColor;
   uint unused7;
-  uint unused8;
-  uint unused9;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -398,7 +402,7 @@ static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 
               offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
 static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
               offsetof(InstanceData, vertexAttributes) == 112);
-static_assert(sizeof(MaterialData) == 240 && offsetof(MaterialData, emission) == 16 &&
+static_assert(sizeof(MaterialData) == 256 && offsetof(MaterialData, emission) == 16 &&
               offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
               offsetof(MaterialData, baseColorTexture) == 112 &&
               offsetof(MaterialData, normalScale) == 144 &&
@@ -407,7 +411,8 @@ static_assert(sizeof(MaterialData) == 240 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, specularColor) == 192 &&
               offsetof(MaterialData, sheenColor) == 208 &&
               offsetof(MaterialData, sheenRoughness) == 220 &&
-              offsetof(MaterialData, clearcoatNormalScale) == 224);
+              offsetof(MaterialData, clearcoatNormalScale) == 224 &&
+              offsetof(MaterialData, diffuseTransmissionColor) == 240);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

@@ -24,7 +24,8 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // r^2 = lerp(0.1, 0.001, g) (Disney's); specTrans by
 // the transmission's red; sheenColor per channel by the sheen colour
 // texture, sheenRoughness by the sheen roughness texture's alpha; specular (glTF's specularFactor)
-// by the specular texture's alpha, specularColor per channel by the specular colour texture.
+// by the specular texture's alpha, specularColor per channel by the specular colour texture;
+// diffuseTransmission by its texture's alpha, diffuseTransmissionColor by its colour texture.
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
@@ -46,6 +47,12 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
     d.specularColor *= sampleTextureRef(d.specularColorTexture, uv).xyz;
   if (d.anisotropyTexture != PT_NO_TEXTURE)
     d.anisotropyStrength = saturate(d.anisotropyStrength * sampleTextureRef(d.anisotropyTexture, uv).z);
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+  if (d.diffuseTransmissionTexture != PT_NO_TEXTURE)
+    d.diffuseTransmission *= sampleTextureRef(d.diffuseTransmissionTexture, uv).w;
+  if (d.diffuseTransmissionColorTexture != PT_NO_TEXTURE)
+    d.diffuseTransmissionColor *= sampleTextureRef(d.diffuseTransmissionColorTexture, uv).xyz;
+#endif
 }
 
 // The material at a surface point: each texture multiplies its factor

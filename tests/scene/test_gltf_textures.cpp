@@ -358,6 +358,17 @@ TEST_CASE("glTF KHR_materials_* textures fill their slots; unread ones are warne
   CHECK_FALSE(hasWarning(r, "KHR_materials_sheen textures"));
   CHECK_FALSE(hasWarning(r, "KHR_materials_specular textures"));
   CHECK_FALSE(hasWarning(r, "KHR_materials_transmission textures"));
+  // KHR_materials_diffuse_transmission: the factor's texture (alpha) is
+  // data, the colour's sRGB.
+  CHECK(layered.diffuseTransmission == Approx(0.25f));
+  CHECK(layered.diffuseTransmissionColor == glm::vec3(0.5f, 1.0f, 1.0f));
+  CHECK_FALSE(texture(s, layered.diffuseTransmissionTexture).srgb);
+  CHECK(texture(s, layered.diffuseTransmissionTexture).name ==
+        texture(s, materialNamed(s, "greyAlpha").baseColorTexture).name);
+  CHECK(texture(s, layered.diffuseTransmissionColorTexture).srgb);
+  CHECK(texture(s, layered.diffuseTransmissionColorTexture).name ==
+        texture(s, materialNamed(s, "rgb").baseColorTexture).name);
+  CHECK_FALSE(hasWarning(r, "KHR_materials_diffuse_transmission"));
   // 'brushed': KHR_materials_anisotropy's strength, its rotation brought
   // into (-pi, pi] (7 rad is 7 - 2 pi), and its direction texture, linear,
   // reading TEXCOORD_1.

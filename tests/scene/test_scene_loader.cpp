@@ -246,6 +246,17 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
   REQUIRE_THROWS_WITH(
       scene::parseScene(withGlass(R"({"specTrans":1,"attenuationColor":[2,1,1]})"), "t.json"),
       ContainsSubstring("attenuationColor must lie in [0, 1]"));
+  // Diffuse transmission (a leaf), with its colour; outside [0, 1] refused.
+  const auto leaf = scene::parseScene(
+      withGlass(R"({"diffuseTransmission":0.4,"diffuseTransmissionColor":[0.2,0.9,0.1]})"),
+      "t.json");
+  CHECK(leaf.materials[0].diffuseTransmission == 0.4f);
+  CHECK(leaf.materials[0].diffuseTransmissionColor == glm::vec3(0.2f, 0.9f, 0.1f));
+  REQUIRE_THROWS_WITH(
+      scene::parseScene(withGlass(R"({"diffuseTransmissionColor":[1.5,1,1]})"), "t.json"),
+      ContainsSubstring("diffuseTransmissionColor must lie in [0, 1]"));
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"diffuseTransmission":2})"), "t.json"),
+                      ContainsSubstring("a parameter is outside [0, 1]"));
   // glTF's anisotropy, in scene files too.
   const auto brushed = scene::parseScene(
       withGlass(R"({"metallic":1,"anisotropyStrength":0.6,"anisotropyRotation":-2})"), "t.json");

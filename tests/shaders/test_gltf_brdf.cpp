@@ -315,6 +315,44 @@ TEST_CASE(
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 
+TEST_CASE(
+    "glTF BRDF: KHR_materials_diffuse_transmission sends its share of the diffuse lobe through, "
+    "Lambertian, in its colour",
+    "[shaders][bsdf][gpu][gltf][spirv-only]") {
+  // A base with ior 1 (F0 0: no specular layer above the diffuse one), so
+  // the extension's mix(diffuse_brdf(baseColor), diffuse_btdf(colour), t)
+  // is all there is: (1 - t) baseColor / pi towards wo's side, t colour / pi
+  // towards the other, whatever the directions.
+  using tinygltf::Value;
+  tinygltf::Material src;
+  src.pbrMetallicRoughness.baseColorFactor = {0.6, 0.4, 0.2, 1.0};
+  src.pbrMetallicRoughness.metallicFactor = 0.0;
+  src.extensions["KHR_materials_ior"] = Value(Value::Object{{"ior", Value(1.0)}});
+  src.extensions["KHR_materials_diffuse_transmission"] = Value(Value::Object{
+      {"diffuseTransmissionFactor", Value(0.3)},
+      {"diffuseTransmissionColorFactor", Value(Value::Array{Value(0.9), Value(0.5), Value(0.1)})}});
+  std::vector<std::string> warnings;
+  const auto m = scene::gltf::convertMaterial(src, "test", warnings).material;
+  CHECK(warnings.empty());
+  auto device = test::makeTestDevice();
+  test::BsdfHarness harness(*device);
+  const glm::dvec3 base(0.6, 0.4, 0.2), color(0.9, 0.5, 0.1);
+  for (bool inside : {false, true})
+    for (const auto& p : kPairs) {
+      const double side = inside ? -1.0 : 1.0;
+      const glm::dvec3 v(p.v.x, p.v.y, p.v.z * side);
+      const glm::dvec3 reflected(p.l.x, p.l.y, p.l.z * side);
+      const glm::dvec3 through(p.l.x, p.l.y, -p.l.z * side);
+      const auto e = harness.eval(m, glm::vec3(v), {glm::vec3(reflected), glm::vec3(through)});
+      INFO("inside " << inside << " v.z " << p.v.z << " l.z " << p.l.z);
+      for (int c = 0; c < 3; ++c) {
+        REQUIRE(e[0].f[c] == Catch::Approx(0.7 * base[c] / kPi).epsilon(1e-5));
+        REQUIRE(e[1].f[c] == Catch::Approx(0.3 * color[c] / kPi).epsilon(1e-5));
+      }
+    }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
 namespace {
 
 // A base of colour `base` with ior 1 (F0 0: no specular layer) under

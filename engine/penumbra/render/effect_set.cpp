@@ -43,6 +43,8 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   if (m.sheen > 0.0f) effects |= PT_EFFECT_SHEEN | (gltf ? PT_EFFECT_GLTF_SHEEN : 0u);
   // glTF anisotropy turns the tangent frame (effects.h): surface detail.
   if (m.anisotropyStrength > 0.0f) effects |= PT_EFFECT_TEXTURES;
+  // Its texture only scales the factor: a factor of 0 stays 0.
+  if (m.diffuseTransmission > 0.0f) effects |= PT_EFFECT_DIFFUSE_TRANSMISSION;
   return effects;
 }
 
@@ -113,7 +115,8 @@ constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
     {PT_EFFECT_ORTHOGRAPHIC, "orthographic"},
     {PT_EFFECT_SPECULAR_COLOR, "specular-color"},
     {PT_EFFECT_GLTF_COAT, "gltf-coat"},
-    {PT_EFFECT_GLTF_SHEEN, "gltf-sheen"}};
+    {PT_EFFECT_GLTF_SHEEN, "gltf-sheen"},
+    {PT_EFFECT_DIFFUSE_TRANSMISSION, "diffuse-transmission"}};
 constexpr uint32_t namedEffects() {
   uint32_t bits = 0;
   for (const auto& [bit, name] : kEffectNames) bits |= bit;
@@ -143,7 +146,8 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
   if (view.apertureRadius > 0.0f && view.apertureBlades >= 3) features |= kFeatureLensBlades;
   auto absorbs = [&](uint32_t materialIndex) {
     const auto& m = scene.materials.at(materialIndex);
-    const bool transmits = m.specTrans > 0.0f || m.transparency > 0.0f;
+    const bool transmits =
+        m.specTrans > 0.0f || m.transparency > 0.0f || m.diffuseTransmission > 0.0f;
     return transmits && !m.thin && std::isfinite(m.attenuationDistance);
   };
   for (const auto& instance : scene.instances)

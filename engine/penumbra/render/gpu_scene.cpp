@@ -216,6 +216,11 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.anisotropyTexture = m.anisotropyTexture;
   d.clearcoatNormalTexture = m.clearcoatNormalTexture;
   d.clearcoatNormalScale = m.clearcoatNormalScale;
+  // Phong has no diffuse lobe to share (the effect bit is not derived for it).
+  d.diffuseTransmission = m.model == scene::MaterialModel::Phong ? 0.0f : m.diffuseTransmission;
+  d.diffuseTransmissionColor = toFloat3(m.diffuseTransmissionColor);
+  d.diffuseTransmissionTexture = m.diffuseTransmissionTexture;
+  d.diffuseTransmissionColorTexture = m.diffuseTransmissionColorTexture;
   // Only the Disney lobes have it: a Phong material mapped onto Disney in
   // the path tracer (material.hlsli) has no tangent frame to stretch along,
   // and the effect bit that holds the code is not derived for Phong.

@@ -90,7 +90,7 @@ const std::vector<std::string_view>& supportedExtensions() {
       "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
       "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
       "KHR_materials_sheen", "KHR_materials_unlit", "KHR_materials_anisotropy",
-      "KHR_texture_transform",
+      "KHR_materials_diffuse_transmission", "KHR_texture_transform",
       "KHR_materials_variants",   // Scene::materialVariants, --variant
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
@@ -230,6 +230,12 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     m.sheenTint = 0.0f;
     if (m.sheen > 0.0f) m.sheenColor = color / m.sheen;
     m.sheenRoughness = clamp01(number(*e, "sheenRoughnessFactor", 0.0));
+  }
+
+  if (const auto* e = extension(src, "KHR_materials_diffuse_transmission")) {
+    m.diffuseTransmission = clamp01(number(*e, "diffuseTransmissionFactor", 0.0));
+    m.diffuseTransmissionColor =
+        glm::clamp(vec3(*e, "diffuseTransmissionColorFactor", glm::vec3(1.0f)), 0.0f, 1.0f);
   }
 
   if (const auto* e = extension(src, "KHR_materials_anisotropy")) {

@@ -311,7 +311,11 @@ const std::vector<ExtensionTexture>& extensionTextures() {
       {"KHR_materials_sheen", "sheenRoughnessTexture", false, &Material::sheenRoughnessTexture},
       {"KHR_materials_specular", "specularTexture", false, &Material::specularTexture},
       {"KHR_materials_specular", "specularColorTexture", true, &Material::specularColorTexture},
-      {"KHR_materials_anisotropy", "anisotropyTexture", false, &Material::anisotropyTexture}};
+      {"KHR_materials_anisotropy", "anisotropyTexture", false, &Material::anisotropyTexture},
+      {"KHR_materials_diffuse_transmission", "diffuseTransmissionTexture", false,
+       &Material::diffuseTransmissionTexture},
+      {"KHR_materials_diffuse_transmission", "diffuseTransmissionColorTexture", true,
+       &Material::diffuseTransmissionColorTexture}};
   return table;
 }
 

@@ -26,6 +26,7 @@ float* scalarParameter(Material& m, std::string_view name) {
   if (name == "clearcoat") return &m.clearcoat;
   if (name == "clearcoatGloss") return &m.clearcoatGloss;
   if (name == "specTrans") return &m.specTrans;
+  if (name == "diffuseTransmission") return &m.diffuseTransmission;
   if (name == "subsurface") return &m.subsurface;
   if (name == "ior") return &m.ior;
   return nullptr;
@@ -77,7 +78,8 @@ const std::vector<std::string>& variableDisneyParameters() {
 void setMaterialParameter(Material& m, std::string_view name, const std::vector<float>& values) {
   for (auto [colorName, color] :
        {std::pair{"baseColor", &m.baseColor}, std::pair{"emission", &m.emission},
-        std::pair{"specularColor", &m.specularColor}, std::pair{"sheenColor", &m.sheenColor}})
+        std::pair{"specularColor", &m.specularColor}, std::pair{"sheenColor", &m.sheenColor},
+        std::pair{"diffuseTransmissionColor", &m.diffuseTransmissionColor}})
     if (name == colorName) {
       if (values.size() != 3) throw Error(fmt::format("--set {}: needs 3 numbers (r,g,b)", name));
       *color = {values[0], values[1], values[2]};
@@ -87,7 +89,8 @@ void setMaterialParameter(Material& m, std::string_view name, const std::vector<
   if (!scalar)
     throw Error(
         fmt::format("--set: unknown material parameter '{}' (baseColor, emission, specularColor, "
-                    "sheenColor, sheenRoughness, ior, anisotropyRotation, anisotropyStrength, {})",
+                    "sheenColor, sheenRoughness, ior, anisotropyRotation, anisotropyStrength, "
+                    "diffuseTransmission, diffuseTransmissionColor, {})",
                     name, joined(variableDisneyParameters())));
   if (values.size() != 1) throw Error(fmt::format("--set {}: needs 1 number", name));
   *scalar = values[0];

@@ -196,13 +196,17 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
       fail(fmt::format(
           "material '{}': baseColor must lie in [0, 1] and emission be finite and non-negative",
           m.name));
-  for (float v : {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen,
-                  m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface,
-                  m.reflectivity, m.transparency, m.anisotropyStrength, m.sheenRoughness})
+  for (float v :
+       {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen, m.sheenTint,
+        m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface, m.reflectivity, m.transparency,
+        m.anisotropyStrength, m.sheenRoughness, m.diffuseTransmission})
     if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
   for (int i = 0; i < 3; ++i)
     if (!unit(m.sheenColor[i]))
       fail(fmt::format("material '{}': sheenColor must lie in [0, 1]", m.name));
+  for (int i = 0; i < 3; ++i)
+    if (!unit(m.diffuseTransmissionColor[i]))
+      fail(fmt::format("material '{}': diffuseTransmissionColor must lie in [0, 1]", m.name));
   for (int i = 0; i < 3; ++i)
     if (!(m.specularColor[i] >= 0.0f) || !std::isfinite(m.specularColor[i]))
       fail(fmt::format("material '{}': specularColor must be finite and non-negative", m.name));

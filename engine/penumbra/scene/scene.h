@@ -88,6 +88,11 @@ struct Material {
   float clearcoat = 0.0f;
   float clearcoatGloss = 1.0f;
   float specTrans = 0.0f;
+  // KHR_materials_diffuse_transmission: this share of the diffuse lobe
+  // passes to the other side as Lambertian transmission of this colour
+  // (leaves, paper, lamp shades); the rest reflects with baseColor.
+  float diffuseTransmission = 0.0f;
+  glm::vec3 diffuseTransmissionColor{1.0f};
   float ior = 1.5f;
   float subsurface = 0.0f;
   // KHR_materials_anisotropy: along the direction `anisotropyRotation`
@@ -138,6 +143,9 @@ struct Material {
   // normal, not the base's normal map (the extension says so).
   uint32_t clearcoatNormalTexture = kNoTexture;
   float clearcoatNormalScale = 1.0f;
+  // Alpha scales diffuseTransmission; rgb (sRGB) diffuseTransmissionColor.
+  uint32_t diffuseTransmissionTexture = kNoTexture;
+  uint32_t diffuseTransmissionColorTexture = kNoTexture;
   float normalScale = 1.0f;
   float occlusionStrength = 1.0f;
   float alpha = 1.0f;  // base colour alpha factor
@@ -155,19 +163,41 @@ struct Material {
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // Every texture slot above, for code that treats them alike (validation,
   // merging scenes, hashing, the textures' effect bit).
-  std::array<uint32_t, 14> textures() const {
-    return {baseColorTexture,          metallicRoughnessTexture, normalTexture,
-            emissiveTexture,           occlusionTexture,         clearcoatTexture,
-            clearcoatRoughnessTexture, transmissionTexture,      sheenColorTexture,
-            sheenRoughnessTexture,     specularTexture,          specularColorTexture,
-            anisotropyTexture,         clearcoatNormalTexture};
+  std::array<uint32_t, 16> textures() const {
+    return {baseColorTexture,
+            metallicRoughnessTexture,
+            normalTexture,
+            emissiveTexture,
+            occlusionTexture,
+            clearcoatTexture,
+            clearcoatRoughnessTexture,
+            transmissionTexture,
+            sheenColorTexture,
+            sheenRoughnessTexture,
+            specularTexture,
+            specularColorTexture,
+            anisotropyTexture,
+            clearcoatNormalTexture,
+            diffuseTransmissionTexture,
+            diffuseTransmissionColorTexture};
   }
-  std::array<uint32_t*, 14> textureSlots() {
-    return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,
-            &emissiveTexture,           &occlusionTexture,         &clearcoatTexture,
-            &clearcoatRoughnessTexture, &transmissionTexture,      &sheenColorTexture,
-            &sheenRoughnessTexture,     &specularTexture,          &specularColorTexture,
-            &anisotropyTexture,         &clearcoatNormalTexture};
+  std::array<uint32_t*, 16> textureSlots() {
+    return {&baseColorTexture,
+            &metallicRoughnessTexture,
+            &normalTexture,
+            &emissiveTexture,
+            &occlusionTexture,
+            &clearcoatTexture,
+            &clearcoatRoughnessTexture,
+            &transmissionTexture,
+            &sheenColorTexture,
+            &sheenRoughnessTexture,
+            &specularTexture,
+            &specularColorTexture,
+            &anisotropyTexture,
+            &clearcoatNormalTexture,
+            &diffuseTransmissionTexture,
+            &diffuseTransmissionColorTexture};
   }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));

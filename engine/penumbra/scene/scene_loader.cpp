@@ -68,6 +68,11 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
   material.clearcoat = readFloat(m, "clearcoat", material.clearcoat, where);
   material.clearcoatGloss = readFloat(m, "clearcoatGloss", material.clearcoatGloss, where);
   material.specTrans = readFloat(m, "specTrans", material.specTrans, where);
+  material.diffuseTransmission =
+      readFloat(m, "diffuseTransmission", material.diffuseTransmission, where);
+  if (m.contains("diffuseTransmissionColor"))
+    material.diffuseTransmissionColor =
+        readVec3(m.at("diffuseTransmissionColor"), where + " diffuseTransmissionColor");
   material.ior = readFloat(m, "ior", material.ior, where);
   material.subsurface = readFloat(m, "subsurface", material.subsurface, where);
   material.thin = readBool(m, "thin", false, where);

@@ -697,7 +697,11 @@ def textures():
             "KHR_materials_transmission": {
                 "transmissionFactor": 1,
                 "transmissionTexture": {"index": 1, "texCoord": 1, "extensions": {
-                    "KHR_texture_transform": {"offset": [0.5, 0]}}}}}},
+                    "KHR_texture_transform": {"offset": [0.5, 0]}}}},
+            "KHR_materials_diffuse_transmission": {
+                "diffuseTransmissionFactor": 0.25, "diffuseTransmissionTexture": {"index": 4},
+                "diffuseTransmissionColorFactor": [0.5, 1, 1],
+                "diffuseTransmissionColorTexture": {"index": 5}}}},
         {"name": "brushed", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 0.2},
          "extensions": {"KHR_materials_anisotropy": {
              "anisotropyStrength": 0.6, "anisotropyRotation": 7.0,
@@ -705,7 +709,8 @@ def textures():
     ]
     b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
                                "KHR_materials_transmission", "KHR_materials_anisotropy",
-                               "KHR_materials_volume", "KHR_texture_transform"]
+                               "KHR_materials_volume", "KHR_materials_diffuse_transmission",
+                               "KHR_texture_transform"]
     b.write_gltf("textures.gltf")
 
     # The checker again, stored in the .glb's binary chunk.

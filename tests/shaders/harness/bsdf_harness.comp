@@ -115,6 +115,8 @@ void main() {
     d.specularColor = 20.0 * float3(pick(rng), pick(rng), pick(rng));
     d.sheenColor = float3(pick(rng), pick(rng), pick(rng));
     d.sheenRoughness = pick(rng);
+    d.diffuseTransmission = pick(rng);
+    d.diffuseTransmissionColor = float3(pick(rng), pick(rng), pick(rng));
     DisneyMaterial m = unpackDisney(d);
     // Half the time a coat normal of its own, any direction (the path
     // tracer keeps it on the geometric side, not always the shading one).
