@@ -15,7 +15,14 @@ glm::vec3 CameraController::right() const {
 
 bool CameraController::update(const CameraInput& input, float seconds) {
   bool changed = false;
-  if (input.scrollSteps != 0) speed_ *= std::pow(kSpeedStepFactor, input.scrollSteps);
+  // Moving along a parallel view changes nothing in it: there the wheel
+  // zooms, each notch forward showing 1 / 1.25 of the height.
+  if (input.scrollSteps != 0 && camera_.orthographic()) {
+    camera_.orthographicHeight /= std::pow(kSpeedStepFactor, input.scrollSteps);
+    changed = true;
+  } else if (input.scrollSteps != 0) {
+    speed_ *= std::pow(kSpeedStepFactor, input.scrollSteps);
+  }
   if (input.turn != glm::vec2(0.0f)) {
     turn(input.turn.x * kDegreesPerPixel, -input.turn.y * kDegreesPerPixel);
     changed = true;

@@ -1,8 +1,9 @@
 #pragma once
 // First-person camera control for the viewer, free of any window code so it
 // can be tested on its own: WASD/QE move, mouse drag turns, the wheel scales
-// the speed. An unchanged controller returns the scene camera bit for bit, so
-// a screenshot taken before moving matches a headless render of the scene.
+// the speed (an orthographic camera's height instead: zoom). An unchanged controller returns the
+// scene camera bit for bit, so a screenshot taken before moving matches a headless render of the
+// scene.
 #include <glm/glm.hpp>
 
 #include "penumbra/scene/scene.h"
@@ -12,13 +13,13 @@ namespace penumbra::viewer {
 struct CameraInput {
   glm::vec3 move{0.0f};   // right, up, forward, each in [-1, 1] (D-A, E-Q, W-S)
   glm::vec2 turn{0.0f};   // mouse movement while dragging, pixels (x right, y down)
-  float scrollSteps = 0;  // wheel notches, positive = faster
+  float scrollSteps = 0;  // wheel notches, positive = faster (orthographic: zoom in)
 };
 
 class CameraController {
  public:
   static constexpr float kDegreesPerPixel = 0.2f;
-  static constexpr float kSpeedStepFactor = 1.25f;  // per wheel notch
+  static constexpr float kSpeedStepFactor = 1.25f;  // per wheel notch (speed or zoom)
   static constexpr float kMaxElevationDegrees = 89.0f;
 
   // `speed`: metres per second at the start (the viewer derives it from the scene's size).

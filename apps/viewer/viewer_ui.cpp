@@ -151,7 +151,7 @@ void Viewer::drawCameraMenu() {
     camera_->setCamera(lens);
     tracer_->setCamera(lens);
   }
-  ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel: speed");
+  ImGui::TextDisabled("WASD move, Q/E down/up, drag to look, wheel: speed (orthographic: zoom)");
   ImGui::TextDisabled("double-click: look at that surface, focus on it, select its material");
   ImGui::Separator();
   ImGui::InputText("##bookmark", bookmarkName_, sizeof(bookmarkName_));
@@ -293,12 +293,18 @@ void Viewer::drawMaterialMenu() {
                                 {"clearcoat", &m.clearcoat},
                                 {"clearcoat gloss", &m.clearcoatGloss},
                                 {"transmission", &m.specTrans},
+                                {"diffuse transmission", &m.diffuseTransmission},
                                 {"subsurface", &m.subsurface},
                                 {"anisotropy strength (glTF)", &m.anisotropyStrength}})
       changed |= ImGui::SliderFloat(label, field, 0, 1);
     // Radians, counter-clockwise from the tangent (KHR_materials_anisotropy).
     changed |= ImGui::SliderAngle("anisotropy rotation", &m.anisotropyRotation, -180.0f, 180.0f);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
+    // F0 = 0.08 specular x specularColor, clamped to 1: the colour may pass 1.
+    changed |= ImGui::ColorEdit3("specular color", &m.specularColor.x,
+                                 ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    changed |= ImGui::ColorEdit3("sheen color", &m.sheenColor.x);
+    changed |= ImGui::ColorEdit3("diffuse transmission color", &m.diffuseTransmissionColor.x);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");
   if (changed) materialsChanged();

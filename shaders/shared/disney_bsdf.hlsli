@@ -257,12 +257,13 @@ LobeWeights disneyLobeWeights(DisneyMaterial m, float cosThetaO) {
   }
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
-  float diffuseColor =
-      lerp(luminance(m.baseColor), luminance(m.diffuseTransmissionColor), m.diffuseTransmission);
+  float eDiffuse = w.diffuse *
+                   lerp(luminance(m.baseColor) + disneySheen, luminance(m.diffuseTransmissionColor),
+                        m.diffuseTransmission) *
+                   below;
 #else
-  float diffuseColor = luminance(m.baseColor);
+  float eDiffuse = w.diffuse * (luminance(m.baseColor) + disneySheen) * below;
 #endif
-  float eDiffuse = w.diffuse * (diffuseColor + disneySheen) * below;
   float eSpecular = luminance(specularFresnel(m, cosThetaO)) * below;
   float eGlass = w.glass * below;
   float eClearcoat = w.clearcoat * (0.04 + 0.96 * schlickWeight(cosThetaO));
@@ -412,9 +413,9 @@ void addGlassTransmission(DisneyMaterial m, LobeWeights w, Ggx g, float eta, flo
       // Radiance crossing into a denser medium is compressed by 1 / eta^2.
       float ft = (1.0 - fr) * dg * abs(cosI) * cosO / (wo.z * abs(wi.z) * denom2) / (eta * eta);
       r.f +=
-          m.baseColor * (w.glass * ft *
-                         coatAttenuation(m, coatCosine(m, side, wo), abs(coatCosine(m, side, wi))) *
-                         sheenLayerScaling(w, albedoI));
+          m.baseColor *
+          (w.glass * ft * coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wiAbs)) *
+           sheenLayerScaling(w, albedoI));
       r.pdf += w.pGlass * (1.0 - fr) * ggxVisibleNormalPdf(g, wo, wh) * abs(cosI) / denom2;
     }
   }
@@ -458,10 +459,11 @@ BsdfEval disneyEval(DisneyMaterial m, float3 woIn, float3 wiIn) {
     float sheenScale = sheenLayerScaling(w, albedoI);
     if (w.diffuse > 0.0) {
 #if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
-      // The transmitted share leaves the diffuse reflection (not the sheen).
+      // The transmitted share leaves the diffuse reflection and Disney's
+      // sheen on it (sampled with it, by cosine, on wo's side).
       float reflected = 1.0 - m.diffuseTransmission;
-      r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z, coat)) *
-             (diffuseTerm(m, wo, wi, cosThetaD) * reflected
+      r.f += (w.diffuse * reflected * sheenScale * baseAttenuation(m, wo.z, wi.z, coat)) *
+             (diffuseTerm(m, wo, wi, cosThetaD)
 #else
       r.f += (w.diffuse * sheenScale * baseAttenuation(m, wo.z, wi.z, coat)) *
              (diffuseTerm(m, wo, wi, cosThetaD)
@@ -608,9 +610,10 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
     s.lobe = BSDF_LOBE_SPECULAR;
     if (isSpecularGgx(g)) {
       s.wi = float3(-wo.x, -wo.y, wo.z * side);
-      float coatO = coatCosine(m, side, wo);
-      s.weight = specularFresnel(m, wo.z) * (coatAttenuation(m, coatO, coatO) *
-                                             sheenLayerScaling(w, w.sheenAlbedoO) / w.pSpecular);
+      float3 mirror = float3(-wo.x, -wo.y, wo.z);
+      s.weight = specularFresnel(m, wo.z) *
+                 (coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, mirror)) *
+                  sheenLayerScaling(w, w.sheenAlbedoO) / w.pSpecular);
       s.isDelta = true;
       return s;
     }
@@ -651,7 +654,9 @@ BsdfSample disneySampleDirection(DisneyMaterial m, float3 woIn, float u0, float 
       s.wi = float3(wi.x, wi.y, wi.z * side);
       // Chosen with probability pGlass * (fr or 1 - fr), which cancels the Fresnel factor.
       float scale = m.thin ? 1.0 : 1.0 / (eta * eta);
-      float coat = coatAttenuation(m, coatCosine(m, side, wo), abs(coatCosine(m, side, wi))) *
+      // A transmitted direction meets the coat as its mirror image on wo's side.
+      float3 wiUp = float3(wi.x, wi.y, abs(wi.z));
+      float coat = coatAttenuation(m, coatCosine(m, side, wo), coatCosine(m, side, wiUp)) *
                    sheenLayerScaling(w, sheenAlbedoI(m, w, abs(wi.z)));
       s.weight = reflected ? splat3(w.glass * coat / w.pGlass)
                            : m.baseColor * (w.glass * scale * coat / w.pGlass);

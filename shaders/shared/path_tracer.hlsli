@@ -190,7 +190,12 @@ ScatterDirection scatterDirection(FrameConstants c, DisneyMaterial material, flo
     // The hemisphere of wo, or the whole sphere if the material transmits.
     wiLocal = sampleUniformSphere(u1, u2);
     pdf = 0.25 * kInvPi;
-    if (material.specTrans <= 0.0 || material.metallic >= 1.0) {
+    bool transmits = material.specTrans > 0.0 && material.metallic < 1.0;
+#if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
+    transmits = transmits || (material.diffuseTransmission > 0.0 && material.metallic < 1.0 &&
+                              material.specTrans < 1.0);
+#endif
+    if (!transmits) {
       wiLocal.z = wo.z > 0.0 ? abs(wiLocal.z) : -abs(wiLocal.z);
       pdf = 0.5 * kInvPi;
     }
@@ -243,7 +248,8 @@ bool scatter(FrameConstants c, ScatterDirection d, BsdfEval e, Frame frame, floa
 float3 demodulationAlbedo(DisneyMaterial m) {
 #if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
   // A leaf lit from behind shows its transmission colour, not its base.
-  float3 diffuse = lerp(m.baseColor, m.diffuseTransmissionColor, m.diffuseTransmission);
+  float3 diffuse = lerp(m.baseColor, m.diffuseTransmissionColor,
+                        (1.0 - m.metallic) * (1.0 - m.specTrans) * m.diffuseTransmission);
 #else
   float3 diffuse = m.baseColor;
 #endif

@@ -4,7 +4,8 @@
 #define PENUMBRA_SURFACE_HIT_HLSLI
 #include "effects.h"
 
-// 76 bytes (RayTracingPipelineDesc::maxPayloadBytes in the path tracer).
+// Rebuilt in the ray generation shader from the trace's HitRecord
+// (surface_from_record.hlsli); the payload is the HitRecord, not this.
 struct SurfaceHit {
   float3 position;
   float hitT;             // < 0: the ray missed everything

@@ -227,8 +227,8 @@ TEST_CASE("render job: overrides apply the edited parameters and keep the rest",
 }
 
 TEST_CASE(
-    "render job: glTF anisotropy is edited and recorded; a record written before it keeps the "
-    "scene's",
+    "render job: parameters made editable later (glTF anisotropy, sheen roughness, diffuse "
+    "transmission, the colours) are recorded; a record written before them keeps the scene's",
     "[render]") {
   scene::Scene loaded;
   loaded.name = "brushed";
@@ -240,6 +240,10 @@ TEST_CASE(
   render::setEditableParameter(edited[0], "anisotropyStrength", {0.75f});
   render::setEditableParameter(edited[0], "anisotropyRotation", {-1.25f});
   render::setEditableParameter(edited[0], "sheenRoughness", {0.4f});
+  render::setEditableParameter(edited[0], "diffuseTransmission", {0.3f});
+  render::setEditableParameter(edited[0], "specularColor", {2.0f, 1.0f, 0.5f});
+  render::setEditableParameter(edited[0], "sheenColor", {0.9f, 0.5f, 0.1f});
+  render::setEditableParameter(edited[0], "diffuseTransmissionColor", {0.2f, 0.8f, 0.4f});
   render::RenderJob job;
   job.materials = render::materialOverrides(loaded.materials, edited);
   REQUIRE(job.materials.size() == 1);
@@ -250,6 +254,10 @@ TEST_CASE(
   CHECK(applied.materials[0].anisotropyStrength == 0.75f);
   CHECK(applied.materials[0].anisotropyRotation == -1.25f);
   CHECK(applied.materials[0].sheenRoughness == 0.4f);
+  CHECK(applied.materials[0].diffuseTransmission == 0.3f);
+  CHECK(applied.materials[0].specularColor == glm::vec3(2.0f, 1.0f, 0.5f));
+  CHECK(applied.materials[0].sheenColor == glm::vec3(0.9f, 0.5f, 0.1f));
+  CHECK(applied.materials[0].diffuseTransmissionColor == glm::vec3(0.2f, 0.8f, 0.4f));
 
   // The same record as written before the fields were editable: the other
   // edits apply, the scene's anisotropy stays, and writing it again does
@@ -259,6 +267,10 @@ TEST_CASE(
   override0.erase("anisotropyStrength");
   override0.erase("anisotropyRotation");
   override0.erase("sheenRoughness");
+  override0.erase("diffuseTransmission");
+  override0.erase("specularColor");
+  override0.erase("sheenColor");
+  override0.erase("diffuseTransmissionColor");
   override0.at("metallic") = 1.0;
   const auto oldJob = render::renderJobFromJson(old.dump(), "old.json");
   scene::Scene fromOld = loaded;
@@ -267,9 +279,16 @@ TEST_CASE(
   CHECK(fromOld.materials[0].anisotropyStrength == 0.25f);
   CHECK(fromOld.materials[0].anisotropyRotation == 0.5f);
   CHECK(fromOld.materials[0].sheenRoughness == 0.0f);
+  CHECK(fromOld.materials[0].diffuseTransmission == 0.0f);
+  CHECK(fromOld.materials[0].specularColor == glm::vec3(1.0f));
+  CHECK(fromOld.materials[0].sheenColor == glm::vec3(1.0f));
+  CHECK(fromOld.materials[0].diffuseTransmissionColor == glm::vec3(1.0f));
   const std::string rewritten = render::renderJobToJson(oldJob);
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("anisotropy"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenRoughness"));
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("diffuseTransmission"));
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("specularColor"));
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenColor"));
   // Fields there from the start stay required.
   override0.erase("sheen");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(old.dump(), "older.json"),

@@ -280,8 +280,8 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   gltfLayers.sheen = 1.0f;
   gltfLayers.sheenColor = {0.9f, 0.6f, 0.3f};
   gltfLayers.sheenRoughness = 0.4f;
-  // A closed sphere that sends part of its diffuse light inside and through,
-  // under a coat: the transmitted share's lobe and its sampling.
+  // A closed sphere that sends part of its diffuse light inside and through:
+  // the transmitted share's lobe and its sampling.
   auto leaf = disney();
   leaf.model = scene::MaterialModel::Lambert;
   leaf.baseColor = {0.2f, 0.6f, 0.1f};

@@ -406,6 +406,24 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
     plain.anisotropyRotation +=
         std::atan2(2.0f * 238.0f / 255.0f - 1.0f, 2.0f * 191.0f / 255.0f - 1.0f);
   }
+  // Diffuse transmission, lit from behind: what the camera sees in front is
+  // the transmitted share alone.
+  SECTION(
+      "diffuseTransmission from its texture's alpha, its colour per channel from the colour "
+      "texture (sRGB)") {
+    stage = [](scene::Scene& s) { s.pointLights[0].position = {1.5, 1.0, -2.0}; };
+    plain.diffuseTransmission = 0.9f;
+    plain.diffuseTransmissionColor = {1.0f, 0.9f, 0.8f};
+    untextured = plain;
+    textures = {uniform({255, 255, 255, 70}, false), uniform({30, 140, 60, 255}, true)};
+    attach = [](scene::Material& m) {
+      m.diffuseTransmissionTexture = 0;
+      m.diffuseTransmissionColorTexture = 1;
+    };
+    plain.diffuseTransmission *= 70.0f / 255.0f;
+    plain.diffuseTransmissionColor *= glm::vec3(
+        srgbToLinear(30.0f / 255.0f), srgbToLinear(140.0f / 255.0f), srgbToLinear(60.0f / 255.0f));
+  }
   scene::Material textured = untextured;
   attach(textured);
   auto staged = [&](const scene::Material& m) {

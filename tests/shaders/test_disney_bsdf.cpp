@@ -173,6 +173,12 @@ std::vector<Case> chiSquareCases() {
            << at.str();
       cases.push_back({name.str(), m, incident(c, false), n});
     }
+    // Seen from below (a coated glass's inside): the coat's normal there is
+    // the mirrored one.
+    const glm::vec3 n(0.3f, -0.25f, 0.92f);
+    m.clearcoatGloss = 0.5f;
+    cases.push_back({"glTF coat alpha 0.25, tilted normal, from inside" + at.str(), m,
+                     incident(c, true), glm::normalize(n)});
   }
   // Diffuse transmission (KHR_materials_diffuse_transmission): 0.6 of the
   // diffuse lobe to the other side, under a plastic's specular layer; seen
@@ -187,6 +193,12 @@ std::vector<Case> chiSquareCases() {
     m.diffuseTransmissionColor = {0.3f, 0.9f, 0.5f};
     cases.push_back({"diffuse transmission 0.6" + at.str(), m, incident(c, false)});
     cases.push_back({"diffuse transmission 0.6, from inside" + at.str(), m, incident(c, true)});
+    // Under glTF's coat, with a normal of its own: the transmitted share is
+    // dimmed by the coat at its mirrored direction.
+    m.clearcoat = 0.8f;
+    m.clearcoatGloss = 0.6f;
+    cases.push_back({"diffuse transmission 0.6 under a tilted glTF coat" + at.str(), m,
+                     incident(c, false), glm::normalize(glm::vec3(-0.2f, 0.3f, 0.93f))});
   }
   // The Lambert model's sheen, KHR_materials_sheen's layer, a lobe of its
   // own sampled by cosine: over a plastic, and at sheen roughness 0.05

@@ -63,11 +63,29 @@ constexpr FloatField kFloatFields[] = {
     {"transparency", &scene::Material::transparency},
     {"anisotropyStrength", &scene::Material::anisotropyStrength, true},
     {"anisotropyRotation", &scene::Material::anisotropyRotation, true},
-    {"sheenRoughness", &scene::Material::sheenRoughness, true}};
+    {"sheenRoughness", &scene::Material::sheenRoughness, true},
+    {"diffuseTransmission", &scene::Material::diffuseTransmission, true}};
+
+// The Material menu's colours besides baseColor (always written), all made
+// editable after records were first written.
+struct ColorField {
+  const char* name;
+  glm::vec3 scene::Material::*field;
+};
+constexpr ColorField kColorFields[] = {
+    {"specularColor", &scene::Material::specularColor},
+    {"sheenColor", &scene::Material::sheenColor},
+    {"diffuseTransmissionColor", &scene::Material::diffuseTransmissionColor}};
+
+bool fromScene(const MaterialOverride& o, const char* name) {
+  return std::find(o.sceneValues.begin(), o.sceneValues.end(), name) != o.sceneValues.end();
+}
 
 bool sameEditableParameters(const scene::Material& a, const scene::Material& b) {
   if (a.model != b.model || a.baseColor != b.baseColor || a.thin != b.thin) return false;
   for (const auto& f : kFloatFields)
+    if (a.*f.field != b.*f.field) return false;
+  for (const auto& f : kColorFields)
     if (a.*f.field != b.*f.field) return false;
   return true;
 }
@@ -77,8 +95,9 @@ void applyOverride(const MaterialOverride& o, scene::Material& to) {
   to.baseColor = o.material.baseColor;
   to.thin = o.material.thin;
   for (const auto& f : kFloatFields)
-    if (std::find(o.sceneValues.begin(), o.sceneValues.end(), f.name) == o.sceneValues.end())
-      to.*f.field = o.material.*f.field;
+    if (!fromScene(o, f.name)) to.*f.field = o.material.*f.field;
+  for (const auto& f : kColorFields)
+    if (!fromScene(o, f.name)) to.*f.field = o.material.*f.field;
 }
 
 template <class Enum, size_t N>
@@ -206,8 +225,9 @@ json overrideToJson(const MaterialOverride& o) {
             {"baseColor", toJson(m.baseColor)},
             {"thin", m.thin}};
   for (const auto& f : kFloatFields)
-    if (std::find(o.sceneValues.begin(), o.sceneValues.end(), f.name) == o.sceneValues.end())
-      j[f.name] = m.*f.field;
+    if (!fromScene(o, f.name)) j[f.name] = m.*f.field;
+  for (const auto& f : kColorFields)
+    if (!fromScene(o, f.name)) j[f.name] = toJson(m.*f.field);
   return j;
 }
 
@@ -233,15 +253,24 @@ MaterialOverride overrideFromJson(const json& j, const std::string& key, const R
   if (model.is_string()) parsed = parseMaterialModel(model.get<std::string>());
   if (!parsed) r.fail(key + ".model", "must be one of disney, lambert, phong, unlit");
   m.model = *parsed;
-  const json& color = field("baseColor");
-  if (!color.is_array() || color.size() != 3)
-    r.fail(key + ".baseColor", "must be an array of 3 numbers");
-  for (int c = 0; c < 3; ++c) m.baseColor[c] = r.finite(color[size_t(c)], key + ".baseColor");
+  auto readColor = [&](const char* name, glm::vec3& to) {
+    const json& color = field(name);
+    if (!color.is_array() || color.size() != 3)
+      r.fail(key + "." + name, "must be an array of 3 numbers");
+    for (int c = 0; c < 3; ++c) to[c] = r.finite(color[size_t(c)], key + "." + name);
+  };
+  readColor("baseColor", m.baseColor);
   for (const auto& f : kFloatFields) {
     if (f.optional && !j.contains(f.name))
       o.sceneValues.push_back(f.name);
     else
       m.*f.field = r.finite(field(f.name), key + "." + f.name);
+  }
+  for (const auto& f : kColorFields) {
+    if (!j.contains(f.name))
+      o.sceneValues.push_back(f.name);
+    else
+      readColor(f.name, m.*f.field);
   }
   if (!field("thin").is_boolean()) r.fail(key + ".thin", "must be true or false");
   m.thin = j.at("thin").get<bool>();
@@ -261,6 +290,7 @@ const std::vector<std::string>& editableMaterialParameters() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> list;
     for (const auto& f : kFloatFields) list.push_back(f.name);
+    for (const auto& f : kColorFields) list.push_back(f.name);
     return list;
   }();
   return names;
@@ -268,22 +298,26 @@ const std::vector<std::string>& editableMaterialParameters() {
 
 void setEditableParameter(scene::Material& material, std::string_view name,
                           const std::vector<float>& values) {
-  const size_t expected = name == "baseColor" ? 3 : 1;
-  float* target = name == "baseColor" ? &material.baseColor.x : nullptr;
+  float* scalar = nullptr;
+  glm::vec3* color = name == "baseColor" ? &material.baseColor : nullptr;
   for (const auto& f : kFloatFields)
-    if (name == f.name) target = &(material.*f.field);
-  if (!target) {
+    if (name == f.name) scalar = &(material.*f.field);
+  for (const auto& f : kColorFields)
+    if (name == f.name) color = &(material.*f.field);
+  if (!scalar && !color) {
     std::string known = "baseColor";
     for (const auto& f : kFloatFields) known += std::string(", ") + f.name;
+    for (const auto& f : kColorFields) known += std::string(", ") + f.name;
     throw Error(fmt::format("unknown material parameter '{}' ({})", name, known));
   }
+  const size_t expected = color ? 3 : 1;
   if (values.size() != expected)
     throw Error(fmt::format("material parameter '{}' takes {} number(s), got {}", name, expected,
                             values.size()));
-  if (expected == 3)
-    material.baseColor = {values[0], values[1], values[2]};
+  if (color)
+    *color = {values[0], values[1], values[2]};
   else
-    *target = values[0];
+    *scalar = values[0];
 }
 
 std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Material>& loaded,

@@ -56,7 +56,7 @@ struct MaterialOverride {
   scene::Material material;
   // Parameters made editable after the record was written, which it does
   // not give: the scene's values stay (anisotropyStrength, anisotropyRotation,
-  // sheenRoughness).
+  // sheenRoughness, diffuseTransmission and the colours but baseColor).
   std::vector<std::string> sceneValues;
 };
 
@@ -99,10 +99,11 @@ struct RenderJob {
 const char* materialModelName(scene::MaterialModel model);
 std::optional<scene::MaterialModel> parseMaterialModel(std::string_view name);
 
-// The scalar parameters the viewer can edit, by their record (and scene file)
-// names; baseColor is the one vector.
+// The parameters the viewer can edit besides baseColor, by their record (and
+// scene file) names: the scalars, then the colours (specularColor,
+// sheenColor, diffuseTransmissionColor).
 const std::vector<std::string>& editableMaterialParameters();
-// Sets an editable parameter: 3 values for baseColor, 1 otherwise. Throws
+// Sets an editable parameter: 3 values for a colour, 1 otherwise. Throws
 // penumbra::Error naming the parameter on an unknown name or a bad count.
 void setEditableParameter(scene::Material& material, std::string_view name,
                           const std::vector<float>& values);

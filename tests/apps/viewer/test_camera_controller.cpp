@@ -84,6 +84,25 @@ TEST_CASE("camera controller: the wheel scales the speed by 1.25 per notch", "[v
   CHECK(controller.speed() == Approx(1.0f));
 }
 
+TEST_CASE("camera controller: on an orthographic camera the wheel zooms, 1.25 per notch",
+          "[viewer]") {
+  // Moving along a parallel view does not change it; the height it shows does.
+  scene::Camera home = homeCamera();
+  home.orthographicHeight = 2.0f;
+  viewer::CameraController controller(home, 1.0f);
+  viewer::CameraInput scroll;
+  scroll.scrollSteps = 2;  // towards: closer in
+  REQUIRE(controller.update(scroll, 0.016f));
+  CHECK(controller.camera().orthographicHeight == Approx(2.0f / 1.5625f));
+  CHECK(controller.camera().position == home.position);
+  CHECK(controller.speed() == 1.0f);
+  scroll.scrollSteps = -3;
+  REQUIRE(controller.update(scroll, 0.016f));
+  CHECK(controller.camera().orthographicHeight == Approx(2.0f * 1.25f));
+  controller.reset();
+  CHECK(controller.camera().orthographicHeight == 2.0f);
+}
+
 TEST_CASE("camera controller: focusOn faces the target and focuses on it; position and up stay",
           "[viewer]") {
   viewer::CameraController controller(homeCamera(), 1.0f);
