@@ -70,6 +70,7 @@ struct DisneyMaterial {
   float specular;
   float specularTint;
   float3 specularColor;  // multiplies the dielectric F0 per channel before its clamp to 1
+  float specularF90;     // caps the dielectric layer's grazing reflectance (glTF's specularFactor)
   float sheen;
   float sheenTint;
   float3 sheenColor;  // multiplies the sheen per channel, in [0, 1]
@@ -215,11 +216,23 @@ float3 fresnelSchlickFaded(float3 f0, float cosTheta) {
   return f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
 }
 
+// The dielectric layer's Fresnel: the faded Schlick above, its F90 capped by
+// specularF90 (glTF's specularFactor x the specular texture's alpha) in the
+// variant that holds glTF's specular extension; 1 elsewhere.
+float3 dielectricFresnel(DisneyMaterial m, float3 f0, float cosTheta) {
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
+  float f90 = min(saturate(50.0 * maxComponent(f0)), m.specularF90);
+  return f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
+#else
+  return fresnelSchlickFaded(f0, cosTheta);
+#endif
+}
+
 // Fresnel of the specular reflection lobe: metal and dielectric layers mixed,
 // already multiplied by their lobe weights.
 float3 specularFresnel(DisneyMaterial m, float cosThetaD) {
   float3 metal = fresnelSchlickFaded(m.baseColor, cosThetaD);
-  float3 dielectric = fresnelSchlickFaded(dielectricSpecularF0(m), cosThetaD);
+  float3 dielectric = dielectricFresnel(m, dielectricSpecularF0(m), cosThetaD);
   return m.metallic * metal + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectric;
 }
 
@@ -326,8 +339,8 @@ float3 layerTransmission(float3 fresnelO, float3 fresnelI) {
 float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI, float coat) {
   float3 f0 = dielectricSpecularF0(m);
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
-  float3 specO = fresnelSchlickFaded(f0, cosO);
-  float3 specI = fresnelSchlickFaded(f0, cosI);
+  float3 specO = dielectricFresnel(m, f0, cosO);
+  float3 specI = dielectricFresnel(m, f0, cosI);
   return layerTransmission(specO, specI) * coat;
 #else
   float specO = fresnelSchlickFaded(f0, cosO).x;

@@ -22,7 +22,7 @@
 #define PT_EFFECT_ALPHA_MASK 128   // MASK (textured or COLOR_0 alpha) or BLEND: an any-hit shader cuts
 #define PT_EFFECT_ENVIRONMENT 512  // an environment map: seen by rays that escape, sampled by NEE
 #define PT_EFFECT_ORTHOGRAPHIC 1024 // an orthographic camera: parallel rays from the film plane
-#define PT_EFFECT_SPECULAR_COLOR 2048 // a coloured dielectric F0, or one above 0.08: specularColor != 1, its texture, specularTint > 0
+#define PT_EFFECT_SPECULAR_COLOR 2048 // a coloured dielectric F0, or one above 0.08: specularColor != 1, its texture, specularTint > 0; or glTF's F90 below 1 (specularF90, the specular texture)
 #define PT_EFFECT_GLTF_COAT 4096   // glTF's coat (the lambert model's clearcoat > 0): full strength, GGX, instead of Disney's GTR1
 #define PT_EFFECT_GLTF_SHEEN 8192  // glTF's sheen (the lambert model's sheen > 0): Charlie fibres and their albedo table, instead of Burley's
 #define PT_EFFECT_DIFFUSE_TRANSMISSION 16384 // diffuseTransmission > 0: part of the diffuse lobe passes to the other side

@@ -37,6 +37,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.specular = d.specular;
   m.specularTint = d.specularTint;
   m.specularColor = d.specularColor;
+  m.specularF90 = d.specularF90;
   m.sheen = d.sheen;
   m.sheenTint = d.sheenTint;
   m.sheenColor = d.sheenColor;
@@ -61,6 +62,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
     m.specTrans = p.transparency;
     m.specular = 0.5 * p.ks;
     m.specularColor = splat3(1.0);
+    m.specularF90 = 1.0;
     m.lambertDiffuse = true;
   }
   // A variant without an effect is only used for scenes whose materials all
@@ -87,6 +89,7 @@ DisneyMaterial unpackDisney(MaterialData d) {
 #if !PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
   m.specularTint = 0.0;
   m.specularColor = splat3(1.0);
+  m.specularF90 = 1.0;
 #endif
   return m;
 }

@@ -272,7 +272,7 @@ struct MaterialData {
   uint diffuseTransmissionTexture;       // alpha scales diffuseTransmission
   uint diffuseTransmissionColorTexture;  // rgb (sRGB) scales diffuseTransmissionColor
   float3 diffuseTransmissionColor;
-  uint unused7;
+  float specularF90;  // the dielectric layer's grazing reflectance at most (glTF's specularFactor)
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -412,7 +412,8 @@ static_assert(sizeof(MaterialData) == 256 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, sheenColor) == 208 &&
               offsetof(MaterialData, sheenRoughness) == 220 &&
               offsetof(MaterialData, clearcoatNormalScale) == 224 &&
-              offsetof(MaterialData, diffuseTransmissionColor) == 240);
+              offsetof(MaterialData, diffuseTransmissionColor) == 240 &&
+              offsetof(MaterialData, specularF90) == 252);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

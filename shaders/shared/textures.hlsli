@@ -24,8 +24,9 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // r^2 = lerp(0.1, 0.001, g) (Disney's); specTrans by
 // the transmission's red; sheenColor per channel by the sheen colour
 // texture, sheenRoughness by the sheen roughness texture's alpha; specular (glTF's specularFactor)
-// by the specular texture's alpha, specularColor per channel by the specular colour texture;
-// diffuseTransmission by its texture's alpha, diffuseTransmissionColor by its colour texture.
+// and specularF90 by the specular texture's alpha, specularColor per channel by the specular colour
+// texture; diffuseTransmission by its texture's alpha, diffuseTransmissionColor by its colour
+// texture.
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
@@ -42,7 +43,13 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
     d.sheenColor *= sampleTextureRef(d.sheenColorTexture, uv).xyz;
   if (d.sheenRoughnessTexture != PT_NO_TEXTURE)
     d.sheenRoughness *= sampleTextureRef(d.sheenRoughnessTexture, uv).w;
-  if (d.specularTexture != PT_NO_TEXTURE) d.specular *= sampleTextureRef(d.specularTexture, uv).w;
+  if (d.specularTexture != PT_NO_TEXTURE) {
+    float a = sampleTextureRef(d.specularTexture, uv).w;
+    d.specular *= a;
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
+    d.specularF90 *= a;  // glTF: F90 = specularFactor x the texture's alpha
+#endif
+  }
   if (d.specularColorTexture != PT_NO_TEXTURE)
     d.specularColor *= sampleTextureRef(d.specularColorTexture, uv).xyz;
   if (d.anisotropyTexture != PT_NO_TEXTURE)

@@ -93,6 +93,15 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
   m.specular = 0.0f;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
+  // glTF's F90 = specularFactor below 1, or a specular texture (whose alpha
+  // scales it), is part of the same code.
+  m = disney();
+  m.specular = 0.25f;
+  m.specularF90 = 0.5f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == colouredF0);
+  m.specularF90 = 1.0f;
+  m.specularTexture = 0;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == (colouredF0 | PT_EFFECT_TEXTURES));
   m = disney();
   m.specTrans = 1.0f;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==

@@ -368,6 +368,9 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   CHECK(specularF0.x == Approx(0.5f));  // 10/9 clamped to 1
   CHECK(specularF0.y == Approx(0.5f / 9.0f));
   CHECK(specularF0.z == Approx(0.1f / 9.0f));
+  // ... and F90 = specularFactor; 1 without the extension.
+  CHECK(materialNamed(s, "specular").specularF90 == 0.5f);
+  CHECK(materialNamed(s, "coat").specularF90 == 1.0f);
 
   // Sheen strength is the colour's largest channel, untinted.
   const auto& sheen = materialNamed(s, "sheen");

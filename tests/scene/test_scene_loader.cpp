@@ -248,8 +248,10 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
       ContainsSubstring("attenuationColor must lie in [0, 1]"));
   // Diffuse transmission (a leaf), with its colour; outside [0, 1] refused.
   const auto leaf = scene::parseScene(
-      withGlass(R"({"diffuseTransmission":0.4,"diffuseTransmissionColor":[0.2,0.9,0.1]})"),
+      withGlass(
+          R"({"diffuseTransmission":0.4,"diffuseTransmissionColor":[0.2,0.9,0.1],"specularF90":0.5})"),
       "t.json");
+  CHECK(leaf.materials[0].specularF90 == 0.5f);
   CHECK(leaf.materials[0].diffuseTransmission == 0.4f);
   CHECK(leaf.materials[0].diffuseTransmissionColor == glm::vec3(0.2f, 0.9f, 0.1f));
   REQUIRE_THROWS_WITH(

@@ -5,7 +5,10 @@
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "bsdf_harness.h"
 #include "penumbra/scene/gltf_materials.h"
@@ -194,19 +197,24 @@ TEST_CASE(
       for (int c = 0; c < 3; ++c)
         REQUIRE(e.f[c] == Catch::Approx(ref[c]).epsilon(2e-4).margin(1e-7));
     }
-  // specularFactor 0.5 scales F0 exactly; where VdotH = 1 (view and light
-  // along the normal) the Fresnel is F0 and F90 plays no part. Towards
-  // grazing half angles the engine keeps F90 = 1 (its fade only lowers F90
-  // below F0 = 0.02) where the extension has F90 = specularFactor: it
-  // reflects more there (docs/materials.md).
-  const glm::dvec3 n = direction(0, 0);
-  const auto half = specularExtensionMaterial(2.0, color, 0.5, 0.5);
-  const auto e = harness.eval(half, glm::vec3(n), {glm::vec3(n)})[0];
-  const glm::dvec3 ref = specularExtension(2.0, color, 0.5, 0.5, n, n);
-  for (int c = 0; c < 3; ++c) REQUIRE(e.f[c] == Catch::Approx(ref[c]).epsilon(2e-4));
-  const glm::dvec3 v = direction(80, 0), l = direction(80, 180);
-  const auto grazing = harness.eval(half, glm::vec3(v), {glm::vec3(l)})[0];
-  REQUIRE(grazing.f.y > specularExtension(2.0, color, 0.5, 0.5, v, l).y);
+  // specularFactor 0.5 scales F0 and is F90: at every pair, grazing half
+  // angles included, where F90 dominates (the engine's Fresnel once kept
+  // F90 = 1 there and reflected up to twice as much). A grey F0 of 0.02
+  // (ior 1.5, colour 1), which the loader writes as `specular` alone, too.
+  for (const auto& [ior, tint] : {std::pair{2.0, color}, std::pair{1.5, glm::dvec3(1.0)}}) {
+    const auto half = specularExtensionMaterial(ior, tint, 0.5, 0.5);
+    std::vector<Pair> pairs(std::begin(kPairs), std::end(kPairs));
+    pairs.push_back({direction(80, 0), direction(80, 180)});
+    pairs.push_back({direction(85, 10), direction(70, 200)});
+    for (const auto& p : pairs) {
+      const auto e = harness.eval(half, glm::vec3(p.v), {glm::vec3(p.l)})[0];
+      const glm::dvec3 ref = specularExtension(ior, tint, 0.5, 0.5, p.v, p.l);
+      INFO("ior " << ior << " v.z " << p.v.z << " l.z " << p.l.z << ": f " << e.f.y
+                  << ", extension " << ref.y);
+      for (int c = 0; c < 3; ++c)
+        REQUIRE(e.f[c] == Catch::Approx(ref[c]).epsilon(2e-4).margin(1e-7));
+    }
+  }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }
 

@@ -33,8 +33,10 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   const bool greyF0 = m.specularColor == glm::vec3(1.0f) &&
                       m.specularColorTexture == scene::Material::kNoTexture &&
                       m.specularTint == 0.0f;
+  // glTF's F90 = specularFactor, scaled by the specular texture's alpha.
+  const bool fullF90 = m.specularF90 >= 1.0f && m.specularTexture == scene::Material::kNoTexture;
   // Even a metal: a metallic texture can leave parts of it dielectric.
-  if (m.specular > 0.0f && !greyF0) effects |= PT_EFFECT_SPECULAR_COLOR;
+  if (m.specular > 0.0f && !(greyF0 && fullF90)) effects |= PT_EFFECT_SPECULAR_COLOR;
   if (m.specTrans > 0.0f) effects |= PT_EFFECT_TRANSMISSION;
   // The lambert model (glTF's) has the extensions' coat and sheen
   // (MATERIAL_FLAG_GGX_COAT, MATERIAL_FLAG_CHARLIE_SHEEN); Disney has its own.

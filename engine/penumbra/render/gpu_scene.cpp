@@ -181,6 +181,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.specular = m.specular;
   d.specularTint = m.specularTint;
   d.specularColor = toFloat3(m.specularColor);
+  d.specularF90 = m.model == scene::MaterialModel::Phong ? 1.0f : m.specularF90;
   d.sheen = m.sheen;
   d.sheenTint = m.sheenTint;
   d.sheenColor = toFloat3(m.sheenColor);

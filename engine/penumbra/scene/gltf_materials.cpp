@@ -169,7 +169,7 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
   m.ior = ior;
   // The dielectric F0 = min(F0(ior) * specularColorFactor, 1) * specularFactor
   // (KHR_materials_specular), through the Disney F0 = specular * min(0.08 *
-  // specularColor, 1).
+  // specularColor, 1); its F90 = specularFactor.
   float factor = 1.0f;
   glm::vec3 colorFactor(1.0f);
   if (const auto* e = extension(src, "KHR_materials_specular")) {
@@ -181,6 +181,7 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
             "{}: KHR_materials_specular specularColorFactor must be finite and non-negative",
             where));
   }
+  m.specularF90 = factor;
   const glm::vec3 f0 = colorFactor * f0FromIor(ior);
   // A grey F0 that `specular` alone reaches (<= 0.08) is written as `specular`
   // with specularColor 1: a scene of such materials builds without the

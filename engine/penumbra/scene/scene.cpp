@@ -199,7 +199,7 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
   for (float v :
        {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen, m.sheenTint,
         m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface, m.reflectivity, m.transparency,
-        m.anisotropyStrength, m.sheenRoughness, m.diffuseTransmission})
+        m.anisotropyStrength, m.sheenRoughness, m.diffuseTransmission, m.specularF90})
     if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
   for (int i = 0; i < 3; ++i)
     if (!unit(m.sheenColor[i]))

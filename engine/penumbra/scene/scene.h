@@ -77,6 +77,9 @@ struct Material {
   // F0 = specular * min(0.08 * lerp(1, tint, specularTint) * specularColor, 1).
   // glTF's KHR_materials_specular colour lands here (times F0(ior) / 0.08).
   glm::vec3 specularColor{1.0f};
+  // The dielectric layer's grazing reflectance is at most this (glTF's
+  // KHR_materials_specular: F90 = specularFactor); 1 keeps Schlick's F90 = 1.
+  float specularF90 = 1.0f;
   float sheen = 0.0f;
   float sheenTint = 0.5f;
   // Multiplies the sheen per channel, in [0, 1] (glTF's sheen colour is
@@ -126,7 +129,7 @@ struct Material {
   // parameter its factor became: clearcoat by red, the coat's roughness by
   // green (clearcoatGloss follows), specTrans by the transmission's red,
   // sheenColor by the sheen colour texture (rgb), sheenRoughness by the sheen
-  // roughness texture's alpha, specular by the specular texture's alpha,
+  // roughness texture's alpha, specular and specularF90 by the specular texture's alpha,
   // specularColor by the specular colour texture (rgb).
   uint32_t clearcoatTexture = kNoTexture;
   uint32_t clearcoatRoughnessTexture = kNoTexture;

@@ -14,7 +14,7 @@ namespace {
 // then update the count.
 // Material::emissionIsLighting only decides whether the default environment
 // is added, and the environment is hashed: not hashed.
-static_assert(fieldCount<Material>() == 53, "a Material field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Material>() == 54, "a Material field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Camera>() == 9, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
@@ -40,6 +40,7 @@ void hashMaterial(ContentHash& h, const Material& m) {
   h.value(m.sheenColor);
   h.value(m.sheenRoughness);
   h.value(m.diffuseTransmission);
+  h.value(m.specularF90);
   h.value(m.diffuseTransmissionColor);
   h.value(m.anisotropyStrength);
   h.value(m.anisotropyRotation);

@@ -58,6 +58,7 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
       readFloat(m, "anisotropyRotation", material.anisotropyRotation, where);
   material.specular = readFloat(m, "specular", material.specular, where);
   material.specularTint = readFloat(m, "specularTint", material.specularTint, where);
+  material.specularF90 = readFloat(m, "specularF90", material.specularF90, where);
   if (m.contains("specularColor"))
     material.specularColor = readVec3(m.at("specularColor"), where + " specularColor");
   material.sheen = readFloat(m, "sheen", material.sheen, where);

@@ -113,6 +113,7 @@ void main() {
     d.flags = flags;
     // F0 colours from 0 to past the clamp at 1 (0.08 x 20 = 1.6).
     d.specularColor = 20.0 * float3(pick(rng), pick(rng), pick(rng));
+    d.specularF90 = pick(rng);
     d.sheenColor = float3(pick(rng), pick(rng), pick(rng));
     d.sheenRoughness = pick(rng);
     d.diffuseTransmission = pick(rng);

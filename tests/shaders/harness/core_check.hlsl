@@ -86,6 +86,7 @@ MaterialData loadMaterial(uint index) {
   m.normalScale = 1.0;
   m.clearcoatNormalTexture = PT_NO_TEXTURE;
   m.clearcoatNormalScale = 1.0;
+  m.specularF90 = 1.0;
   m.diffuseTransmissionTexture = PT_NO_TEXTURE;
   m.diffuseTransmissionColorTexture = PT_NO_TEXTURE;
   m.occlusionStrength = 1.0;
