@@ -376,6 +376,7 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
       m.specularColorTexture = 1;
     };
     plain.specular *= 90.0f / 255.0f;
+    plain.specularF90 *= 90.0f / 255.0f;  // glTF: F90 = specularFactor x the alpha too
     plain.specularColor *= glm::vec3(srgbToLinear(30.0f / 255.0f), srgbToLinear(140.0f / 255.0f),
                                      srgbToLinear(60.0f / 255.0f));
   }
