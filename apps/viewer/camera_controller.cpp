@@ -18,8 +18,14 @@ bool CameraController::update(const CameraInput& input, float seconds) {
   // Moving along a parallel view changes nothing in it: there the wheel
   // zooms, each notch forward showing 1 / 1.25 of the height.
   if (input.scrollSteps != 0 && camera_.orthographic()) {
-    camera_.orthographicHeight /= std::pow(kSpeedStepFactor, input.scrollSteps);
-    changed = true;
+    // Kept within what a camera may hold (scene::validateCamera: at most
+    // 1e9) and short of 0, which would turn the view perspective.
+    const float height = camera_.orthographicHeight / std::pow(kSpeedStepFactor, input.scrollSteps);
+    const float bounded = std::isnan(height)
+                              ? camera_.orthographicHeight
+                              : std::clamp(height, kMinOrthographicHeight, kMaxOrthographicHeight);
+    changed = bounded != camera_.orthographicHeight;
+    camera_.orthographicHeight = bounded;
   } else if (input.scrollSteps != 0) {
     speed_ *= std::pow(kSpeedStepFactor, input.scrollSteps);
   }

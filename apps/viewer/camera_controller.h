@@ -21,6 +21,9 @@ class CameraController {
   static constexpr float kDegreesPerPixel = 0.2f;
   static constexpr float kSpeedStepFactor = 1.25f;  // per wheel notch (speed or zoom)
   static constexpr float kMaxElevationDegrees = 89.0f;
+  // The wheel's zoom of an orthographic camera stays within these heights.
+  static constexpr float kMinOrthographicHeight = 1e-6f;
+  static constexpr float kMaxOrthographicHeight = 1e9f;
 
   // `speed`: metres per second at the start (the viewer derives it from the scene's size).
   CameraController(const scene::Camera& home, float speed);

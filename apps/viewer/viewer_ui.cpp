@@ -305,6 +305,11 @@ void Viewer::drawMaterialMenu() {
                                  ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     changed |= ImGui::ColorEdit3("sheen color", &m.sheenColor.x);
     changed |= ImGui::ColorEdit3("diffuse transmission color", &m.diffuseTransmissionColor.x);
+    // Typed or dragged values stay within what the scene accepts
+    // (scene::validate): a record of them renders again.
+    m.specularColor = glm::max(m.specularColor, glm::vec3(0.0f));
+    m.sheenColor = glm::clamp(m.sheenColor, 0.0f, 1.0f);
+    m.diffuseTransmissionColor = glm::clamp(m.diffuseTransmissionColor, 0.0f, 1.0f);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");
   if (changed) materialsChanged();

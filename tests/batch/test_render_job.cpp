@@ -224,6 +224,12 @@ TEST_CASE("render job: overrides apply the edited parameters and keep the rest",
   CHECK(box.materials[0].baseColor == glm::vec3(0.8f));
   REQUIRE_THROWS_WITH(render::setEditableParameter(edited[0], "baseColor", {1.0f}),
                       "material parameter 'baseColor' takes 3 number(s), got 1");
+  REQUIRE_THROWS_WITH(render::setEditableParameter(edited[0], "sheenColor", {2.0f, 0.0f, 0.0f}),
+                      "material parameter 'sheenColor' takes values in [0, 1], got 2");
+  REQUIRE_THROWS_WITH(render::setEditableParameter(edited[0], "specularColor", {3.0f, -1.0f, 0.0f}),
+                      "material parameter 'specularColor' takes values >= 0, got -1");
+  render::setEditableParameter(edited[0], "specularColor", {3.0f, 1.0f, 0.0f});
+  CHECK(edited[0].specularColor == glm::vec3(3.0f, 1.0f, 0.0f));
 }
 
 TEST_CASE(

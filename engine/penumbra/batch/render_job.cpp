@@ -314,10 +314,18 @@ void setEditableParameter(scene::Material& material, std::string_view name,
   if (values.size() != expected)
     throw Error(fmt::format("material parameter '{}' takes {} number(s), got {}", name, expected,
                             values.size()));
-  if (color)
+  if (color) {
+    // The scene's ranges (scene::validate): a coloured F0 may pass 1, the
+    // other colours may not.
+    const bool unbounded = name == "specularColor";
+    for (float v : values)
+      if (!(v >= 0.0f && (unbounded ? std::isfinite(v) : v <= 1.0f)))
+        throw Error(fmt::format("material parameter '{}' takes values {}, got {}", name,
+                                unbounded ? ">= 0" : "in [0, 1]", v));
     *color = {values[0], values[1], values[2]};
-  else
+  } else {
     *scalar = values[0];
+  }
 }
 
 std::vector<MaterialOverride> materialOverrides(const std::vector<scene::Material>& loaded,

@@ -185,7 +185,8 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
   const glm::vec3 f0 = colorFactor * f0FromIor(ior);
   // A grey F0 that `specular` alone reaches (<= 0.08) is written as `specular`
   // with specularColor 1: a scene of such materials builds without the
-  // coloured F0's code (PT_EFFECT_SPECULAR_COLOR). A specular colour texture
+  // coloured F0's code (PT_EFFECT_SPECULAR_COLOR) unless specularFactor
+  // (F90) is below 1 or a specular texture scales it. A specular colour texture
   // (<= 1) cannot push it past the clamp then, so both forms agree under it.
   if (f0.x == f0.y && f0.y == f0.z && f0.x <= 1.0f && factor * f0.x <= 0.08f) {
     m.specular = factor * f0.x / 0.08f;

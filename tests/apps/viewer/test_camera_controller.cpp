@@ -99,6 +99,15 @@ TEST_CASE("camera controller: on an orthographic camera the wheel zooms, 1.25 pe
   scroll.scrollSteps = -3;
   REQUIRE(controller.update(scroll, 0.016f));
   CHECK(controller.camera().orthographicHeight == Approx(2.0f * 1.25f));
+  // Far out or in it stops at the heights a camera may hold, and stays
+  // orthographic (a height of 0 would mean perspective).
+  scroll.scrollSteps = -1000;
+  controller.update(scroll, 0.016f);
+  CHECK(controller.camera().orthographicHeight == viewer::CameraController::kMaxOrthographicHeight);
+  scroll.scrollSteps = 1e30f;
+  controller.update(scroll, 0.016f);
+  CHECK(controller.camera().orthographicHeight == viewer::CameraController::kMinOrthographicHeight);
+  CHECK(controller.camera().orthographic());
   controller.reset();
   CHECK(controller.camera().orthographicHeight == 2.0f);
 }
