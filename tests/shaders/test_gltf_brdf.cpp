@@ -220,14 +220,22 @@ TEST_CASE(
 
 namespace {
 
+// A dielectric glTF material of base colour `base` and ior 1 (F0 0: no
+// specular layer), for the extension under test to add to.
+tinygltf::Material iorOneMaterial(glm::dvec3 base) {
+  tinygltf::Material src;
+  src.pbrMetallicRoughness.baseColorFactor = {base.x, base.y, base.z, 1.0};
+  src.pbrMetallicRoughness.metallicFactor = 0.0;
+  src.extensions["KHR_materials_ior"] =
+      tinygltf::Value(tinygltf::Value::Object{{"ior", tinygltf::Value(1.0)}});
+  return src;
+}
+
 // A black base with ior 1 (F0 0: no specular layer) under
 // KHR_materials_clearcoat, through the loader's own conversion: the coat alone.
 scene::Material clearcoatExtensionMaterial(double factor, double roughness) {
   using tinygltf::Value;
-  tinygltf::Material src;
-  src.pbrMetallicRoughness.baseColorFactor = {0.0, 0.0, 0.0, 1.0};
-  src.pbrMetallicRoughness.metallicFactor = 0.0;
-  src.extensions["KHR_materials_ior"] = Value(Value::Object{{"ior", Value(1.0)}});
+  tinygltf::Material src = iorOneMaterial(glm::dvec3(0.0));
   src.extensions["KHR_materials_clearcoat"] = Value(Value::Object{
       {"clearcoatFactor", Value(factor)}, {"clearcoatRoughnessFactor", Value(roughness)}});
   std::vector<std::string> warnings;
@@ -332,10 +340,7 @@ TEST_CASE(
   // is all there is: (1 - t) baseColor / pi towards wo's side, t colour / pi
   // towards the other, whatever the directions.
   using tinygltf::Value;
-  tinygltf::Material src;
-  src.pbrMetallicRoughness.baseColorFactor = {0.6, 0.4, 0.2, 1.0};
-  src.pbrMetallicRoughness.metallicFactor = 0.0;
-  src.extensions["KHR_materials_ior"] = Value(Value::Object{{"ior", Value(1.0)}});
+  tinygltf::Material src = iorOneMaterial(glm::dvec3(0.6, 0.4, 0.2));
   src.extensions["KHR_materials_diffuse_transmission"] = Value(Value::Object{
       {"diffuseTransmissionFactor", Value(0.3)},
       {"diffuseTransmissionColorFactor", Value(Value::Array{Value(0.9), Value(0.5), Value(0.1)})}});
@@ -367,10 +372,7 @@ namespace {
 // KHR_materials_sheen, through the loader's own conversion.
 scene::Material sheenExtensionMaterial(glm::dvec3 color, double roughness, double base) {
   using tinygltf::Value;
-  tinygltf::Material src;
-  src.pbrMetallicRoughness.baseColorFactor = {base, base, base, 1.0};
-  src.pbrMetallicRoughness.metallicFactor = 0.0;
-  src.extensions["KHR_materials_ior"] = Value(Value::Object{{"ior", Value(1.0)}});
+  tinygltf::Material src = iorOneMaterial(glm::dvec3(base));
   src.extensions["KHR_materials_sheen"] = Value(Value::Object{
       {"sheenColorFactor", Value(Value::Array{Value(color.x), Value(color.y), Value(color.z)})},
       {"sheenRoughnessFactor", Value(roughness)}});
