@@ -2,6 +2,8 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "penumbra/batch/render_job.h"
 #include "penumbra/render/effect_set.h"
 #include "penumbra/scene/material_row.h"
@@ -300,6 +302,11 @@ void Viewer::drawMaterialMenu() {
     // Radians, counter-clockwise from the tangent (KHR_materials_anisotropy).
     changed |= ImGui::SliderAngle("anisotropy rotation", &m.anisotropyRotation, -180.0f, 180.0f);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
+    // A thin film (KHR_materials_iridescence); its thickness in nm is the
+    // glTF maximum, the one used without a thickness texture.
+    changed |= ImGui::SliderFloat("iridescence", &m.iridescence, 0, 1);
+    changed |= ImGui::SliderFloat("film ior", &m.iridescenceIor, 1, 3);
+    changed |= ImGui::SliderFloat("film thickness (nm)", &m.iridescenceThicknessMaximum, 0, 1200);
     // F0 = 0.08 specular x specularColor, clamped to 1: the colour may pass 1.
     changed |= ImGui::ColorEdit3("specular color", &m.specularColor.x,
                                  ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
@@ -310,6 +317,9 @@ void Viewer::drawMaterialMenu() {
     m.specularColor = glm::max(m.specularColor, glm::vec3(0.0f));
     m.sheenColor = glm::clamp(m.sheenColor, 0.0f, 1.0f);
     m.diffuseTransmissionColor = glm::clamp(m.diffuseTransmissionColor, 0.0f, 1.0f);
+    m.iridescence = std::clamp(m.iridescence, 0.0f, 1.0f);
+    m.iridescenceIor = std::clamp(m.iridescenceIor, 1.0f, 4.0f);
+    m.iridescenceThicknessMaximum = std::clamp(m.iridescenceThicknessMaximum, 0.0f, 1e5f);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");
   if (changed) materialsChanged();

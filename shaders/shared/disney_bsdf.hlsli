@@ -26,6 +26,8 @@
 //                          * specularColor, 1) (dielectric; specularColor is glTF's
 //                          per-channel F0 colour, 1 for Disney materials), grazing
 //                          reflectance faded below F0 = 0.02 (fresnelSchlickFaded);
+//                          with iridescence i, a share i of either Fresnel is a thin
+//                          film's over it (KHR_materials_iridescence, iridescence.hlsli);
 //   glass     (1-m) t      rough dielectric reflection + refraction (Walter et al. 2007)
 //                          with the exact dielectric Fresnel of `ior`; the thin option
 //                          transmits without bending;
@@ -47,6 +49,7 @@
 #define PENUMBRA_DISNEY_BSDF_HLSLI
 #include "effects.h"
 #include "fresnel.hlsli"
+#include "iridescence.hlsli"
 #include "microfacet.hlsli"
 #include "sampling.hlsli"
 #include "sheen.hlsli"
@@ -82,6 +85,9 @@ struct DisneyMaterial {
   float subsurface;
   float diffuseTransmission;        // the diffuse lobe's share sent to the other side
   float3 diffuseTransmissionColor;  // its colour (the reflected share keeps baseColor)
+  float iridescence;                // the share of the specular Fresnel that is the film's
+  float iridescenceIor;             // the film's index
+  float iridescenceThickness;       // nm; 0: no film
   bool thin;
   bool lambertDiffuse;
   bool ggxCoat;  // glTF's coat (full strength, GGX) instead of Disney's
@@ -207,6 +213,23 @@ float3 dielectricSpecularF0(DisneyMaterial m) {
 #endif
 }
 
+#if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
+bool hasThinFilm(DisneyMaterial m) {
+  return m.iridescence > 0.0 && m.iridescenceThickness > 0.0;
+}
+
+ThinFilm thinFilmOf(DisneyMaterial m, float cosTheta) {
+  return thinFilmAt(m.iridescenceIor, m.iridescenceThickness, cosTheta);
+}
+
+// A layer's Fresnel `fresnel` (of normal reflectance f0, grazing f90) with
+// the thin film over it, by the share m.iridescence; f90 fades the film out
+// with the layer (a dielectric of specular 0 reflects nothing, film or not).
+float3 withThinFilm(DisneyMaterial m, ThinFilm film, float3 fresnel, float3 f0, float f90) {
+  return lerp(fresnel, f90 * thinFilmReflectance(film, f0), m.iridescence);
+}
+#endif
+
 // Schlick's Fresnel with the grazing reflectance faded out below F0 = 0.02
 // (F90 = saturate(50 F0), as in Filament): `specular` = 0 then means no
 // specular reflection at all, instead of a mirror at grazing angles, and
@@ -216,23 +239,42 @@ float3 fresnelSchlickFaded(float3 f0, float cosTheta) {
   return f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
 }
 
-// The dielectric layer's Fresnel: the faded Schlick above, its F90 capped by
+// The dielectric layer's grazing reflectance: faded as above, and capped by
 // specularF90 (glTF's specularFactor x the specular texture's alpha) in the
 // variant that holds glTF's specular extension; 1 elsewhere.
-float3 dielectricFresnel(DisneyMaterial m, float3 f0, float cosTheta) {
+float dielectricF90(DisneyMaterial m, float3 f0) {
+  float f90 = saturate(50.0 * maxComponent(f0));
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
-  float f90 = min(saturate(50.0 * maxComponent(f0)), m.specularF90);
-  return f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
-#else
-  return fresnelSchlickFaded(f0, cosTheta);
+  f90 = min(f90, m.specularF90);
 #endif
+  return f90;
+}
+
+// The dielectric layer's Fresnel: Schlick's up to that F90; a thin film over
+// the layer takes its share (withThinFilm).
+float3 dielectricFresnel(DisneyMaterial m, float3 f0, float cosTheta) {
+  float f90 = dielectricF90(m, f0);
+  float3 fresnel = f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
+#if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
+  if (hasThinFilm(m)) fresnel = withThinFilm(m, thinFilmOf(m, cosTheta), fresnel, f0, f90);
+#endif
+  return fresnel;
 }
 
 // Fresnel of the specular reflection lobe: metal and dielectric layers mixed,
-// already multiplied by their lobe weights.
+// already multiplied by their lobe weights. One film covers both.
 float3 specularFresnel(DisneyMaterial m, float cosThetaD) {
   float3 metal = fresnelSchlickFaded(m.baseColor, cosThetaD);
-  float3 dielectric = dielectricFresnel(m, dielectricSpecularF0(m), cosThetaD);
+  float3 f0 = dielectricSpecularF0(m);
+  float f90 = dielectricF90(m, f0);
+  float3 dielectric = f0 + (splat3(f90) - f0) * schlickWeight(cosThetaD);
+#if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
+  if (hasThinFilm(m)) {
+    ThinFilm film = thinFilmOf(m, cosThetaD);
+    metal = withThinFilm(m, film, metal, m.baseColor, saturate(50.0 * maxComponent(m.baseColor)));
+    dielectric = withThinFilm(m, film, dielectric, f0, f90);
+  }
+#endif
   return m.metallic * metal + (1.0 - m.metallic) * (1.0 - m.specTrans) * dielectric;
 }
 
@@ -338,7 +380,7 @@ float3 layerTransmission(float3 fresnelO, float3 fresnelI) {
 // by the clearcoat (`coat`: coatAttenuation).
 float3 baseAttenuation(DisneyMaterial m, float cosO, float cosI, float coat) {
   float3 f0 = dielectricSpecularF0(m);
-#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
+#if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR) || PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
   float3 specO = dielectricFresnel(m, f0, cosO);
   float3 specI = dielectricFresnel(m, f0, cosI);
   return layerTransmission(specO, specI) * coat;

@@ -49,6 +49,10 @@ DisneyMaterial unpackDisney(MaterialData d) {
   m.subsurface = d.subsurface;
   m.diffuseTransmission = d.diffuseTransmission;
   m.diffuseTransmissionColor = d.diffuseTransmissionColor;
+  m.iridescence = d.iridescence;
+  m.iridescenceIor = d.iridescenceIor;
+  m.iridescenceThickness =
+      d.iridescenceThickness.y;  // the texture's pick (textures.hlsli), else the maximum
   m.thin = (d.flags & MATERIAL_FLAG_THIN) != 0u;
   m.lambertDiffuse = (d.flags & MATERIAL_FLAG_LAMBERT_DIFFUSE) != 0u;
   m.ggxCoat = (d.flags & MATERIAL_FLAG_GGX_COAT) != 0u;
@@ -82,6 +86,9 @@ DisneyMaterial unpackDisney(MaterialData d) {
 #endif
 #if !PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
   m.diffuseTransmission = 0.0;
+#endif
+#if !PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
+  m.iridescence = 0.0;
 #endif
 #if !PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   m.anisotropyStrength = 0.0;

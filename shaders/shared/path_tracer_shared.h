@@ -273,6 +273,17 @@ struct MaterialData {
   uint diffuseTransmissionColorTexture;  // rgb (sRGB) scales diffuseTransmissionColor
   float3 diffuseTransmissionColor;
   float specularF90;  // the dielectric layer's grazing reflectance at most (glTF's specularFactor)
+  // KHR_materials_iridescence: the share of the specular layer's reflectance
+  // that is the thin film's, the film's index and its thickness in nm
+  // (minimum, maximum): the thickness texture's green picks between them,
+  // else the maximum holds.
+  float iridescence;
+  float iridescenceIor;
+  float2 iridescenceThickness;
+  uint iridescenceTexture;           // red scales iridescence
+  uint iridescenceThicknessTexture;  // green: the thickness between minimum and maximum
+  uint unused0;
+  uint unused1;
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
@@ -402,7 +413,7 @@ static_assert(sizeof(PointLight) == 64 && offsetof(PointLight, intensity) == 16 
               offsetof(PointLight, direction) == 32 && offsetof(PointLight, type) == 48);
 static_assert(sizeof(InstanceData) == 128 && offsetof(InstanceData, objectToWorld0) == 16 &&
               offsetof(InstanceData, vertexAttributes) == 112);
-static_assert(sizeof(MaterialData) == 256 && offsetof(MaterialData, emission) == 16 &&
+static_assert(sizeof(MaterialData) == 288 && offsetof(MaterialData, emission) == 16 &&
               offsetof(MaterialData, metallic) == 32 && offsetof(MaterialData, model) == 96 &&
               offsetof(MaterialData, baseColorTexture) == 112 &&
               offsetof(MaterialData, normalScale) == 144 &&
@@ -413,7 +424,8 @@ static_assert(sizeof(MaterialData) == 256 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, sheenRoughness) == 220 &&
               offsetof(MaterialData, clearcoatNormalScale) == 224 &&
               offsetof(MaterialData, diffuseTransmissionColor) == 240 &&
-              offsetof(MaterialData, specularF90) == 252);
+              offsetof(MaterialData, specularF90) == 252 &&
+              offsetof(MaterialData, iridescenceThickness) == 264);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

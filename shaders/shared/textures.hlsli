@@ -26,7 +26,8 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // texture, sheenRoughness by the sheen roughness texture's alpha; specular (glTF's specularFactor)
 // and specularF90 by the specular texture's alpha, specularColor per channel by the specular colour
 // texture; diffuseTransmission by its texture's alpha, diffuseTransmissionColor by its colour
-// texture.
+// texture; iridescence by its texture's red, while the thickness texture's green picks the
+// film's thickness between its minimum and maximum (iridescenceThickness.y holds the pick).
 void applyExtensionTextures(inout MaterialData d, float4 uv) {
   if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
@@ -59,6 +60,13 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
     d.diffuseTransmission *= sampleTextureRef(d.diffuseTransmissionTexture, uv).w;
   if (d.diffuseTransmissionColorTexture != PT_NO_TEXTURE)
     d.diffuseTransmissionColor *= sampleTextureRef(d.diffuseTransmissionColorTexture, uv).xyz;
+#endif
+#if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
+  if (d.iridescenceTexture != PT_NO_TEXTURE)
+    d.iridescence *= sampleTextureRef(d.iridescenceTexture, uv).x;
+  if (d.iridescenceThicknessTexture != PT_NO_TEXTURE)
+    d.iridescenceThickness.y = lerp(d.iridescenceThickness.x, d.iridescenceThickness.y,
+                                    sampleTextureRef(d.iridescenceThicknessTexture, uv).y);
 #endif
 }
 

@@ -250,6 +250,9 @@ TEST_CASE(
   render::setEditableParameter(edited[0], "specularColor", {2.0f, 1.0f, 0.5f});
   render::setEditableParameter(edited[0], "sheenColor", {0.9f, 0.5f, 0.1f});
   render::setEditableParameter(edited[0], "diffuseTransmissionColor", {0.2f, 0.8f, 0.4f});
+  render::setEditableParameter(edited[0], "iridescence", {0.6f});
+  render::setEditableParameter(edited[0], "iridescenceIor", {1.45f});
+  render::setEditableParameter(edited[0], "iridescenceThickness", {510.0f});
   render::RenderJob job;
   job.materials = render::materialOverrides(loaded.materials, edited);
   REQUIRE(job.materials.size() == 1);
@@ -264,6 +267,9 @@ TEST_CASE(
   CHECK(applied.materials[0].specularColor == glm::vec3(2.0f, 1.0f, 0.5f));
   CHECK(applied.materials[0].sheenColor == glm::vec3(0.9f, 0.5f, 0.1f));
   CHECK(applied.materials[0].diffuseTransmissionColor == glm::vec3(0.2f, 0.8f, 0.4f));
+  CHECK(applied.materials[0].iridescence == 0.6f);
+  CHECK(applied.materials[0].iridescenceIor == 1.45f);
+  CHECK(applied.materials[0].iridescenceThicknessMaximum == 510.0f);
 
   // The same record as written before the fields were editable: the other
   // edits apply, the scene's anisotropy stays, and writing it again does
@@ -277,6 +283,9 @@ TEST_CASE(
   override0.erase("specularColor");
   override0.erase("sheenColor");
   override0.erase("diffuseTransmissionColor");
+  override0.erase("iridescence");
+  override0.erase("iridescenceIor");
+  override0.erase("iridescenceThickness");
   override0.at("metallic") = 1.0;
   const auto oldJob = render::renderJobFromJson(old.dump(), "old.json");
   scene::Scene fromOld = loaded;
@@ -289,12 +298,15 @@ TEST_CASE(
   CHECK(fromOld.materials[0].specularColor == glm::vec3(1.0f));
   CHECK(fromOld.materials[0].sheenColor == glm::vec3(1.0f));
   CHECK(fromOld.materials[0].diffuseTransmissionColor == glm::vec3(1.0f));
+  CHECK(fromOld.materials[0].iridescence == 0.0f);
+  CHECK(fromOld.materials[0].iridescenceThicknessMaximum == 400.0f);
   const std::string rewritten = render::renderJobToJson(oldJob);
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("anisotropy"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenRoughness"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("diffuseTransmission"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("specularColor"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenColor"));
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("iridescence"));
   // Fields there from the start stay required.
   override0.erase("sheen");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(old.dump(), "older.json"),

@@ -135,6 +135,15 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DIFFUSE_TRANSMISSION));
   m.model = scene::MaterialModel::Phong;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
+  // A thin film colours a specular layer: none without one (or for Phong).
+  m = disney();
+  m.iridescence = 0.5f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
+  m.metallic = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_IRIDESCENCE));
+  m.model = scene::MaterialModel::Phong;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
   // glTF anisotropy turns the tangent where the hit is built: surface detail.
   m = disney();
   m.metallic = 1.0f;
@@ -206,14 +215,15 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   REQUIRE(render::effectNames(PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN) ==
           std::vector<std::string>{"area-lights", "sheen"});
   REQUIRE(render::effectNames(PT_EFFECT_CLEARCOAT | PT_EFFECT_GLTF_COAT | PT_EFFECT_GLTF_SHEEN |
-                              PT_EFFECT_DIFFUSE_TRANSMISSION) ==
-          std::vector<std::string>{"clearcoat", "gltf-coat", "gltf-sheen", "diffuse-transmission"});
+                              PT_EFFECT_DIFFUSE_TRANSMISSION | PT_EFFECT_IRIDESCENCE) ==
+          std::vector<std::string>{"clearcoat", "gltf-coat", "gltf-sheen", "diffuse-transmission",
+                                   "iridescence"});
 }
 
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) ==
           "path_trace.rgen");
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e32383.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e65151.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) == "path_trace.e1.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS | PT_OUTPUT_GUIDES) ==
           "path_trace.e257.rgen");
@@ -223,7 +233,7 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // Each effect (or the guides) removed makes the shader smaller.
   const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit <= PT_EFFECT_DIFFUSE_TRANSMISSION; bit <<= 1) {
+  for (uint32_t bit = 1; bit <= PT_EFFECT_IRIDESCENCE; bit <<= 1) {
     if ((PT_PATH_TRACE_EFFECT_BITS & bit) == 0) continue;  // alpha masking: no variant
     const auto without = shaders::shaderDesc(render::effectVariant("path_trace.rgen", all & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
@@ -297,6 +307,13 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   leaf.specular = 0.5f;
   leaf.diffuseTransmission = 0.7f;
   leaf.diffuseTransmissionColor = {0.9f, 0.8f, 0.2f};
+  // A film over a plastic and a metal: both layers' Fresnel coloured.
+  auto soapy = disney();
+  soapy.model = scene::MaterialModel::Lambert;
+  soapy.metallic = 0.4f;
+  soapy.specular = 0.5f;
+  soapy.iridescence = 1.0f;
+  soapy.iridescenceThicknessMaximum = 320.0f;
   auto brushed = disney();
   brushed.metallic = 1.0f;
   brushed.roughness = 0.2f;
@@ -362,6 +379,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
       {"coloured dielectric F0 up to 1", cornellWithSphere(tinted), render::Integrator::Path},
       {"glTF coat and sheen", cornellWithSphere(gltfLayers), render::Integrator::Path},
       {"diffuse transmission", cornellWithSphere(leaf, true), render::Integrator::Path},
+      {"iridescence", cornellWithSphere(soapy, true), render::Integrator::Path},
       {"glTF anisotropy (surface detail)", brushedScene, render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},

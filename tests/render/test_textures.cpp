@@ -429,6 +429,24 @@ TEST_CASE("textures: KHR_materials_* textures scale their parameters as a factor
         glm::vec3(srgbToLinear(120.0f / 255.0f), srgbToLinear(200.0f / 255.0f),
                   srgbToLinear(160.0f / 255.0f));
   }
+  // A thin film on a glossy plastic: the factor from red, the thickness
+  // picked between its minimum and maximum by green.
+  SECTION("iridescence from red, the film's thickness from green") {
+    plain.model = scene::MaterialModel::Lambert;
+    plain.specular = 1.0f;
+    plain.metallic = 0.3f;
+    plain.iridescence = 1.0f;
+    plain.iridescenceThicknessMinimum = 150.0f;
+    plain.iridescenceThicknessMaximum = 650.0f;
+    untextured = plain;
+    textures = {uniform({120, 255, 255, 255}, false), uniform({255, 100, 255, 255}, false)};
+    attach = [](scene::Material& m) {
+      m.iridescenceTexture = 0;
+      m.iridescenceThicknessTexture = 1;
+    };
+    plain.iridescence *= 120.0f / 255.0f;
+    plain.iridescenceThicknessMaximum = 150.0f + 500.0f * (100.0f / 255.0f);
+  }
   scene::Material textured = untextured;
   attach(textured);
   auto staged = [&](const scene::Material& m) {

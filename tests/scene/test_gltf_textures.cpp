@@ -379,6 +379,24 @@ TEST_CASE("glTF KHR_materials_* textures fill their slots; unread ones are warne
   CHECK_FALSE(texture(s, brushed.anisotropyTexture).srgb);
   CHECK(ref(s, brushed.anisotropyTexture).texCoord == 1u);
   CHECK_FALSE(hasWarning(r, "KHR_materials_anisotropy"));
+  // ...and a thin film (KHR_materials_iridescence): its factors, and both
+  // textures as data (the factor's red, the thickness's green).
+  CHECK(brushed.iridescence == Approx(0.7f));
+  CHECK(brushed.iridescenceIor == Approx(1.8f));
+  CHECK(brushed.iridescenceThicknessMinimum == 50.0f);
+  CHECK(brushed.iridescenceThicknessMaximum == 600.0f);
+  CHECK_FALSE(texture(s, brushed.iridescenceTexture).srgb);
+  CHECK(texture(s, brushed.iridescenceTexture).name ==
+        texture(s, materialNamed(s, "grey").baseColorTexture).name);
+  requireChecker2x2(texture(s, brushed.iridescenceThicknessTexture));
+  CHECK_FALSE(texture(s, brushed.iridescenceThicknessTexture).srgb);
+  CHECK(ref(s, brushed.iridescenceThicknessTexture).texCoord == 1u);
+  CHECK_FALSE(hasWarning(r, "KHR_materials_iridescence"));
+  // Its defaults: index 1.3, 100 to 400 nm.
+  CHECK(materialNamed(s, "layered").iridescence == 0.0f);
+  CHECK(materialNamed(s, "layered").iridescenceIor == 1.3f);
+  CHECK(materialNamed(s, "layered").iridescenceThicknessMinimum == 100.0f);
+  CHECK(materialNamed(s, "layered").iridescenceThicknessMaximum == 400.0f);
 }
 
 TEST_CASE("glTF images in a .glb buffer view and in data URIs", "[gltf]") {

@@ -259,6 +259,18 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
       ContainsSubstring("diffuseTransmissionColor must lie in [0, 1]"));
   REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"diffuseTransmission":2})"), "t.json"),
                       ContainsSubstring("a parameter is outside [0, 1]"));
+  // A thin film (its thickness in nm); an index below air's or a negative
+  // thickness refused.
+  const auto bubble = scene::parseScene(
+      withGlass(R"({"iridescence":0.9,"iridescenceIor":1.33,"iridescenceThickness":520})"),
+      "t.json");
+  CHECK(bubble.materials[0].iridescence == 0.9f);
+  CHECK(bubble.materials[0].iridescenceIor == 1.33f);
+  CHECK(bubble.materials[0].iridescenceThicknessMaximum == 520.0f);
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"iridescenceIor":0.5})"), "t.json"),
+                      ContainsSubstring("iridescenceIor must lie in [1, 4]"));
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"iridescenceThickness":-1})"), "t.json"),
+                      ContainsSubstring("iridescence thicknesses must lie in [0, 1e5] nm"));
   // glTF's anisotropy, in scene files too.
   const auto brushed = scene::parseScene(
       withGlass(R"({"metallic":1,"anisotropyStrength":0.6,"anisotropyRotation":-2})"), "t.json");

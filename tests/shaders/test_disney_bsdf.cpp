@@ -226,6 +226,19 @@ std::vector<Case> chiSquareCases() {
     m.sheenRoughness = 0.05f;
     cases.push_back({"glTF sheen r 0.05 over metal and glass" + at.str(), m, incident(c, false)});
   }
+  // KHR_materials_iridescence: a film of 350 nm over a half-metallic
+  // plastic, which colours both layers' Fresnel and so the lobes' choice.
+  for (float c : cosines) {
+    std::ostringstream at;
+    at << " at cos " << c;
+    auto m = base();
+    m.model = scene::MaterialModel::Lambert;
+    m.metallic = 0.5f;
+    m.specular = 0.5f;
+    m.iridescence = 0.8f;
+    m.iridescenceThicknessMaximum = 350.0f;
+    cases.push_back({"iridescent film 350 nm" + at.str(), m, incident(c, false)});
+  }
   return cases;
 }
 

@@ -5,6 +5,7 @@
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
+#include <complex>
 #include <iterator>
 #include <numbers>
 #include <utility>
@@ -487,6 +488,117 @@ TEST_CASE(
     // Every channel of the base is dimmed alike (by the colour's largest).
     const double baseY = double(e.f.y) - color.y * sheenBrdf(p.roughness, v, l);
     REQUIRE(baseY == Catch::Approx(double(e.f.x) - sheen).epsilon(1e-4));
+  }
+  REQUIRE_NO_VALIDATION_MESSAGES(device);
+}
+
+namespace {
+
+// The exact reflectance of a film of index n2 and thickness d (nm) on a
+// substrate of index n3, in air, at normal incidence and one wavelength
+// (Airy: the amplitudes of all the waves bouncing in the film summed).
+double airyReflectance(double n2, double n3, double d, double wavelength) {
+  const double r12 = (1.0 - n2) / (1.0 + n2), r23 = (n2 - n3) / (n2 + n3);
+  const std::complex<double> phase = std::polar(1.0, 4.0 * kPi * n2 * d / wavelength);
+  return std::norm((r12 + r23 * phase) / (1.0 + r12 * r23 * phase));
+}
+
+double schlick(double f0, double cosTheta) {
+  return f0 + (1.0 - f0) * std::pow(1.0 - cosTheta, 5.0);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "glTF BRDF: KHR_materials_iridescence's film has the interference colours of its "
+    "thickness",
+    "[shaders][bsdf][gpu][gltf][spirv-only]") {
+  auto device = test::makeTestDevice();
+  test::BsdfHarness harness(*device);
+  const glm::vec3 up(0.0f, 0.0f, 1.0f);
+
+  SECTION("a soap-like film on glass, seen head on, against the exact Airy reflectance") {
+    // A black dielectric of F0 0.04 (index 1.5) under a film of index 1.33.
+    // The engine's colour is the Airy reflectance integrated against the
+    // eye's curves; at 650, 550 and 450 nm the exact one tells the hue. The
+    // film's reflectance is f / f without it x 0.04 (D and G cancel). The
+    // thicknesses are where the three wavelengths differ most (the first
+    // orders' colours); 0.01 lets through no dropped interference term
+    // (which would leave the incoherent 0.0235 everywhere, off by 0.016 or
+    // more at 250 nm) and no misplaced order.
+    auto m = gltfMaterial(glm::vec3(0.0f), 0.0f, 0.5f);
+    const double plain = double(harness.eval(m, up, {up})[0].f.y);
+    m.iridescence = 1.0f;
+    m.iridescenceIor = 1.33f;
+    for (double d : {150.0, 200.0, 250.0, 300.0, 400.0}) {
+      m.iridescenceThicknessMaximum = float(d);
+      const glm::dvec3 film = glm::dvec3(harness.eval(m, up, {up})[0].f) / plain * 0.04;
+      const glm::dvec3 exact(airyReflectance(1.33, 1.5, d, 650.0),
+                             airyReflectance(1.33, 1.5, d, 550.0),
+                             airyReflectance(1.33, 1.5, d, 450.0));
+      INFO(d << " nm: film " << film.x << " " << film.y << " " << film.z
+             << ", Airy at 650/550/450 nm " << exact.x << " " << exact.y << " " << exact.z);
+      for (int c = 0; c < 3; ++c) REQUIRE(std::abs(film[c] - exact[c]) < 0.01);
+      // The brightest and darkest channels are the exact spectrum's.
+      auto argmax = [](glm::dvec3 v) {
+        return v.x >= v.y && v.x >= v.z ? 0 : (v.y >= v.z ? 1 : 2);
+      };
+      auto argmin = [&](glm::dvec3 v) { return argmax(-v); };
+      REQUIRE(argmax(film) == argmax(exact));
+      REQUIRE(argmin(film) == argmin(exact));
+    }
+  }
+
+  SECTION("a film far thicker than the light's coherence adds its two interfaces' reflectances") {
+    // 20 um: the interference averages out over the visible spectrum, and
+    // the extension's reflectance becomes the incoherent sum R12 + T^2 R23 /
+    // (1 - R12 R23), with Schlick's reflectance at the air-film boundary
+    // (F0 of index 1.3) and at the film-metal one (the metal's F0 0.5 read
+    // as an index n3, its F0 against the film, at the refracted cosine).
+    // The ratio to the film-less metal (Schlick of 0.5) leaves D and G out.
+    auto m = gltfMaterial(glm::vec3(0.5f), 1.0f, 0.5f);
+    auto filmed = m;
+    filmed.iridescence = 1.0f;
+    filmed.iridescenceIor = 1.3f;
+    filmed.iridescenceThicknessMaximum = 20000.0f;
+    auto half = filmed;
+    half.iridescence = 0.5f;
+    const double n2 = 1.3, n3 = (1.0 + std::sqrt(0.5)) / (1.0 - std::sqrt(0.5));
+    for (const auto& p : kPairs) {
+      const double cosD = glm::dot(p.v, glm::normalize(p.v + p.l));
+      const double cosT = std::sqrt(1.0 - (1.0 - cosD * cosD) / (n2 * n2));
+      const double r12 = schlick(std::pow((n2 - 1.0) / (n2 + 1.0), 2.0), cosD);
+      const double r23 = schlick(std::pow((n3 - n2) / (n3 + n2), 2.0), cosT);
+      const double incoherent = r12 + (1.0 - r12) * (1.0 - r12) * r23 / (1.0 - r12 * r23);
+      const double bare = schlick(0.5, cosD);
+      const double f = double(harness.eval(m, glm::vec3(p.v), {glm::vec3(p.l)})[0].f.x);
+      const auto e = harness.eval(filmed, glm::vec3(p.v), {glm::vec3(p.l)})[0];
+      const auto eHalf = harness.eval(half, glm::vec3(p.v), {glm::vec3(p.l)})[0];
+      INFO("cos theta_d " << cosD << ": film / bare " << e.f.x / f << ", incoherent sum "
+                          << incoherent / bare);
+      for (int c = 0; c < 3; ++c) {
+        REQUIRE(e.f[c] / f == Catch::Approx(incoherent / bare).epsilon(1e-3));
+        // iridescenceFactor mixes the two reflectances.
+        REQUIRE(eHalf.f[c] / f == Catch::Approx(0.5 * (incoherent + bare) / bare).epsilon(1e-3));
+      }
+    }
+  }
+
+  SECTION("no film: thickness 0, or factor 0") {
+    auto m = gltfMaterial(glm::vec3(0.9f, 0.6f, 0.3f), 0.5f, 0.4f);
+    auto none = m;
+    none.iridescence = 1.0f;
+    none.iridescenceThicknessMaximum = 0.0f;
+    auto off = m;
+    off.iridescenceThicknessMaximum = 300.0f;
+    for (const auto& p : kPairs) {
+      const auto e = harness.eval(m, glm::vec3(p.v), {glm::vec3(p.l)})[0];
+      for (const auto& other : {none, off}) {
+        const auto o = harness.eval(other, glm::vec3(p.v), {glm::vec3(p.l)})[0];
+        for (int c = 0; c < 3; ++c) REQUIRE(o.f[c] == e.f[c]);
+        REQUIRE(o.pdf == e.pdf);
+      }
+    }
   }
   REQUIRE_NO_VALIDATION_MESSAGES(device);
 }

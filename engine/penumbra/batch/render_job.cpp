@@ -64,7 +64,10 @@ constexpr FloatField kFloatFields[] = {
     {"anisotropyStrength", &scene::Material::anisotropyStrength, true},
     {"anisotropyRotation", &scene::Material::anisotropyRotation, true},
     {"sheenRoughness", &scene::Material::sheenRoughness, true},
-    {"diffuseTransmission", &scene::Material::diffuseTransmission, true}};
+    {"diffuseTransmission", &scene::Material::diffuseTransmission, true},
+    {"iridescence", &scene::Material::iridescence, true},
+    {"iridescenceIor", &scene::Material::iridescenceIor, true},
+    {"iridescenceThickness", &scene::Material::iridescenceThicknessMaximum, true}};
 
 // The Material menu's colours besides baseColor (always written), all made
 // editable after records were first written.

@@ -47,6 +47,9 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   if (m.anisotropyStrength > 0.0f) effects |= PT_EFFECT_TEXTURES;
   // Its texture only scales the factor: a factor of 0 stays 0.
   if (m.diffuseTransmission > 0.0f) effects |= PT_EFFECT_DIFFUSE_TRANSMISSION;
+  // The film colours the specular layer's reflectance: nothing without one.
+  if (m.iridescence > 0.0f && (effects & PT_EFFECT_SPECULAR) != 0u)
+    effects |= PT_EFFECT_IRIDESCENCE;
   return effects;
 }
 
@@ -118,7 +121,8 @@ constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
     {PT_EFFECT_SPECULAR_COLOR, "specular-color"},
     {PT_EFFECT_GLTF_COAT, "gltf-coat"},
     {PT_EFFECT_GLTF_SHEEN, "gltf-sheen"},
-    {PT_EFFECT_DIFFUSE_TRANSMISSION, "diffuse-transmission"}};
+    {PT_EFFECT_DIFFUSE_TRANSMISSION, "diffuse-transmission"},
+    {PT_EFFECT_IRIDESCENCE, "iridescence"}};
 constexpr uint32_t namedEffects() {
   uint32_t bits = 0;
   for (const auto& [bit, name] : kEffectNames) bits |= bit;

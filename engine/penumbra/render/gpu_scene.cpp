@@ -222,6 +222,12 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.diffuseTransmissionColor = toFloat3(m.diffuseTransmissionColor);
   d.diffuseTransmissionTexture = m.diffuseTransmissionTexture;
   d.diffuseTransmissionColorTexture = m.diffuseTransmissionColorTexture;
+  // Phong has no specular layer of its own to colour (no effect bit either).
+  d.iridescence = m.model == scene::MaterialModel::Phong ? 0.0f : m.iridescence;
+  d.iridescenceIor = m.iridescenceIor;
+  d.iridescenceThickness = {m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum};
+  d.iridescenceTexture = m.iridescenceTexture;
+  d.iridescenceThicknessTexture = m.iridescenceThicknessTexture;
   // Only the Disney lobes have it: a Phong material mapped onto Disney in
   // the path tracer (material.hlsli) has no tangent frame to stretch along,
   // and the effect bit that holds the code is not derived for Phong.

@@ -90,7 +90,7 @@ const std::vector<std::string_view>& supportedExtensions() {
       "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
       "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
       "KHR_materials_sheen", "KHR_materials_unlit", "KHR_materials_anisotropy",
-      "KHR_materials_diffuse_transmission", "KHR_texture_transform",
+      "KHR_materials_diffuse_transmission", "KHR_materials_iridescence", "KHR_texture_transform",
       "KHR_materials_variants",   // Scene::materialVariants, --variant
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
@@ -238,6 +238,17 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
     m.diffuseTransmission = clamp01(number(*e, "diffuseTransmissionFactor", 0.0));
     m.diffuseTransmissionColor =
         glm::clamp(vec3(*e, "diffuseTransmissionColorFactor", glm::vec3(1.0f)), 0.0f, 1.0f);
+  }
+
+  if (const auto* e = extension(src, "KHR_materials_iridescence")) {
+    m.iridescence = clamp01(number(*e, "iridescenceFactor", 0.0));
+    m.iridescenceIor = float(std::clamp(number(*e, "iridescenceIor", 1.3), 1.0, 4.0));
+    auto thickness = [&](const char* key, double fallback) {
+      const double t = number(*e, key, fallback);
+      return float(std::isfinite(t) ? std::clamp(t, 0.0, 1e5) : fallback);
+    };
+    m.iridescenceThicknessMinimum = thickness("iridescenceThicknessMinimum", 100.0);
+    m.iridescenceThicknessMaximum = thickness("iridescenceThicknessMaximum", 400.0);
   }
 
   if (const auto* e = extension(src, "KHR_materials_anisotropy")) {

@@ -315,7 +315,10 @@ const std::vector<ExtensionTexture>& extensionTextures() {
       {"KHR_materials_diffuse_transmission", "diffuseTransmissionTexture", false,
        &Material::diffuseTransmissionTexture},
       {"KHR_materials_diffuse_transmission", "diffuseTransmissionColorTexture", true,
-       &Material::diffuseTransmissionColorTexture}};
+       &Material::diffuseTransmissionColorTexture},
+      {"KHR_materials_iridescence", "iridescenceTexture", false, &Material::iridescenceTexture},
+      {"KHR_materials_iridescence", "iridescenceThicknessTexture", false,
+       &Material::iridescenceThicknessTexture}};
   return table;
 }
 

@@ -27,6 +27,9 @@ float* scalarParameter(Material& m, std::string_view name) {
   if (name == "clearcoatGloss") return &m.clearcoatGloss;
   if (name == "specTrans") return &m.specTrans;
   if (name == "diffuseTransmission") return &m.diffuseTransmission;
+  if (name == "iridescence") return &m.iridescence;
+  if (name == "iridescenceIor") return &m.iridescenceIor;
+  if (name == "iridescenceThickness") return &m.iridescenceThicknessMaximum;
   if (name == "subsurface") return &m.subsurface;
   if (name == "ior") return &m.ior;
   return nullptr;
@@ -90,7 +93,8 @@ void setMaterialParameter(Material& m, std::string_view name, const std::vector<
     throw Error(
         fmt::format("--set: unknown material parameter '{}' (baseColor, emission, specularColor, "
                     "sheenColor, sheenRoughness, ior, anisotropyRotation, anisotropyStrength, "
-                    "diffuseTransmission, diffuseTransmissionColor, {})",
+                    "diffuseTransmission, diffuseTransmissionColor, iridescence, iridescenceIor, "
+                    "iridescenceThickness, {})",
                     name, joined(variableDisneyParameters())));
   if (values.size() != 1) throw Error(fmt::format("--set {}: needs 1 number", name));
   *scalar = values[0];

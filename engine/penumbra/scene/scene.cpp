@@ -196,10 +196,10 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
       fail(fmt::format(
           "material '{}': baseColor must lie in [0, 1] and emission be finite and non-negative",
           m.name));
-  for (float v :
-       {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen, m.sheenTint,
-        m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface, m.reflectivity, m.transparency,
-        m.anisotropyStrength, m.sheenRoughness, m.diffuseTransmission, m.specularF90})
+  for (float v : {m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.sheen,
+                  m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.subsurface,
+                  m.reflectivity, m.transparency, m.anisotropyStrength, m.sheenRoughness,
+                  m.diffuseTransmission, m.specularF90, m.iridescence})
     if (!unit(v)) fail(fmt::format("material '{}': a parameter is outside [0, 1]", m.name));
   for (int i = 0; i < 3; ++i)
     if (!unit(m.sheenColor[i]))
@@ -210,6 +210,11 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
   for (int i = 0; i < 3; ++i)
     if (!(m.specularColor[i] >= 0.0f) || !std::isfinite(m.specularColor[i]))
       fail(fmt::format("material '{}': specularColor must be finite and non-negative", m.name));
+  if (!(m.iridescenceIor >= 1.0f && m.iridescenceIor <= 4.0f))
+    fail(fmt::format("material '{}': iridescenceIor must lie in [1, 4]", m.name));
+  if (!(m.iridescenceThicknessMinimum >= 0.0f && m.iridescenceThicknessMaximum >= 0.0f &&
+        m.iridescenceThicknessMaximum <= 1e5f && m.iridescenceThicknessMinimum <= 1e5f))
+    fail(fmt::format("material '{}': iridescence thicknesses must lie in [0, 1e5] nm", m.name));
   if (!std::isfinite(m.anisotropyRotation))
     fail(fmt::format("material '{}': anisotropyRotation is not finite", m.name));
   if (!(m.ior >= 1.0f && m.ior <= 4.0f))

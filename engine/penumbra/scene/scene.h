@@ -98,6 +98,15 @@ struct Material {
   glm::vec3 diffuseTransmissionColor{1.0f};
   float ior = 1.5f;
   float subsurface = 0.0f;
+  // KHR_materials_iridescence: a thin film of index iridescenceIor over the
+  // specular layer turns its reflectance into the film's interference
+  // colours (soap bubbles, oil, anodised metal), by this share. Its
+  // thickness in nanometres is the maximum, or with iridescenceThicknessTexture
+  // lerp(minimum, maximum, the texture's green); 0 is no film.
+  float iridescence = 0.0f;
+  float iridescenceIor = 1.3f;
+  float iridescenceThicknessMinimum = 100.0f;
+  float iridescenceThicknessMaximum = 400.0f;
   // KHR_materials_anisotropy: along the direction `anisotropyRotation`
   // radians from the tangent towards the bitangent, the GGX alpha grows from
   // roughness^2 to lerp(roughness^2, 1, anisotropyStrength^2); across it
@@ -149,6 +158,9 @@ struct Material {
   // Alpha scales diffuseTransmission; rgb (sRGB) diffuseTransmissionColor.
   uint32_t diffuseTransmissionTexture = kNoTexture;
   uint32_t diffuseTransmissionColorTexture = kNoTexture;
+  // Red scales iridescence; green picks the film's thickness (above).
+  uint32_t iridescenceTexture = kNoTexture;
+  uint32_t iridescenceThicknessTexture = kNoTexture;
   float normalScale = 1.0f;
   float occlusionStrength = 1.0f;
   float alpha = 1.0f;  // base colour alpha factor
@@ -166,7 +178,7 @@ struct Material {
   bool isEmissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
   // Every texture slot above, for code that treats them alike (validation,
   // merging scenes, hashing, the textures' effect bit).
-  std::array<uint32_t, 16> textures() const {
+  std::array<uint32_t, 18> textures() const {
     return {baseColorTexture,
             metallicRoughnessTexture,
             normalTexture,
@@ -182,9 +194,11 @@ struct Material {
             anisotropyTexture,
             clearcoatNormalTexture,
             diffuseTransmissionTexture,
-            diffuseTransmissionColorTexture};
+            diffuseTransmissionColorTexture,
+            iridescenceTexture,
+            iridescenceThicknessTexture};
   }
-  std::array<uint32_t*, 16> textureSlots() {
+  std::array<uint32_t*, 18> textureSlots() {
     return {&baseColorTexture,
             &metallicRoughnessTexture,
             &normalTexture,
@@ -200,7 +214,9 @@ struct Material {
             &anisotropyTexture,
             &clearcoatNormalTexture,
             &diffuseTransmissionTexture,
-            &diffuseTransmissionColorTexture};
+            &diffuseTransmissionColorTexture,
+            &iridescenceTexture,
+            &iridescenceThicknessTexture};
   }
   // A Lambertian surface of the given reflectance (no specular layer).
   static Material lambert(std::string name, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f));

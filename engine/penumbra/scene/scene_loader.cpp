@@ -75,6 +75,11 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
     material.diffuseTransmissionColor =
         readVec3(m.at("diffuseTransmissionColor"), where + " diffuseTransmissionColor");
   material.ior = readFloat(m, "ior", material.ior, where);
+  material.iridescence = readFloat(m, "iridescence", material.iridescence, where);
+  material.iridescenceIor = readFloat(m, "iridescenceIor", material.iridescenceIor, where);
+  // Without a thickness texture only the maximum is used: one number.
+  material.iridescenceThicknessMaximum =
+      readFloat(m, "iridescenceThickness", material.iridescenceThicknessMaximum, where);
   material.subsurface = readFloat(m, "subsurface", material.subsurface, where);
   material.thin = readBool(m, "thin", false, where);
   if (m.contains("attenuationColor"))

@@ -11,11 +11,15 @@
 //     "materials": { "white": { "model": "lambert", "albedo": [r,g,b],
 //                               "emission": [r,g,b] }, ... },
 //       model "disney" (default): baseColor, metallic, roughness, anisotropic,
-//         specular, specularTint, sheen, sheenTint, clearcoat, clearcoatGloss,
-//         specTrans, ior, subsurface, thin, anisotropyStrength and
+//         specular, specularTint, specularColor, specularF90, sheen, sheenTint,
+//         sheenColor, clearcoat, clearcoatGloss, specTrans, ior, subsurface,
+//         thin, attenuationColor, attenuationDistance, diffuseTransmission,
+//         diffuseTransmissionColor, iridescence, iridescenceIor,
+//         iridescenceThickness (nm), anisotropyStrength and
 //         anisotropyRotation (radians; glTF's anisotropy, along the mesh's
-//         tangents); "lambert": albedo (= baseColor), the same parameters
-//         with glTF's coat and sheen (sheenRoughness: its fibres' roughness);
+//         tangents); docs/materials.md says what each does; "lambert": albedo
+//         (= baseColor), the same parameters with glTF's coat and sheen
+//         (sheenRoughness: its fibres' roughness);
 //       "phong": baseColor (kd), ks, exponent, reflectivity, transparency, ior;
 //       "unlit": baseColor, the radiance seen (glTF KHR_materials_unlit)
 //     "lights": [ { "type": "point", "position": [..], "intensity": [..],  // W/sr

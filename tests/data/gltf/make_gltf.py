@@ -371,7 +371,7 @@ def extensions():
     b.doc["meshes"][0]["primitives"][0]["material"] = 0
     b.write_gltf("extension_required_compressed.gltf")
     b = triangle_file()
-    b.doc["extensionsUsed"] = ["KHR_materials_iridescence", "KHR_materials_clearcoat"]
+    b.doc["extensionsUsed"] = ["KHR_materials_dispersion", "KHR_materials_clearcoat"]
     b.write_gltf("extension_optional.gltf")
 
 
@@ -705,12 +705,16 @@ def textures():
         {"name": "brushed", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 0.2},
          "extensions": {"KHR_materials_anisotropy": {
              "anisotropyStrength": 0.6, "anisotropyRotation": 7.0,
-             "anisotropyTexture": {"index": 1, "texCoord": 1}}}},
+             "anisotropyTexture": {"index": 1, "texCoord": 1}},
+             "KHR_materials_iridescence": {
+                 "iridescenceFactor": 0.7, "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 50,
+                 "iridescenceThicknessMaximum": 600, "iridescenceTexture": {"index": 3},
+                 "iridescenceThicknessTexture": {"index": 1, "texCoord": 1}}}},
     ]
     b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
                                "KHR_materials_transmission", "KHR_materials_anisotropy",
                                "KHR_materials_volume", "KHR_materials_diffuse_transmission",
-                               "KHR_texture_transform"]
+                               "KHR_materials_iridescence", "KHR_texture_transform"]
     b.write_gltf("textures.gltf")
 
     # The checker again, stored in the .glb's binary chunk.

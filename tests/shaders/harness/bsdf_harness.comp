@@ -118,6 +118,10 @@ void main() {
     d.sheenRoughness = pick(rng);
     d.diffuseTransmission = pick(rng);
     d.diffuseTransmissionColor = float3(pick(rng), pick(rng), pick(rng));
+    // Films from none to thicker than interference shows (1e5 nm), of any index.
+    d.iridescence = pick(rng);
+    d.iridescenceIor = 1.0 + 3.0 * pick(rng);
+    d.iridescenceThickness = float2(0.0, 1e5 * pick(rng) * pick(rng));
     DisneyMaterial m = unpackDisney(d);
     // Half the time a coat normal of its own, any direction (the path
     // tracer keeps it on the geometric side, not always the shading one).

@@ -89,6 +89,8 @@ MaterialData loadMaterial(uint index) {
   m.specularF90 = 1.0;
   m.diffuseTransmissionTexture = PT_NO_TEXTURE;
   m.diffuseTransmissionColorTexture = PT_NO_TEXTURE;
+  m.iridescenceTexture = PT_NO_TEXTURE;
+  m.iridescenceThicknessTexture = PT_NO_TEXTURE;
   m.occlusionStrength = 1.0;
   m.alpha = 1.0;
   m.alphaCutoff = 0.5;
