@@ -1,8 +1,12 @@
 // The effect-specialized pipeline (engine/penumbra/render/effect_set.h): the effect set
 // a scene calls for, and images identical to the full pipeline's.
+#include <fmt/format.h>
+
+#include <bit>
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <string>
 
 #include "effects.h"
 #include "penumbra/image/image_compare.h"
@@ -251,6 +255,29 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // A set that is not built takes the smallest built superset: sheen alone
   // (32) is in no built variant smaller than 63 (every effect up to sheen).
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_SHEEN) == "path_trace.e63.rgen");
+  // Of the supersets with the fewest extra bits, the one with the least code:
+  // glTF's layered materials without textures (tests/data/gltf/materials.gltf),
+  // which several variants of "every bit but one" hold.
+  const uint32_t layered = PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION |
+                           PT_EFFECT_CLEARCOAT | PT_EFFECT_SHEEN | PT_EFFECT_ENVIRONMENT |
+                           PT_EFFECT_SPECULAR_COLOR | PT_EFFECT_GLTF_COAT | PT_EFFECT_GLTF_SHEEN;
+  const std::string chosen = render::effectVariant("path_trace.rgen", layered);
+  const uint32_t chosenBits = uint32_t(std::stoul(chosen.substr(12)));
+  const size_t chosenWords = shaders::find(chosen).size();
+  int equals = 0;
+  for (uint32_t mask = 0; mask <= all; ++mask) {
+    if ((mask & layered) != layered || (mask & ~all) != 0) continue;
+    const auto spirv = shaders::find(fmt::format("path_trace.e{}.rgen", mask));
+    if (spirv.empty()) continue;
+    INFO("chosen " << chosen << " (" << chosenWords << " words); built superset " << mask << " ("
+                   << spirv.size() << " words)");
+    REQUIRE(std::popcount(mask) >= std::popcount(chosenBits));
+    if (std::popcount(mask) == std::popcount(chosenBits)) {
+      REQUIRE(spirv.size() >= chosenWords);
+      ++equals;
+    }
+  }
+  REQUIRE(equals > 1);  // a real choice
   // The triangles' closest hit only stores a HitRecord: it has no variants.
   REQUIRE_THROWS(render::effectVariant("triangle.rchit", PT_EFFECT_AREA_LIGHTS));
 }

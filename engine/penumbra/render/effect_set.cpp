@@ -182,15 +182,25 @@ std::string effectVariant(std::string_view shader, uint32_t effects) {
       return fmt::format("{}.e{}{}", shader.substr(0, dot), mask, shader.substr(dot));
     };
     // Only some subsets are built (shaders/effect_variants.cmake). Otherwise
-    // the smallest built superset: every effect the scene needs, and the
-    // fewest it does not. The full variant always exists.
+    // the smallest built superset: every effect the scene needs, the fewest
+    // it does not, and of those the least code. Supersets with as many extra
+    // bits differ in what the extra bits hold, and where the megakernel runs
+    // as one program its time follows its code (docs/results.md,
+    // "Iridescence"). The full variant always exists.
     const uint32_t optional = entry.bits & ~wanted;
     uint32_t best = entry.bits;
+    size_t bestWords = shaders::find(name(best)).size();
     // Every subset of the optional bits, in increasing order: (x - m) & m.
     for (uint32_t extra = 0;; extra = (extra - optional) & optional) {
       const uint32_t mask = wanted | extra;
-      if (std::popcount(mask) < std::popcount(best) && !shaders::find(name(mask)).empty())
-        best = mask;
+      const int more = std::popcount(mask) - std::popcount(best);
+      if (more <= 0) {
+        const size_t words = shaders::find(name(mask)).size();
+        if (words > 0 && (more < 0 || words < bestWords)) {
+          best = mask;
+          bestWords = words;
+        }
+      }
       if (extra == optional) break;
     }
     // The same image, a little less saved: a detail for whoever tunes the
