@@ -708,7 +708,7 @@ def textures():
              "anisotropyTexture": {"index": 1, "texCoord": 1}},
              "KHR_materials_iridescence": {
                  "iridescenceFactor": 0.7, "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 50,
-                 "iridescenceThicknessMaximum": 600, "iridescenceTexture": {"index": 3},
+                 "iridescenceThicknessMaximum": 600, "iridescenceTexture": {"index": 4},
                  "iridescenceThicknessTexture": {"index": 1, "texCoord": 1}}}},
     ]
     b.doc["extensionsUsed"] = ["KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
