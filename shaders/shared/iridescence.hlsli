@@ -78,7 +78,7 @@ ThinFilm thinFilmAt(float filmIor, float thicknessNm, float cosTheta) {
 // channel k's shift applies to the k-th XYZ component.
 float3 thinFilmReflectance(ThinFilm f, float3 baseF0) {
   float t121 = 1.0 - f.r12;
-  // The base's index from its F0, kept below 1 to stay finite.
+  // The base's index from its F0 (kept below 1, so the index stays finite).
   float3 baseIor = iorFromF0(clamp(baseF0, splat3(0.0), splat3(0.9999)));
   float3 r23 = fresnelSchlick(fresnelF0(baseIor, f.eta2), f.cosTheta2);
   // cos(phi21 + phi23) for order 1 (-1 without the base's turn, +1 with it); order 2: +1.
