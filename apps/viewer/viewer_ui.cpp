@@ -283,6 +283,8 @@ void Viewer::drawMaterialMenu() {
     changed |= ImGui::SliderFloat("reflectivity", &m.reflectivity, 0, 1);
     changed |= ImGui::SliderFloat("transparency", &m.transparency, 0, 1);
     changed |= ImGui::SliderFloat("ior", &m.ior, 1, 3);
+    // 20 / Abbe number (KHR_materials_dispersion); a refracting volume only.
+    changed |= ImGui::SliderFloat("dispersion", &m.dispersion, 0, 2);
   } else {
     for (auto [label, field] : {std::pair{"metallic", &m.metallic},
                                 {"roughness", &m.roughness},
@@ -319,6 +321,7 @@ void Viewer::drawMaterialMenu() {
     m.diffuseTransmissionColor = glm::clamp(m.diffuseTransmissionColor, 0.0f, 1.0f);
     m.iridescence = std::clamp(m.iridescence, 0.0f, 1.0f);
     m.iridescenceIor = std::clamp(m.iridescenceIor, 1.0f, 4.0f);
+    m.dispersion = std::clamp(m.dispersion, 0.0f, 10.0f);
     m.iridescenceThicknessMaximum = std::clamp(m.iridescenceThicknessMaximum, 0.0f, 1e5f);
   }
   ImGui::TextDisabled("emission is fixed (emitters are tabulated when the scene loads)");

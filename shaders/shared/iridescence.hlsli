@@ -12,6 +12,7 @@
 #define PENUMBRA_IRIDESCENCE_HLSLI
 #include "fresnel.hlsli"
 #include "math.hlsli"
+#include "spectrum.hlsli"
 
 // F0 of a boundary from index `incident` into index `transmitted`.
 float3 fresnelF0(float3 transmitted, float incident) {
@@ -37,12 +38,6 @@ float3 thinFilmXyz(float opd) {
   xyz.x += 9.7470e-14 * sqrt(2.0 * kPi * 4.5282e+09) * cos(2.2399e+06 * phase) *
            exp(-4.5282e+09 * phase * phase);
   return xyz / 1.0685e-7;
-}
-
-float3 xyzToRec709(float3 xyz) {
-  return float3(3.2404542 * xyz.x - 1.5371385 * xyz.y - 0.4985314 * xyz.z,
-                -0.9692660 * xyz.x + 1.8760108 * xyz.y + 0.0415560 * xyz.z,
-                0.0556434 * xyz.x - 0.2040259 * xyz.y + 1.0572252 * xyz.z);
 }
 
 // What a film shows at one cosine whatever lies below it: the metal and

@@ -32,6 +32,7 @@
 #include "ray_offset.hlsli"
 #include "rng.hlsli"
 #include "sampling.hlsli"
+#include "spectrum.hlsli"
 #include "surface_hit.hlsli"
 
 float misWeight(uint flags, float pdfA, float pdfB) {
@@ -279,6 +280,9 @@ struct PathState {
   float chainLength;     // unfolded length of the path so far, while open
   float3 chainEmission;  // radiance emitted along the chain, while open; then the guides' emission
   float cosForward;      // the camera ray's cosine to the view axis: path length to view depth
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  float wavelength;  // nm, once a dispersive volume picked it (spectrum.hlsli); 0 before
+#endif
 };
 
 PathState startPath(Rng rng, float cosForward) {
@@ -293,6 +297,9 @@ PathState startPath(Rng rng, float cosForward) {
   p.chainLength = 0.0;
   p.chainEmission = zero3();
   p.cosForward = cosForward;
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  p.wavelength = 0.0;
+#endif
   return p;
 }
 
@@ -445,6 +452,21 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   }
 #endif
   DisneyMaterial material = unpackDisney(data);
+#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+  // Dispersion: the first dispersive volume the path meets picks the
+  // wavelength it carries from then on, weighting the throughput by that
+  // wavelength's colour over its pdf (expectation 1 per channel); every dispersive
+  // surface after it refracts with the index at that wavelength. Thin glass
+  // does not bend light, so it has none.
+  if (data.dispersion > 0.0 && material.specTrans > 0.0 && !material.thin) {
+    if (p.wavelength == 0.0) {
+      WavelengthSample w = sampleWavelength(rngNext(p.rng));
+      p.wavelength = w.lambda;
+      p.throughput *= w.weight;
+    }
+    material.ior = dispersedIor(material.ior, data.dispersion, p.wavelength);
+  }
+#endif
   // This vertex's guides, should it close the chain.
   float3 guideAlbedo = zero3();
   float3 guideNormal = zero3();

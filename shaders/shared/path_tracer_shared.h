@@ -282,7 +282,9 @@ struct MaterialData {
   float2 iridescenceThickness;
   uint iridescenceTexture;           // red scales iridescence
   uint iridescenceThicknessTexture;  // green: the thickness between minimum and maximum
-  uint unused0;
+  // KHR_materials_dispersion: 20 / Abbe number of a refracting volume
+  // (spectrum.hlsli); 0: one index for every wavelength.
+  float dispersion;
   uint unused1;
 };
 
@@ -425,7 +427,8 @@ static_assert(sizeof(MaterialData) == 288 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, clearcoatNormalScale) == 224 &&
               offsetof(MaterialData, diffuseTransmissionColor) == 240 &&
               offsetof(MaterialData, specularF90) == 252 &&
-              offsetof(MaterialData, iridescenceThickness) == 264);
+              offsetof(MaterialData, iridescenceThickness) == 264 &&
+              offsetof(MaterialData, dispersion) == 280);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
               offsetof(TextureRefData, textureIndex) == 32);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&

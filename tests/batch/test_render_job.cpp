@@ -253,6 +253,7 @@ TEST_CASE(
   render::setEditableParameter(edited[0], "iridescence", {0.6f});
   render::setEditableParameter(edited[0], "iridescenceIor", {1.45f});
   render::setEditableParameter(edited[0], "iridescenceThickness", {510.0f});
+  render::setEditableParameter(edited[0], "dispersion", {0.7f});
   render::RenderJob job;
   job.materials = render::materialOverrides(loaded.materials, edited);
   REQUIRE(job.materials.size() == 1);
@@ -270,6 +271,7 @@ TEST_CASE(
   CHECK(applied.materials[0].iridescence == 0.6f);
   CHECK(applied.materials[0].iridescenceIor == 1.45f);
   CHECK(applied.materials[0].iridescenceThicknessMaximum == 510.0f);
+  CHECK(applied.materials[0].dispersion == 0.7f);
 
   // The same record as written before the fields were editable: the other
   // edits apply, the scene's anisotropy stays, and writing it again does
@@ -286,6 +288,7 @@ TEST_CASE(
   override0.erase("iridescence");
   override0.erase("iridescenceIor");
   override0.erase("iridescenceThickness");
+  override0.erase("dispersion");
   override0.at("metallic") = 1.0;
   const auto oldJob = render::renderJobFromJson(old.dump(), "old.json");
   scene::Scene fromOld = loaded;
@@ -300,6 +303,7 @@ TEST_CASE(
   CHECK(fromOld.materials[0].diffuseTransmissionColor == glm::vec3(1.0f));
   CHECK(fromOld.materials[0].iridescence == 0.0f);
   CHECK(fromOld.materials[0].iridescenceThicknessMaximum == 400.0f);
+  CHECK(fromOld.materials[0].dispersion == 0.0f);
   const std::string rewritten = render::renderJobToJson(oldJob);
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("anisotropy"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenRoughness"));
@@ -307,6 +311,7 @@ TEST_CASE(
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("specularColor"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("sheenColor"));
   CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("iridescence"));
+  CHECK_THAT(rewritten, !Catch::Matchers::ContainsSubstring("dispersion"));
   // Fields there from the start stay required.
   override0.erase("sheen");
   REQUIRE_THROWS_WITH(render::renderJobFromJson(old.dump(), "older.json"),

@@ -371,6 +371,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   absorbing.roughness = 0.0f;
   absorbing.attenuationColor = {0.9f, 0.5f, 0.2f};
   absorbing.attenuationDistance = 0.05f;
+  absorbing.dispersion = 0.5f;
   scene::Scene branches = cornellWithSphere(absorbing, true);
   branches.environment = scene::defaultEnvironment();
   scene::PointLight sun;
@@ -393,7 +394,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   branches.camera.orthographicHeight = 0.5f;
   REQUIRE(render::featureNames(render::deriveFeatures(branches, std::nullopt)) ==
           std::vector<std::string>{"directional-lights", "soft-sun", "spot-lights", "thin-lens",
-                                   "lens-blades", "absorption"});
+                                   "lens-blades", "absorption", "dispersion"});
   REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ENVIRONMENT) != 0u);
   REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ORTHOGRAPHIC) != 0u);
   REQUIRE(render::deriveFeatures(scene::loadScene("cornell-box"), std::nullopt) == 0u);
@@ -410,8 +411,8 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
       {"glTF anisotropy (surface detail)", brushedScene, render::Integrator::Path},
       {"Whitted mirror", cornellWithSphere(mirror, true), render::Integrator::Whitted},
       {"Whitted glass", cornellWithSphere(phongGlass, true), render::Integrator::Whitted},
-      {"environment, soft sun, spot, bladed lens, absorbing glass, orthographic", branches,
-       render::Integrator::Path},
+      {"environment, soft sun, spot, bladed lens, absorbing dispersive glass, orthographic",
+       branches, render::Integrator::Path},
       {"Whitted under the environment", branches, render::Integrator::Whitted},
   };
   render::PipelineOptions full;

@@ -344,6 +344,10 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   REQUIRE(glass.ior == Approx(1.33f));
   REQUIRE(dielectricF0(glass).x == Approx(0.0200593).epsilon(1e-4));
   REQUIRE(glass.thin);
+  // Its dispersion is kept (a viewer may make it solid) but warned about:
+  // thin glass does not bend light.
+  REQUIRE(glass.dispersion == 0.5f);
+  REQUIRE(hasWarning(r, "'glass': dispersion needs transmission through a volume"));
 
   // A volume with thickness > 0 refracts (not thin) and absorbs as its
   // attenuation says (simulated: no warning).
@@ -352,6 +356,9 @@ TEST_CASE("glTF materials map onto the Lambert-diffuse Disney parameters", "[glt
   REQUIRE_FALSE(volume.thin);
   REQUIRE(volume.attenuationDistance == 2.0f);
   REQUIRE(volume.attenuationColor == glm::vec3(1.0f, 0.5f, 0.5f));
+  // KHR_materials_dispersion's 20 / Abbe number, as stored.
+  REQUIRE(volume.dispersion == 0.4f);
+  REQUIRE_FALSE(hasWarning(r, "'volume': dispersion"));
   REQUIRE_FALSE(hasWarning(r, "volume attenuation"));
   REQUIRE(std::isinf(glass.attenuationDistance));  // no volume: a clear medium
 
@@ -481,7 +488,7 @@ TEST_CASE("glTF extensions: required unsupported fails, optional warns", "[gltf]
                                         "not supported (supported: "));
   const auto r = scene::importGltf(gltf("extension_optional.gltf"));
   REQUIRE(r.warnings.size() == 1u);
-  REQUIRE_THAT(r.warnings[0], ContainsSubstring("KHR_materials_dispersion") &&
+  REQUIRE_THAT(r.warnings[0], ContainsSubstring("KHR_materials_pbrSpecularGlossiness") &&
                                   ContainsSubstring("extension_optional.gltf"));
   REQUIRE(r.warnings[0].find('\n') == std::string::npos);
   // Supported extensions in extensionsUsed are silent.

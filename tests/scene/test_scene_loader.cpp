@@ -271,6 +271,11 @@ TEST_CASE("scene-file materials: an absorbing medium, scaled; a bad one refused"
                       ContainsSubstring("iridescenceIor must lie in [1, 4]"));
   REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"iridescenceThickness":-1})"), "t.json"),
                       ContainsSubstring("iridescence thicknesses must lie in [0, 1e5] nm"));
+  // Dispersion (20 / Abbe number); a negative one refused.
+  CHECK(scene::parseScene(withGlass(R"({"dispersion":0.33})"), "t.json").materials[0].dispersion ==
+        0.33f);
+  REQUIRE_THROWS_WITH(scene::parseScene(withGlass(R"({"dispersion":-0.1})"), "t.json"),
+                      ContainsSubstring("dispersion must lie in [0, 10]"));
   // glTF's anisotropy, in scene files too.
   const auto brushed = scene::parseScene(
       withGlass(R"({"metallic":1,"anisotropyStrength":0.6,"anisotropyRotation":-2})"), "t.json");

@@ -67,7 +67,8 @@ constexpr FloatField kFloatFields[] = {
     {"diffuseTransmission", &scene::Material::diffuseTransmission, true},
     {"iridescence", &scene::Material::iridescence, true},
     {"iridescenceIor", &scene::Material::iridescenceIor, true},
-    {"iridescenceThickness", &scene::Material::iridescenceThicknessMaximum, true}};
+    {"iridescenceThickness", &scene::Material::iridescenceThicknessMaximum, true},
+    {"dispersion", &scene::Material::dispersion, true}};
 
 // The Material menu's colours besides baseColor (always written), all made
 // editable after records were first written.

@@ -156,16 +156,25 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
         m.specTrans > 0.0f || m.transparency > 0.0f || m.diffuseTransmission > 0.0f;
     return transmits && !m.thin && std::isfinite(m.attenuationDistance);
   };
-  for (const auto& instance : scene.instances)
-    if (absorbs(scene.meshes.at(instance.mesh).material)) features |= kFeatureAbsorption;
-  for (const auto& object : scene.implicits)
-    if (absorbs(object.material)) features |= kFeatureAbsorption;
+  // As the path tracer decides (path_tracer.hlsli); Phong has none.
+  auto disperses = [&](uint32_t materialIndex) {
+    const auto& m = scene.materials.at(materialIndex);
+    return m.model != scene::MaterialModel::Phong && m.specTrans > 0.0f && !m.thin &&
+           m.dispersion > 0.0f;
+  };
+  auto addMaterial = [&](uint32_t material) {
+    if (absorbs(material)) features |= kFeatureAbsorption;
+    if (disperses(material)) features |= kFeatureDispersion;
+  };
+  for (const auto& instance : scene.instances) addMaterial(scene.meshes.at(instance.mesh).material);
+  for (const auto& object : scene.implicits) addMaterial(object.material);
   return features;
 }
 
 std::vector<std::string> featureNames(uint32_t features) {
   static const char* const kNames[] = {"directional-lights", "soft-sun",    "spot-lights",
-                                       "thin-lens",          "lens-blades", "absorption"};
+                                       "thin-lens",          "lens-blades", "absorption",
+                                       "dispersion"};
   std::vector<std::string> names;
   for (int bit = 0; bit < int(std::size(kNames)); ++bit)
     if (features & (1u << bit)) names.emplace_back(kNames[bit]);

@@ -228,6 +228,7 @@ gpu::MaterialData packMaterial(const scene::Material& m) {
   d.iridescenceThickness = {m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum};
   d.iridescenceTexture = m.iridescenceTexture;
   d.iridescenceThicknessTexture = m.iridescenceThicknessTexture;
+  d.dispersion = m.model == scene::MaterialModel::Phong ? 0.0f : m.dispersion;
   // Only the Disney lobes have it: a Phong material mapped onto Disney in
   // the path tracer (material.hlsli) has no tangent frame to stretch along,
   // and the effect bit that holds the code is not derived for Phong.

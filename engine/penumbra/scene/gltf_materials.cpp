@@ -90,7 +90,8 @@ const std::vector<std::string_view>& supportedExtensions() {
       "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
       "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_specular",
       "KHR_materials_sheen", "KHR_materials_unlit", "KHR_materials_anisotropy",
-      "KHR_materials_diffuse_transmission", "KHR_materials_iridescence", "KHR_texture_transform",
+      "KHR_materials_diffuse_transmission", "KHR_materials_iridescence", "KHR_materials_dispersion",
+      "KHR_texture_transform",
       "KHR_materials_variants",   // Scene::materialVariants, --variant
       "KHR_lights_punctual",      // gltf_lights.h
       "EXT_mesh_gpu_instancing",  // gltf_instancing.h
@@ -213,6 +214,22 @@ MaterialConversion convertMaterial(const tinygltf::Material& src, const std::str
           fmt::format("{}: volume attenuation needs thicknessFactor > 0 (a thin surface has no "
                       "inside); ignored",
                       where));
+  }
+
+  if (const auto* e = extension(src, "KHR_materials_dispersion")) {
+    const double value = number(*e, "dispersion", 0.0);
+    if (!(value >= 0.0) || !std::isfinite(value))
+      throw Error(fmt::format(
+          "{}: KHR_materials_dispersion dispersion must be a finite number >= 0", where));
+    m.dispersion = float(std::min(value, 10.0));
+    if (m.dispersion != float(value))
+      warnings.push_back(fmt::format("{}: dispersion {} clamped to 10", where, value));
+    // The extension builds on KHR_materials_volume: only a volume refracts.
+    if (m.dispersion > 0.0f && (m.thin || m.specTrans == 0.0f))
+      warnings.push_back(fmt::format(
+          "{}: dispersion needs transmission through a volume (KHR_materials_transmission and "
+          "KHR_materials_volume's thicknessFactor > 0); ignored",
+          where));
   }
 
   if (const auto* e = extension(src, "KHR_materials_clearcoat")) {

@@ -30,6 +30,7 @@ float* scalarParameter(Material& m, std::string_view name) {
   if (name == "iridescence") return &m.iridescence;
   if (name == "iridescenceIor") return &m.iridescenceIor;
   if (name == "iridescenceThickness") return &m.iridescenceThicknessMaximum;
+  if (name == "dispersion") return &m.dispersion;
   if (name == "subsurface") return &m.subsurface;
   if (name == "ior") return &m.ior;
   return nullptr;
@@ -94,7 +95,7 @@ void setMaterialParameter(Material& m, std::string_view name, const std::vector<
         fmt::format("--set: unknown material parameter '{}' (baseColor, emission, specularColor, "
                     "sheenColor, sheenRoughness, ior, anisotropyRotation, anisotropyStrength, "
                     "diffuseTransmission, diffuseTransmissionColor, iridescence, iridescenceIor, "
-                    "iridescenceThickness, {})",
+                    "iridescenceThickness, dispersion, {})",
                     name, joined(variableDisneyParameters())));
   if (values.size() != 1) throw Error(fmt::format("--set {}: needs 1 number", name));
   *scalar = values[0];

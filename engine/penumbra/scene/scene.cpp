@@ -215,6 +215,9 @@ void validateMaterial(const Material& m, const Scene& scene, const Fail& fail) {
   if (!(m.iridescenceThicknessMinimum >= 0.0f && m.iridescenceThicknessMaximum >= 0.0f &&
         m.iridescenceThicknessMaximum <= 1e5f && m.iridescenceThicknessMinimum <= 1e5f))
     fail(fmt::format("material '{}': iridescence thicknesses must lie in [0, 1e5] nm", m.name));
+  // Abbe number 2: ten times the strongest common glass's spread of indices.
+  if (!(m.dispersion >= 0.0f && m.dispersion <= 10.0f))
+    fail(fmt::format("material '{}': dispersion must lie in [0, 10]", m.name));
   if (!std::isfinite(m.anisotropyRotation))
     fail(fmt::format("material '{}': anisotropyRotation is not finite", m.name));
   if (!(m.ior >= 1.0f && m.ior <= 4.0f))

@@ -14,7 +14,7 @@ namespace {
 // then update the count.
 // Material::emissionIsLighting only decides whether the default environment
 // is added, and the environment is hashed: not hashed.
-static_assert(fieldCount<Material>() == 60, "a Material field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<Material>() == 61, "a Material field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Camera>() == 9, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
@@ -43,7 +43,7 @@ void hashMaterial(ContentHash& h, const Material& m) {
   h.value(m.specularF90);
   h.value(m.diffuseTransmissionColor);
   for (float v : {m.iridescence, m.iridescenceIor, m.iridescenceThicknessMinimum,
-                  m.iridescenceThicknessMaximum})
+                  m.iridescenceThicknessMaximum, m.dispersion})
     h.value(v);
   h.value(m.anisotropyStrength);
   h.value(m.anisotropyRotation);

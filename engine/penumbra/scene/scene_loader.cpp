@@ -80,6 +80,7 @@ Material parseMaterial(const json& m, const std::string& name, const std::string
   // Without a thickness texture only the maximum is used: one number.
   material.iridescenceThicknessMaximum =
       readFloat(m, "iridescenceThickness", material.iridescenceThicknessMaximum, where);
+  material.dispersion = readFloat(m, "dispersion", material.dispersion, where);
   material.subsurface = readFloat(m, "subsurface", material.subsurface, where);
   material.thin = readBool(m, "thin", false, where);
   if (m.contains("attenuationColor"))

@@ -15,7 +15,7 @@
 //         sheenColor, clearcoat, clearcoatGloss, specTrans, ior, subsurface,
 //         thin, attenuationColor, attenuationDistance, diffuseTransmission,
 //         diffuseTransmissionColor, iridescence, iridescenceIor,
-//         iridescenceThickness (nm), anisotropyStrength and
+//         iridescenceThickness (nm), dispersion, anisotropyStrength and
 //         anisotropyRotation (radians; glTF's anisotropy, along the mesh's
 //         tangents); docs/materials.md says what each does; "lambert": albedo
 //         (= baseColor), the same parameters with glTF's coat and sheen
