@@ -230,20 +230,28 @@ float3 withThinFilm(DisneyMaterial m, ThinFilm film, float3 fresnel, float3 f0, 
 }
 #endif
 
-// Schlick's Fresnel with the grazing reflectance faded out below F0 = 0.02
-// (F90 = saturate(50 F0), as in Filament): `specular` = 0 then means no
-// specular reflection at all, instead of a mirror at grazing angles, and
-// F0 >= 0.02 (every real dielectric) keeps Schlick's F90 = 1.
-float3 fresnelSchlickFaded(float3 f0, float cosTheta) {
-  float f90 = saturate(50.0 * maxComponent(f0));
+// Schlick's Fresnel from f0 at normal incidence to f90 at grazing.
+float3 fresnelSchlickTo(float3 f0, float f90, float cosTheta) {
   return f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
+}
+
+// The grazing reflectance faded out below F0 = 0.02 (F90 = saturate(50 F0),
+// as in Filament): `specular` = 0 then means no specular reflection at all,
+// instead of a mirror at grazing angles, and F0 >= 0.02 (every real
+// dielectric) keeps Schlick's F90 = 1.
+float fadedF90(float3 f0) {
+  return saturate(50.0 * maxComponent(f0));
+}
+
+float3 fresnelSchlickFaded(float3 f0, float cosTheta) {
+  return fresnelSchlickTo(f0, fadedF90(f0), cosTheta);
 }
 
 // The dielectric layer's grazing reflectance: faded as above, and capped by
 // specularF90 (glTF's specularFactor x the specular texture's alpha) in the
 // variant that holds glTF's specular extension; 1 elsewhere.
 float dielectricF90(DisneyMaterial m, float3 f0) {
-  float f90 = saturate(50.0 * maxComponent(f0));
+  float f90 = fadedF90(f0);
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
   f90 = min(f90, m.specularF90);
 #endif
@@ -254,7 +262,7 @@ float dielectricF90(DisneyMaterial m, float3 f0) {
 // the layer takes its share (withThinFilm).
 float3 dielectricFresnel(DisneyMaterial m, float3 f0, float cosTheta) {
   float f90 = dielectricF90(m, f0);
-  float3 fresnel = f0 + (splat3(f90) - f0) * schlickWeight(cosTheta);
+  float3 fresnel = fresnelSchlickTo(f0, f90, cosTheta);
 #if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
   if (hasThinFilm(m)) fresnel = withThinFilm(m, thinFilmOf(m, cosTheta), fresnel, f0, f90);
 #endif
@@ -264,14 +272,15 @@ float3 dielectricFresnel(DisneyMaterial m, float3 f0, float cosTheta) {
 // Fresnel of the specular reflection lobe: metal and dielectric layers mixed,
 // already multiplied by their lobe weights. One film covers both.
 float3 specularFresnel(DisneyMaterial m, float cosThetaD) {
-  float3 metal = fresnelSchlickFaded(m.baseColor, cosThetaD);
+  float metalF90 = fadedF90(m.baseColor);
+  float3 metal = fresnelSchlickTo(m.baseColor, metalF90, cosThetaD);
   float3 f0 = dielectricSpecularF0(m);
   float f90 = dielectricF90(m, f0);
-  float3 dielectric = f0 + (splat3(f90) - f0) * schlickWeight(cosThetaD);
+  float3 dielectric = fresnelSchlickTo(f0, f90, cosThetaD);
 #if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
   if (hasThinFilm(m)) {
     ThinFilm film = thinFilmOf(m, cosThetaD);
-    metal = withThinFilm(m, film, metal, m.baseColor, saturate(50.0 * maxComponent(m.baseColor)));
+    metal = withThinFilm(m, film, metal, m.baseColor, metalF90);
     dielectric = withThinFilm(m, film, dielectric, f0, f90);
   }
 #endif
