@@ -1,5 +1,5 @@
 # The effect variants built ahead of time (docs/ARCHITECTURE.md, "Effect
-# specialization"): not every subset of the bits (32768 path-tracer variants)
+# specialization"): not every subset of the bits (65536 path-tracer variants)
 # but the ones the built-in scenes, the test suite and the size checks use.
 # A scene whose exact set is not here renders with the smallest built
 # variant that holds every effect it needs (render::effectVariant): the same
@@ -44,7 +44,8 @@ penumbra_effect_masks(_tests_path_trace
   SPECULAR+GUIDES+ENVIRONMENT AREA_LIGHTS+SPECULAR+SPECULAR_COLOR
   DELTA_LIGHTS+SPECULAR+TEXTURES+SPECULAR_COLOR
   AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+DIFFUSE_TRANSMISSION ENVIRONMENT+DIFFUSE_TRANSMISSION
-  AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+IRIDESCENCE)
+  AREA_LIGHTS+DELTA_LIGHTS+SPECULAR+IRIDESCENCE AREA_LIGHTS+TRANSMISSION+DISPERSION
+  AREA_LIGHTS+SPECULAR+TRANSMISSION+DISPERSION)
 # Every effect but one: what each effect costs in code size and time
 # (test_effect_set, scripts/feature_costs.sh).
 penumbra_all_but_one(_all_but_one_path_trace ${_path_trace_effects})

@@ -27,15 +27,17 @@
 #define PT_EFFECT_GLTF_SHEEN 8192  // glTF's sheen (the lambert model's sheen > 0): Charlie fibres and their albedo table, instead of Burley's
 #define PT_EFFECT_DIFFUSE_TRANSMISSION 16384 // diffuseTransmission > 0: part of the diffuse lobe passes to the other side
 #define PT_EFFECT_IRIDESCENCE 32768 // iridescence > 0 over a specular layer: a thin film's interference colours its Fresnel
+#define PT_EFFECT_DISPERSION 65536 // dispersion > 0 on a refracting volume: paths carry one wavelength through it
 // clang-format on
 // Every effect: the eight bits above, the environment, the orthographic camera,
-// the coloured F0, glTF's coat and sheen, diffuse transmission and iridescence.
+// the coloured F0, glTF's coat and sheen, diffuse transmission, iridescence and
+// dispersion.
 #define PT_EFFECTS_ALL                                                                            \
   (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_DELTA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_TRANSMISSION | \
    PT_EFFECT_CLEARCOAT | PT_EFFECT_SHEEN | PT_EFFECT_TEXTURES | PT_EFFECT_ALPHA_MASK |            \
    PT_EFFECT_ENVIRONMENT | PT_EFFECT_ORTHOGRAPHIC | PT_EFFECT_SPECULAR_COLOR |                    \
    PT_EFFECT_GLTF_COAT | PT_EFFECT_GLTF_SHEEN | PT_EFFECT_DIFFUSE_TRANSMISSION |                  \
-   PT_EFFECT_IRIDESCENCE)
+   PT_EFFECT_IRIDESCENCE | PT_EFFECT_DISPERSION)
 // Not a scene effect but an output: the path tracer writes the denoiser's
 // guide buffers (PathTracerSettings::writeGuides). Its code and the state it
 // keeps alive across every trace cost about a tenth of a Cornell box frame,

@@ -280,7 +280,7 @@ struct PathState {
   float chainLength;     // unfolded length of the path so far, while open
   float3 chainEmission;  // radiance emitted along the chain, while open; then the guides' emission
   float cosForward;      // the camera ray's cosine to the view axis: path length to view depth
-#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+#if PT_HAS_EFFECT(PT_EFFECT_DISPERSION)
   float wavelength;  // nm, once a dispersive volume picked it (spectrum.hlsli); 0 before
 #endif
 };
@@ -297,7 +297,7 @@ PathState startPath(Rng rng, float cosForward) {
   p.chainLength = 0.0;
   p.chainEmission = zero3();
   p.cosForward = cosForward;
-#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+#if PT_HAS_EFFECT(PT_EFFECT_DISPERSION)
   p.wavelength = 0.0;
 #endif
   return p;
@@ -452,7 +452,7 @@ bool shadeVertex(FrameConstants c, HitRecord record, PathRay ray, inout PathStat
   }
 #endif
   DisneyMaterial material = unpackDisney(data);
-#if PT_HAS_EFFECT(PT_EFFECT_TRANSMISSION)
+#if PT_HAS_EFFECT(PT_EFFECT_DISPERSION)
   // Dispersion: the first dispersive volume the path meets picks the
   // wavelength it carries from then on, weighting the throughput by that
   // wavelength's colour over its pdf (expectation 1 per channel); every dispersive

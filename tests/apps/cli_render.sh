@@ -22,7 +22,7 @@ grep -qE "^GPU time: [0-9.]+ ms" "$work/log"
 # pipeline is one flag away, and the render says which it built.
 [ "$("$penumbra" render --print-effects)" = "area-lights" ]
 grep -q "^pipeline effects: area-lights$" "$work/log"
-"$penumbra" render --size 16x16 --spp 1 --all-effects --out "$work/full.exr" | grep -q "^pipeline effects: area-lights, delta-lights, specular, transmission, clearcoat, sheen, textures, alpha-mask, environment, orthographic, specular-color, gltf-coat, gltf-sheen, diffuse-transmission, iridescence (--all-effects)$"
+"$penumbra" render --size 16x16 --spp 1 --all-effects --out "$work/full.exr" | grep -q "^pipeline effects: area-lights, delta-lights, specular, transmission, clearcoat, sheen, textures, alpha-mask, environment, orthographic, specular-color, gltf-coat, gltf-sheen, diffuse-transmission, iridescence, dispersion (--all-effects)$"
 # bench times both pipelines in one run and finds their images identical.
 "$penumbra" bench --size 16x16 --frames 2 | tee "$work/bench"
 grep -qE "^full / specialized GPU time \(medians\): [0-9.]+$" "$work/bench"

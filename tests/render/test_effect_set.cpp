@@ -148,6 +148,16 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
           (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SPECULAR | PT_EFFECT_IRIDESCENCE));
   m.model = scene::MaterialModel::Phong;
   REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
+  // Dispersion bends a volume's refraction: none on thin glass or without glass.
+  m = disney();
+  m.dispersion = 0.5f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) == PT_EFFECT_AREA_LIGHTS);
+  m.specTrans = 1.0f;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TRANSMISSION | PT_EFFECT_DISPERSION));
+  m.thin = true;
+  REQUIRE(render::deriveEffects(cornellWithSphere(m)) ==
+          (PT_EFFECT_AREA_LIGHTS | PT_EFFECT_TRANSMISSION));
   // glTF anisotropy turns the tangent where the hit is built: surface detail.
   m = disney();
   m.metallic = 1.0f;
@@ -219,15 +229,16 @@ TEST_CASE("effect set: derived from what the scene's materials, lights and camer
   REQUIRE(render::effectNames(PT_EFFECT_AREA_LIGHTS | PT_EFFECT_SHEEN) ==
           std::vector<std::string>{"area-lights", "sheen"});
   REQUIRE(render::effectNames(PT_EFFECT_CLEARCOAT | PT_EFFECT_GLTF_COAT | PT_EFFECT_GLTF_SHEEN |
-                              PT_EFFECT_DIFFUSE_TRANSMISSION | PT_EFFECT_IRIDESCENCE) ==
+                              PT_EFFECT_DIFFUSE_TRANSMISSION | PT_EFFECT_IRIDESCENCE |
+                              PT_EFFECT_DISPERSION) ==
           std::vector<std::string>{"clearcoat", "gltf-coat", "gltf-sheen", "diffuse-transmission",
-                                   "iridescence"});
+                                   "iridescence", "dispersion"});
 }
 
 TEST_CASE("effect set: a variant leaves out the code of absent effects", "[render]") {
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL | PT_OUTPUT_GUIDES) ==
           "path_trace.rgen");
-  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e65151.rgen");
+  REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECTS_ALL) == "path_trace.e130687.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS) == "path_trace.e1.rgen");
   REQUIRE(render::effectVariant("path_trace.rgen", PT_EFFECT_AREA_LIGHTS | PT_OUTPUT_GUIDES) ==
           "path_trace.e257.rgen");
@@ -237,7 +248,7 @@ TEST_CASE("effect set: a variant leaves out the code of absent effects", "[rende
   // Each effect (or the guides) removed makes the shader smaller.
   const uint32_t all = PT_EFFECTS_ALL | PT_OUTPUT_GUIDES;
   const size_t full = shaders::shaderDesc("path_trace.rgen").spirv.size();
-  for (uint32_t bit = 1; bit <= PT_EFFECT_IRIDESCENCE; bit <<= 1) {
+  for (uint32_t bit = 1; bit <= PT_EFFECT_DISPERSION; bit <<= 1) {
     if ((PT_PATH_TRACE_EFFECT_BITS & bit) == 0) continue;  // alpha masking: no variant
     const auto without = shaders::shaderDesc(render::effectVariant("path_trace.rgen", all & ~bit));
     INFO("without effect bit " << bit << ": " << without.spirv.size() << " words, full " << full);
@@ -394,7 +405,7 @@ TEST_CASE("effect set: specialized and full pipelines render the same image", "[
   branches.camera.orthographicHeight = 0.5f;
   REQUIRE(render::featureNames(render::deriveFeatures(branches, std::nullopt)) ==
           std::vector<std::string>{"directional-lights", "soft-sun", "spot-lights", "thin-lens",
-                                   "lens-blades", "absorption", "dispersion"});
+                                   "lens-blades", "absorption"});
   REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ENVIRONMENT) != 0u);
   REQUIRE((render::deriveEffects(branches) & PT_EFFECT_ORTHOGRAPHIC) != 0u);
   REQUIRE(render::deriveFeatures(scene::loadScene("cornell-box"), std::nullopt) == 0u);

@@ -50,6 +50,8 @@ uint32_t materialEffectsOf(const scene::Material& m) {
   // The film colours the specular layer's reflectance: nothing without one.
   if (m.iridescence > 0.0f && (effects & PT_EFFECT_SPECULAR) != 0u)
     effects |= PT_EFFECT_IRIDESCENCE;
+  // Only a volume's refraction bends each wavelength its own way.
+  if (m.dispersion > 0.0f && m.specTrans > 0.0f && !m.thin) effects |= PT_EFFECT_DISPERSION;
   return effects;
 }
 
@@ -122,7 +124,8 @@ constexpr std::pair<uint32_t, const char*> kEffectNames[] = {
     {PT_EFFECT_GLTF_COAT, "gltf-coat"},
     {PT_EFFECT_GLTF_SHEEN, "gltf-sheen"},
     {PT_EFFECT_DIFFUSE_TRANSMISSION, "diffuse-transmission"},
-    {PT_EFFECT_IRIDESCENCE, "iridescence"}};
+    {PT_EFFECT_IRIDESCENCE, "iridescence"},
+    {PT_EFFECT_DISPERSION, "dispersion"}};
 constexpr uint32_t namedEffects() {
   uint32_t bits = 0;
   for (const auto& [bit, name] : kEffectNames) bits |= bit;
@@ -156,25 +159,16 @@ uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Ca
         m.specTrans > 0.0f || m.transparency > 0.0f || m.diffuseTransmission > 0.0f;
     return transmits && !m.thin && std::isfinite(m.attenuationDistance);
   };
-  // As the path tracer decides (path_tracer.hlsli); Phong has none.
-  auto disperses = [&](uint32_t materialIndex) {
-    const auto& m = scene.materials.at(materialIndex);
-    return m.model != scene::MaterialModel::Phong && m.specTrans > 0.0f && !m.thin &&
-           m.dispersion > 0.0f;
-  };
-  auto addMaterial = [&](uint32_t material) {
-    if (absorbs(material)) features |= kFeatureAbsorption;
-    if (disperses(material)) features |= kFeatureDispersion;
-  };
-  for (const auto& instance : scene.instances) addMaterial(scene.meshes.at(instance.mesh).material);
-  for (const auto& object : scene.implicits) addMaterial(object.material);
+  for (const auto& instance : scene.instances)
+    if (absorbs(scene.meshes.at(instance.mesh).material)) features |= kFeatureAbsorption;
+  for (const auto& object : scene.implicits)
+    if (absorbs(object.material)) features |= kFeatureAbsorption;
   return features;
 }
 
 std::vector<std::string> featureNames(uint32_t features) {
   static const char* const kNames[] = {"directional-lights", "soft-sun",    "spot-lights",
-                                       "thin-lens",          "lens-blades", "absorption",
-                                       "dispersion"};
+                                       "thin-lens",          "lens-blades", "absorption"};
   std::vector<std::string> names;
   for (int bit = 0; bit < int(std::size(kNames)); ++bit)
     if (features & (1u << bit)) names.emplace_back(kNames[bit]);

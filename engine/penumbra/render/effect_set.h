@@ -60,7 +60,6 @@ enum SceneFeature : uint32_t {
   kFeatureThinLens = 8,     // an aperture radius > 0
   kFeatureLensBlades = 16,  // a polygonal aperture
   kFeatureAbsorption = 32,  // a transmissive material with a finite attenuation distance
-  kFeatureDispersion = 64,  // a refracting volume whose index depends on the wavelength
 };
 // The features of the scene rendered from `camera` (the scene's own if absent).
 uint32_t deriveFeatures(const scene::Scene& scene, const std::optional<scene::Camera>& camera);

@@ -305,10 +305,8 @@ def materials():
                                                   "metallicFactor": 0.3, "roughnessFactor": 0.7}},
         {"name": "emissive", "emissiveFactor": [1, 0.5, 0.25],
          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
-        # Dispersion on thin glass bends nothing: warned about.
         {"name": "glass", "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.9},
-                                         "KHR_materials_ior": {"ior": 1.33},
-                                         "KHR_materials_dispersion": {"dispersion": 0.5}}},
+                                         "KHR_materials_ior": {"ior": 1.33}}},
         {"name": "volume", "extensions": {
             "KHR_materials_transmission": {"transmissionFactor": 1},
             "KHR_materials_volume": {"thicknessFactor": 0.5, "attenuationDistance": 2,
@@ -376,6 +374,14 @@ def extensions():
     b = triangle_file()
     b.doc["extensionsUsed"] = ["KHR_materials_pbrSpecularGlossiness", "KHR_materials_clearcoat"]
     b.write_gltf("extension_optional.gltf")
+    # Dispersion on thin glass (no volume) bends nothing: warned about.
+    b = triangle_file()
+    b.doc["materials"] = [{"name": "thin glass", "extensions": {
+        "KHR_materials_transmission": {"transmissionFactor": 1},
+        "KHR_materials_dispersion": {"dispersion": 0.5}}}]
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.doc["extensionsUsed"] = ["KHR_materials_dispersion", "KHR_materials_transmission"]
+    b.write_gltf("dispersion_thin.gltf")
 
 
 def invalid():
