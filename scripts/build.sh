@@ -23,6 +23,9 @@ case "${1:-}" in
 esac
 cmake --preset "$preset" -DPENUMBRA_BUILD_TESTS=ON -DPENUMBRA_BUILD_VIEWER=ON
 cmake --build --preset "$preset" --parallel "$(nproc)"
+echo "build.sh: build/ in $SECONDS s"
 if [ "${PENUMBRA_SKIP_WINDOWS:-}" != "1" ]; then
+  begun=$SECONDS
   bash scripts/build-windows-cross.sh build
+  echo "build.sh: build-mingw/ in $((SECONDS - begun)) s"
 fi

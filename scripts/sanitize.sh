@@ -12,6 +12,7 @@ cd "$(dirname "$0")/.."
 cmake --preset sanitize -DPENUMBRA_FUZZ_SECONDS="${PENUMBRA_FUZZ_SECONDS:-300}"
 cmake --build --preset sanitize --parallel "$(nproc)" --target penumbra_tests fuzz_gltf fuzz_scene \
   fuzz_settings fuzz_image
+echo "sanitize.sh: build-sanitize/ in $SECONDS s"
 # Third-party libraries loaded at run time keep allocations LeakSanitizer
 # would report (tests/fuzz/lsan.supp says which and why).
 export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp"

@@ -268,13 +268,13 @@ TEST_CASE("glass slab: a dispersive slab splits an emitter's edge into Cauchy's 
   // (n 1.47), 2-3 columns of a 2-degree view at the emitter. Each column's
   // colour is the share of the spectrum whose shifted ray lands on the
   // emitter, weighted by those wavelengths' colours. Per column (32 rows x
-  // 1024 spp) the noise is at most 1.3 / sqrt(32768) = 0.007 per channel (a
+  // 256 spp) the noise is at most 1.3 / sqrt(8192) = 0.014 per channel (a
   // wavelength's weight has a standard deviation of 1.2-1.3); columns are
   // held to 0.06. Without dispersion every column
   // is grey: the fringe's columns are off by 0.3 and more; a wrong-signed
   // law swaps red and blue.
   constexpr float kDispersion = 3.0f;
-  constexpr uint32_t kSpp = 1024;
+  constexpr uint32_t kSpp = 256;
   scene::Scene s;
   s.name = "dispersive slab";
   s.camera.position = glm::vec3(0.0f);
