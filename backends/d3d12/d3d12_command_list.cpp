@@ -2,7 +2,9 @@
 // builds, pipeline state, DispatchRays/Dispatch, draws and timestamps.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstring>
+#include <vector>
 
 #include "d3d12_backend.h"
 #include "penumbra/rhi/shader_table_layout.h"
@@ -150,38 +152,55 @@ void D3D12CommandList::writeBuffer(rhi::IBuffer* buffer, const void* data, size_
                           staging->resource(), 0, bytes);
 }
 
-// D3D12: an upload-heap buffer holding the rows padded to
-// D3D12_TEXTURE_DATA_PITCH_ALIGNMENT (256 bytes), copied with
-// CopyTextureRegion from a placed footprint into subresource 0.
-// `bytes` is the whole texture, tightly packed (checked by the validation layer).
+// D3D12: an upload-heap buffer holding each level's rows padded to
+// D3D12_TEXTURE_DATA_PITCH_ALIGNMENT (256 bytes), each level placed at a
+// multiple of D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT (512), copied with one
+// CopyTextureRegion per level from its placed footprint into subresource
+// `level`. `bytes` is every level, tightly packed (checked by the validation layer).
 void D3D12CommandList::writeTexture(rhi::ITexture* texture, const void* data, size_t /*bytes*/) {
   auto* t = static_cast<D3D12Texture*>(texture);
   const auto& d = texture->desc();
-  const uint64_t rowBytes = uint64_t(d.width) * rhi::formatByteSize(d.format);
-  const uint64_t pitch = rhi::alignUp(rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
+  struct Level {
+    uint32_t width, height;
+    uint64_t rowBytes, pitch, offset;
+  };
+  std::vector<Level> levels;
+  uint64_t stagingBytes = 0;
+  for (uint32_t i = 0; i < d.mipLevels; ++i) {
+    Level l{std::max(1u, d.width >> i), std::max(1u, d.height >> i), 0, 0, 0};
+    l.rowBytes = uint64_t(l.width) * rhi::formatByteSize(d.format);
+    l.pitch = rhi::alignUp(l.rowBytes, D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
+    l.offset = rhi::alignUp(stagingBytes, D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT);
+    stagingBytes = l.offset + l.pitch * l.height;
+    levels.push_back(l);
+  }
   // Upload-heap committed resources start 64 KiB aligned, beyond the
   // 512-byte placement alignment footprints need.
-  auto staging = makeTransientBuffer(pitch * d.height, rhi::BufferUsage::CopySource,
+  auto staging = makeTransientBuffer(stagingBytes, rhi::BufferUsage::CopySource,
                                      rhi::MemoryLocation::Upload, "writeTexture staging");
   auto* dst = static_cast<uint8_t*>(staging->mappedData());
   const auto* src = static_cast<const uint8_t*>(data);
-  for (uint32_t row = 0; row < d.height; ++row)
-    std::memcpy(dst + row * pitch, src + row * rowBytes, rowBytes);
   setTextureState(texture, rhi::ResourceState::CopyDest);
-  D3D12_TEXTURE_COPY_LOCATION from{};
-  from.pResource = staging->resource();
-  from.Type = D3D12_TEXTURE_COPY_TYPE_PLACED_FOOTPRINT;
-  from.PlacedFootprint.Offset = 0;
-  from.PlacedFootprint.Footprint.Format = t->format();
-  from.PlacedFootprint.Footprint.Width = d.width;
-  from.PlacedFootprint.Footprint.Height = d.height;
-  from.PlacedFootprint.Footprint.Depth = 1;
-  from.PlacedFootprint.Footprint.RowPitch = UINT(pitch);
-  D3D12_TEXTURE_COPY_LOCATION to{};
-  to.pResource = t->resource();
-  to.Type = D3D12_TEXTURE_COPY_TYPE_SUBRESOURCE_INDEX;
-  to.SubresourceIndex = 0;
-  list_->CopyTextureRegion(&to, 0, 0, 0, &from, nullptr);
+  for (uint32_t i = 0; i < d.mipLevels; ++i) {
+    const Level& l = levels[i];
+    for (uint32_t row = 0; row < l.height; ++row)
+      std::memcpy(dst + l.offset + row * l.pitch, src + row * l.rowBytes, l.rowBytes);
+    src += l.rowBytes * l.height;
+    D3D12_TEXTURE_COPY_LOCATION from{};
+    from.pResource = staging->resource();
+    from.Type = D3D12_TEXTURE_COPY_TYPE_PLACED_FOOTPRINT;
+    from.PlacedFootprint.Offset = l.offset;
+    from.PlacedFootprint.Footprint.Format = t->format();
+    from.PlacedFootprint.Footprint.Width = l.width;
+    from.PlacedFootprint.Footprint.Height = l.height;
+    from.PlacedFootprint.Footprint.Depth = 1;
+    from.PlacedFootprint.Footprint.RowPitch = UINT(l.pitch);
+    D3D12_TEXTURE_COPY_LOCATION to{};
+    to.pResource = t->resource();
+    to.Type = D3D12_TEXTURE_COPY_TYPE_SUBRESOURCE_INDEX;
+    to.SubresourceIndex = i;
+    list_->CopyTextureRegion(&to, 0, 0, 0, &from, nullptr);
+  }
 }
 
 void D3D12CommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,

@@ -473,7 +473,7 @@ D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc&
           srv.Format = texture->format();
           srv.ViewDimension = D3D12_SRV_DIMENSION_TEXTURE2D;
           srv.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
-          srv.Texture2D.MipLevels = 1;
+          srv.Texture2D.MipLevels = texture->desc().mipLevels;
           d->CreateShaderResourceView(texture->resource(), &srv, handle);
         }
         break;
@@ -487,7 +487,7 @@ D3D12BindingSet::D3D12BindingSet(D3D12Device& device, const rhi::BindingSetDesc&
           srv.Format = texture->format();
           srv.ViewDimension = D3D12_SRV_DIMENSION_TEXTURE2D;
           srv.Shader4ComponentMapping = D3D12_DEFAULT_SHADER_4_COMPONENT_MAPPING;
-          srv.Texture2D.MipLevels = 1;
+          srv.Texture2D.MipLevels = texture->desc().mipLevels;
           d->CreateShaderResourceView(texture->resource(), &srv, descriptors.cpu(range->offsetInTable + i));
         }
         break;

@@ -157,7 +157,7 @@ DXGI_FORMAT D3D12Texture::format() const {
   return toDxgiFormat(desc_.format);
 }
 
-// D3D12: CreateCommittedResource (TEXTURE2D, one mip) on a DEFAULT heap;
+// D3D12: CreateCommittedResource (TEXTURE2D, desc.mipLevels) on a DEFAULT heap;
 // storage textures allow unordered access, render targets RTVs.
 D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : desc_(desc) {
   D3D12_RESOURCE_DESC rd{};
@@ -165,7 +165,7 @@ D3D12Texture::D3D12Texture(D3D12Device& device, const rhi::TextureDesc& desc) : 
   rd.Width = desc.width;
   rd.Height = desc.height;
   rd.DepthOrArraySize = 1;
-  rd.MipLevels = 1;
+  rd.MipLevels = UINT16(desc.mipLevels);
   rd.Format = toDxgiFormat(desc.format);
   rd.SampleDesc.Count = 1;
   rd.Layout = D3D12_TEXTURE_LAYOUT_UNKNOWN;
@@ -208,21 +208,21 @@ D3D12_TEXTURE_ADDRESS_MODE toAddressMode(rhi::AddressMode mode) {
   return D3D12_TEXTURE_ADDRESS_MODE_WRAP;
 }
 
-// Point mip filtering always: textures have one mip level.
-D3D12_FILTER toFilter(rhi::Filter minFilter, rhi::Filter magFilter) {
-  const bool minLinear = minFilter == rhi::Filter::Linear,
-             magLinear = magFilter == rhi::Filter::Linear;
-  if (minLinear && magLinear) return D3D12_FILTER_MIN_MAG_LINEAR_MIP_POINT;
-  if (minLinear) return D3D12_FILTER_MIN_LINEAR_MAG_MIP_POINT;
-  if (magLinear) return D3D12_FILTER_MIN_POINT_MAG_LINEAR_MIP_POINT;
-  return D3D12_FILTER_MIN_MAG_MIP_POINT;
+// MipFilter::None filters between levels by point; MaxLOD 0 keeps level 0.
+D3D12_FILTER toFilter(rhi::Filter minFilter, rhi::Filter magFilter, rhi::MipFilter mipFilter) {
+  auto type = [](bool linear) {
+    return linear ? D3D12_FILTER_TYPE_LINEAR : D3D12_FILTER_TYPE_POINT;
+  };
+  return D3D12_ENCODE_BASIC_FILTER(
+      type(minFilter == rhi::Filter::Linear), type(magFilter == rhi::Filter::Linear),
+      type(mipFilter == rhi::MipFilter::Linear), D3D12_FILTER_REDUCTION_TYPE_STANDARD);
 }
 }  // namespace
 
 // D3D12: the D3D12_SAMPLER_DESC binding sets write with CreateSampler; LOD
-// range [0, 0] and no anisotropy, as on Vulkan.
+// range [0, 0] for MipFilter::None and no anisotropy, as on Vulkan.
 D3D12Sampler::D3D12Sampler(const rhi::SamplerDesc& desc) : desc_(desc) {
-  samplerDesc_.Filter = toFilter(desc.minFilter, desc.magFilter);
+  samplerDesc_.Filter = toFilter(desc.minFilter, desc.magFilter, desc.mipFilter);
   samplerDesc_.AddressU = toAddressMode(desc.addressU);
   samplerDesc_.AddressV = toAddressMode(desc.addressV);
   samplerDesc_.AddressW = D3D12_TEXTURE_ADDRESS_MODE_CLAMP;
@@ -230,7 +230,7 @@ D3D12Sampler::D3D12Sampler(const rhi::SamplerDesc& desc) : desc_(desc) {
   samplerDesc_.MaxAnisotropy = 1;
   samplerDesc_.ComparisonFunc = D3D12_COMPARISON_FUNC_NEVER;
   samplerDesc_.MinLOD = 0.0f;
-  samplerDesc_.MaxLOD = 0.0f;
+  samplerDesc_.MaxLOD = desc.mipFilter == rhi::MipFilter::None ? 0.0f : D3D12_FLOAT32_MAX;
 }
 
 // D3D12: GetRaytracingAccelerationStructurePrebuildInfo sizes the result

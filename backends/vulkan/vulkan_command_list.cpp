@@ -1,6 +1,8 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstring>
+#include <vector>
 
 #include "penumbra/rhi/shader_table_layout.h"
 #include "penumbra/util/error.h"
@@ -193,7 +195,7 @@ void VulkanCommandList::setTextureState(rhi::ITexture* texture, rhi::ResourceSta
   barrier.newLayout = imageLayout(state);
   barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = t->image();
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
   vkCmdPipelineBarrier(commandBuffer_, from.stages, to.stages, 0, 0, nullptr, 0, nullptr, 1,
                        &barrier);
   texture->state = state;
@@ -217,13 +219,20 @@ void VulkanCommandList::writeTexture(rhi::ITexture* texture, const void* data, s
                                      rhi::MemoryLocation::Upload, 0, "writeTexture staging");
   std::memcpy(staging->mappedData(), data, bytes);
   setTextureState(texture, rhi::ResourceState::CopyDest);
-  VkBufferImageCopy region{};
-  region.bufferOffset = staging->alignedOffset();
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {d.width, d.height, 1};
-  vkCmdCopyBufferToImage(commandBuffer_, staging->handle(),
-                         static_cast<VulkanTexture*>(texture)->image(),
-                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  // Each level's bytes are a whole number of texels, so every region's
+  // offset stays texel-aligned as Vulkan requires.
+  std::vector<VkBufferImageCopy> regions(d.mipLevels);
+  VkDeviceSize offset = staging->alignedOffset();
+  for (uint32_t level = 0; level < d.mipLevels; ++level) {
+    const uint32_t w = std::max(1u, d.width >> level), h = std::max(1u, d.height >> level);
+    regions[level].bufferOffset = offset;
+    regions[level].imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+    regions[level].imageExtent = {w, h, 1};
+    offset += VkDeviceSize(w) * h * rhi::formatByteSize(d.format);
+  }
+  vkCmdCopyBufferToImage(
+      commandBuffer_, staging->handle(), static_cast<VulkanTexture*>(texture)->image(),
+      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(regions.size()), regions.data());
 }
 
 void VulkanCommandList::copyBuffer(rhi::IBuffer* dst, uint64_t dstOffset, rhi::IBuffer* src,

@@ -147,7 +147,7 @@ VulkanTexture::VulkanTexture(VulkanDevice& device, const rhi::TextureDesc& desc)
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = toVkFormat(desc.format);
   info.extent = {desc.width, desc.height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = desc.mipLevels;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -181,7 +181,7 @@ void VulkanTexture::createView() {
   viewInfo.image = image_;
   viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
   viewInfo.format = toVkFormat(desc_.format);
-  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, desc_.mipLevels, 0, 1};
   check(vkCreateImageView(device_.handle(), &viewInfo, nullptr, &view_), "vkCreateImageView");
   if (ownsImage_) device_.setName(VK_OBJECT_TYPE_IMAGE, uint64_t(image_), desc_.debugName);
   device_.setName(VK_OBJECT_TYPE_IMAGE_VIEW, uint64_t(view_), desc_.debugName);
@@ -213,22 +213,23 @@ VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode) {
 }
 }  // namespace
 
-// Vulkan: vkCreateSampler. Textures have one mip level, so the LOD range is
-// [0, 0] (mipmapMode NEAREST) and anisotropy stays off (it is a feature the
-// device would have to enable).
+// Vulkan: vkCreateSampler. MipFilter::None is mipmapMode NEAREST with the
+// LOD range [0, 0]; anisotropy stays off (it is a feature the device would
+// have to enable, and rays pick one isotropic level).
 VulkanSampler::VulkanSampler(VulkanDevice& device, const rhi::SamplerDesc& desc)
     : device_(device), desc_(desc) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = toVkFilter(desc.magFilter);
   info.minFilter = toVkFilter(desc.minFilter);
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.mipmapMode = desc.mipFilter == rhi::MipFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR
+                                                             : VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = toVkAddressMode(desc.addressU);
   info.addressModeV = toVkAddressMode(desc.addressV);
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.anisotropyEnable = VK_FALSE;
   info.maxAnisotropy = 1.0f;
   info.minLod = 0.0f;
-  info.maxLod = 0.0f;
+  info.maxLod = desc.mipFilter == rhi::MipFilter::None ? 0.0f : VK_LOD_CLAMP_NONE;
   info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
   check(vkCreateSampler(device_.handle(), &info, nullptr, &sampler_), "vkCreateSampler");
   device_.setName(VK_OBJECT_TYPE_SAMPLER, uint64_t(sampler_), desc.debugName);

@@ -59,8 +59,8 @@ float3 saturate(float3 x) { return clamp(x, float3(0.0, 0.0, 0.0), float3(1.0, 1
 // differ between neighbouring threads, hence nonuniformEXT.
 #define PT_TEXTURE_ARRAY(name, t) layout(set = 0, binding = PENUMBRA_T(t)) uniform texture2D name[]
 #define PT_SAMPLER_ARRAY(name, s) layout(set = 0, binding = PENUMBRA_S(s)) uniform sampler name[]
-#define PT_SAMPLE_LEVEL0(textures, samplers, textureIndex, samplerIndex, uv) \
-  textureLod(sampler2D(textures[nonuniformEXT(textureIndex)], samplers[nonuniformEXT(samplerIndex)]), uv, 0.0)
+#define PT_SAMPLE_LEVEL(textures, samplers, textureIndex, samplerIndex, uv, level) \
+  textureLod(sampler2D(textures[nonuniformEXT(textureIndex)], samplers[nonuniformEXT(samplerIndex)]), uv, level)
 // One sampled texture and one sampler (raster stages).
 #define PT_SAMPLED_TEXTURE(name, t) layout(set = 0, binding = PENUMBRA_T(t)) uniform texture2D name
 #define PT_SAMPLER(name, s) layout(set = 0, binding = PENUMBRA_S(s)) uniform sampler name

@@ -52,8 +52,9 @@
 #else
 #define PT_NON_UNIFORM(index) NonUniformResourceIndex(index)
 #endif
-#define PT_SAMPLE_LEVEL0(textures, samplers, textureIndex, samplerIndex, uv) \
-  textures[PT_NON_UNIFORM(textureIndex)].SampleLevel(samplers[PT_NON_UNIFORM(samplerIndex)], uv, 0.0)
+#define PT_SAMPLE_LEVEL(textures, samplers, textureIndex, samplerIndex, uv, level)               \
+  textures[PT_NON_UNIFORM(textureIndex)].SampleLevel(samplers[PT_NON_UNIFORM(samplerIndex)], uv, \
+                                                     level)
 // One sampled texture and one sampler (raster stages).
 #define PT_SAMPLED_TEXTURE(name, t) \
   [[vk::binding(PENUMBRA_T(t), 0)]] Texture2D<float4> name : PENUMBRA_REGISTER_T(t)

@@ -29,6 +29,26 @@ float3 cameraRayDirection(FrameConstants c, float2 filmPosition) {
   return normalize(c.camera.forward + sx * c.camera.right + sy * c.camera.up);
 }
 
+// The camera's pixel cone at world point p (texture level of detail,
+// textures.hlsli): xyz the unit direction the camera sees p along, w the
+// cone's width there. A perspective pixel spans 2 tan(fov / 2) / height
+// radians at the view's centre; an orthographic one is 2 halfHeight / height
+// wide at any distance. Every vertex of a path takes the cone the camera
+// would have there (as pbrt-v4 approximates footprints after the first
+// hit): nothing rides along the path, and a point seen in a mirror, no
+// farther from the camera than the path that reached it, reads textures
+// finer than its true footprint, never coarser. Without a camera (zero
+// constants: the probe) the width is 0, no cone.
+float4 pixelCone(FrameConstants c, float3 p) {
+  float pixel = 2.0 * c.camera.filmHalfHeight / max(float(c.height), 1.0);
+#if PT_HAS_EFFECT(PT_EFFECT_ORTHOGRAPHIC)
+  if ((c.sceneFlags & PT_SCENE_ORTHOGRAPHIC) != 0u) return float4(c.camera.forward, pixel);
+#endif
+  float3 v = p - c.camera.position;
+  float distance = length(v);
+  return float4(distance > 0.0 ? v / distance : c.camera.forward, pixel * distance);
+}
+
 // Stratified jittered position of sample `index` of `count` in one frame: the
 // first m*m samples (m = floor(sqrt(count))) each cover one cell of an m x m
 // grid, the rest are uniform.

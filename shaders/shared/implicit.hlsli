@@ -195,6 +195,9 @@ SurfaceHit implicitSurfaceHit(ImplicitData o, float3 worldOrigin, float3 worldDi
   h.shadingNormal = h.geometricNormal;
   h.uv = float4(0.0, 0.0, 0.0, 0.0);
   h.color = float4(1.0, 1.0, 1.0, 1.0);
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  h.textureFootprint = float2(-1.0e4, -1.0e4);  // no texture coordinates
+#endif
   h.shadingTangent = float3(0.0, 0.0, 0.0);
 #if PT_COAT_NORMALS
   h.coatNormal = h.geometricNormal;

@@ -34,7 +34,7 @@ LightSample sampleEmissiveTriangles(uint count, float u0, float u1, float u2) {
   uint emissionTexture = tri.emissionTexture;
   if (emissionTexture != PT_NO_TEXTURE) {
     float2 uv = barycentricInterpolate2(tri.uv0, tri.uv1, tri.uv2, b);
-    s.radiance *= sampleTextureRef(emissionTexture, float4(uv, uv)).xyz;
+    s.radiance *= sampleTextureRef(emissionTexture, float4(uv, uv), PT_FINEST_FOOTPRINT).xyz;
   }
 #endif
   s.pdfArea = tri.probability / tri.area;

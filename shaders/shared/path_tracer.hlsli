@@ -332,7 +332,7 @@ DeltaLightShadow noDeltaLightShadow() {
 MaterialData hitMaterial(InstanceData instance, SurfaceHit hit) {
   MaterialData data = loadMaterial(instance.materialIndex);
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
-  data = applyMaterialTextures(data, hit.uv);
+  data = applyMaterialTextures(data, hit.uv, hit.textureFootprint);
   data.baseColor *= hit.color.xyz;
 #endif
   return data;

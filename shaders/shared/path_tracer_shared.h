@@ -289,7 +289,8 @@ struct MaterialData {
 };
 
 // One use of a texture (scene::TextureRef): uv' = c0 * u + c1 * v + c2 on the
-// chosen texture coordinates (KHR_texture_transform), then sampled at LOD 0.
+// chosen texture coordinates (KHR_texture_transform), then sampled at the
+// mip level of the ray's footprint (textures.hlsli).
 struct TextureRefData {
   float2 column0;  // c0
   float2 column1;  // c1
@@ -298,7 +299,10 @@ struct TextureRefData {
   uint textureIndex;  // into PT_T_TEXTURES
   uint samplerIndex;  // into PT_S_SAMPLERS
   uint texCoordSet;   // 0: TEXCOORD_0, 1: TEXCOORD_1
-  uint unused1;
+  // 0.5 log2 of the texels one unit of the set's texture-coordinate area
+  // covers: width x height x |det(c0, c1)|. A footprint's level is this plus
+  // its own (SurfaceHit.textureFootprint).
+  float lodOffset;
 };
 
 // A delta light: point, spot or directional (scene::PointLight).
@@ -430,7 +434,8 @@ static_assert(sizeof(MaterialData) == 288 && offsetof(MaterialData, emission) ==
               offsetof(MaterialData, iridescenceThickness) == 264 &&
               offsetof(MaterialData, dispersion) == 280);
 static_assert(sizeof(TextureRefData) == 48 && offsetof(TextureRefData, column2) == 16 &&
-              offsetof(TextureRefData, textureIndex) == 32);
+              offsetof(TextureRefData, textureIndex) == 32 &&
+              offsetof(TextureRefData, lodOffset) == 44);
 static_assert(sizeof(EmissiveTriangle) == 96 && offsetof(EmissiveTriangle, p1) == 16 &&
               offsetof(EmissiveTriangle, emissionTexture) == 44 &&
               offsetof(EmissiveTriangle, uv0) == 64 && offsetof(EmissiveTriangle, uv2) == 80);

@@ -11,13 +11,17 @@
 //   float4 loadVertexTangent(uint vertex);    // object space, w handedness, zero without
 //   float4 loadVertexTexCoords(uint vertex);  // xy TEXCOORD_0, zw TEXCOORD_1
 //   float4 loadVertexColor(uint vertex);      // COLOR_0, linear RGBA
-// and, with PT_EFFECT_TEXTURES, textures.hlsli (applyNormalMap).
+// and, with PT_EFFECT_TEXTURES, textures.hlsli (applyNormalMap) and
+//   FrameConstants frameConstants();          // the camera, for the ray cone
 #ifndef PENUMBRA_SURFACE_FROM_RECORD_HLSLI
 #define PENUMBRA_SURFACE_FROM_RECORD_HLSLI
 #include "effects.h"
 #include "hit_record.hlsli"
 #include "implicit.hlsli"
 #include "surface_hit.hlsli"
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+#include "camera.hlsli"
+#endif
 
 // Affine 3x4 transforms stored as three rows (InstanceData).
 float3 transformPoint3x4(float4 r0, float4 r1, float4 r2, float3 p) {
@@ -64,6 +68,29 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
   if ((attributes & PT_VERTEX_TEXCOORDS) != 0u)
     hit.uv = barycentricInterpolate4(loadVertexTexCoords(v.x), loadVertexTexCoords(v.y),
                                      loadVertexTexCoords(v.z), b);
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  // The camera's pixel cone here (camera.hlsli): W / |cos| on the surface,
+  // times the square root of the triangle's texture-coordinate area over its
+  // world area (textures.hlsli). Guards keep log2 finite on degenerate
+  // mappings.
+  hit.textureFootprint = float2(-1.0e4, -1.0e4);
+  float4 cone = pixelCone(frameConstants(), hit.position);
+  if ((attributes & PT_VERTEX_TEXCOORDS) != 0u && cone.w > 0.0) {
+    float4 t0 = loadVertexTexCoords(v.x);
+    float4 t1 = loadVertexTexCoords(v.y);
+    float4 t2 = loadVertexTexCoords(v.z);
+    float3 e1 = transformVector3x4(instance.objectToWorld0, instance.objectToWorld1,
+                                   instance.objectToWorld2, p1 - p0);
+    float3 e2 = transformVector3x4(instance.objectToWorld0, instance.objectToWorld1,
+                                   instance.objectToWorld2, p2 - p0);
+    float4 d1 = t1 - t0;
+    float4 d2 = t2 - t0;
+    float2 uvArea = abs(float2(d1.x * d2.y - d1.y * d2.x, d1.z * d2.w - d1.w * d2.z));
+    float cosine = max(abs(dot(cone.xyz, hit.geometricNormal)), 1e-4);
+    float base = log2(cone.w / cosine) - 0.5 * log2(max(length(cross(e1, e2)), 1e-30));
+    hit.textureFootprint = float2(base, base) + 0.5 * log2(max(uvArea, float2(1e-30, 1e-30)));
+  }
+#endif
   hit.color = float4(1.0, 1.0, 1.0, 1.0);
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
   if ((attributes & PT_VERTEX_COLORS) != 0u)
@@ -82,14 +109,16 @@ SurfaceHit triangleSurfaceHit(InstanceData instance, uint instanceIndex, uint pr
   MaterialData material = loadMaterial(instance.materialIndex);
 #if PT_COAT_NORMALS
   // The coat's own map, or the vertex normal: not the base's map (glTF).
-  hit.coatNormal =
-      resolveShadingNormal(mapNormal(material.clearcoatNormalTexture, material.clearcoatNormalScale,
-                                     hit.uv, worldNormal, worldTangent, worldBitangent),
-                           hit.geometricNormal);
+  hit.coatNormal = resolveShadingNormal(
+      mapNormal(material.clearcoatNormalTexture, material.clearcoatNormalScale, hit.uv,
+                hit.textureFootprint, worldNormal, worldTangent, worldBitangent),
+      hit.geometricNormal);
 #endif
-  worldNormal = applyNormalMap(material, hit.uv, worldNormal, worldTangent, worldBitangent);
+  worldNormal = applyNormalMap(material, hit.uv, hit.textureFootprint, worldNormal, worldTangent,
+                               worldBitangent);
   if (material.anisotropyStrength > 0.0)
-    worldTangent = anisotropyTangent(material, hit.uv, worldTangent, worldBitangent);
+    worldTangent =
+        anisotropyTangent(material, hit.uv, hit.textureFootprint, worldTangent, worldBitangent);
 #endif
   hit.shadingNormal = resolveShadingNormal(worldNormal, hit.geometricNormal);
   hit.shadingTangent = resolveShadingTangent(worldTangent, hit.shadingNormal);

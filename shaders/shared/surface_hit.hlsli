@@ -16,6 +16,11 @@ struct SurfaceHit {
   float3 shadingTangent;  // unit and orthogonal to shadingNormal, or zero without vertex tangents
   float4 uv;              // xy TEXCOORD_0, zw TEXCOORD_1 (zero without)
   float4 color;           // COLOR_0, linear RGBA: multiplies base colour and alpha (1 without)
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  // log2 of the ray cone's footprint on the surface in TEXCOORD_0 and
+  // TEXCOORD_1 units (textures.hlsli); PT_FINEST_FOOTPRINT without a cone.
+  float2 textureFootprint;
+#endif
 #if PT_COAT_NORMALS
   float3 coatNormal;  // glTF's coat: unit, on geometricNormal's side (its normal map applied)
 #endif
@@ -31,6 +36,9 @@ SurfaceHit surfaceMiss() {
   h.shadingNormal = float3(0.0, 0.0, 1.0);
   h.uv = float4(0.0, 0.0, 0.0, 0.0);
   h.color = float4(1.0, 1.0, 1.0, 1.0);
+#if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
+  h.textureFootprint = float2(-1.0e4, -1.0e4);
+#endif
   h.shadingTangent = float3(0.0, 0.0, 0.0);
 #if PT_COAT_NORMALS
   h.coatNormal = float3(0.0, 0.0, 1.0);

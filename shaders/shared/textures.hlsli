@@ -1,10 +1,24 @@
 // Material textures (glTF): where a texture is read and how each one changes
 // the material. Needs the entry point's loadTextureRef(index) and
-// sampleTextureLod0(texture, sampler, uv) (bindless arrays, LOD 0: rays carry
-// no screen-space derivatives and the scene's textures have no mipmaps).
+// sampleTextureLevel(texture, sampler, uv, level) (bindless arrays).
+//
+// Which mip level: rays have no screen-space derivatives, so each carries a
+// cone (Akenine-Moller et al., "Improved Shader and Texture Level of Detail
+// Using Ray Cones", JCGT 2021): its width W where it meets a triangle, over
+// |cos| of the angle to the triangle's normal, is the footprint's length on
+// the surface, and 0.5 log2 of the triangle's texture-coordinate area over
+// its world area turns that into texture-coordinate units. A hit's
+// `footprint` holds log2 of that length for TEXCOORD_0 and TEXCOORD_1
+// (surface_from_record.hlsli); each texture adds its own lodOffset (log2 of
+// its texels per coordinate unit), so the level is where one texel spans the
+// footprint.
 #ifndef PENUMBRA_TEXTURES_HLSLI
 #define PENUMBRA_TEXTURES_HLSLI
 #include "rng.hlsli"
+
+// The footprint of a read without a cone (alpha tests, emission): level 0
+// of every texture.
+#define PT_FINEST_FOOTPRINT float2(-1.0e4, -1.0e4)
 
 // The texture coordinates a reference reads: its set (TEXCOORD_0 in uv.xy,
 // TEXCOORD_1 in uv.zw) through its KHR_texture_transform.
@@ -13,9 +27,10 @@ float2 textureCoordinates(TextureRefData ref, float4 uv) {
   return ref.column0 * st.x + ref.column1 * st.y + ref.column2;
 }
 
-float4 sampleTextureRef(uint refIndex, float4 uv) {
+float4 sampleTextureRef(uint refIndex, float4 uv, float2 footprint) {
   TextureRefData ref = loadTextureRef(refIndex);
-  return sampleTextureLod0(ref.textureIndex, ref.samplerIndex, textureCoordinates(ref, uv));
+  float level = max((ref.texCoordSet == 1u ? footprint.y : footprint.x) + ref.lodOffset, 0.0);
+  return sampleTextureLevel(ref.textureIndex, ref.samplerIndex, textureCoordinates(ref, uv), level);
 }
 
 // The KHR_materials_* textures, as gltf_materials.cpp maps their factors
@@ -28,10 +43,11 @@ float4 sampleTextureRef(uint refIndex, float4 uv) {
 // texture; diffuseTransmission by its texture's alpha, diffuseTransmissionColor by its colour
 // texture; iridescence by its texture's red, while the thickness texture's green picks the
 // film's thickness between its minimum and maximum (iridescenceThickness.y holds the pick).
-void applyExtensionTextures(inout MaterialData d, float4 uv) {
-  if (d.clearcoatTexture != PT_NO_TEXTURE) d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv).x;
+void applyExtensionTextures(inout MaterialData d, float4 uv, float2 footprint) {
+  if (d.clearcoatTexture != PT_NO_TEXTURE)
+    d.clearcoat *= sampleTextureRef(d.clearcoatTexture, uv, footprint).x;
   if (d.clearcoatRoughnessTexture != PT_NO_TEXTURE) {
-    float scale = sampleTextureRef(d.clearcoatRoughnessTexture, uv).y;
+    float scale = sampleTextureRef(d.clearcoatRoughnessTexture, uv, footprint).y;
     if ((d.flags & MATERIAL_FLAG_GGX_COAT) != 0u) {
       d.clearcoatGloss = 1.0 - (1.0 - d.clearcoatGloss) * scale;
     } else {
@@ -39,49 +55,58 @@ void applyExtensionTextures(inout MaterialData d, float4 uv) {
       d.clearcoatGloss = saturate((0.1 - r * r) / 0.099);
     }
   }
-  if (d.transmissionTexture != PT_NO_TEXTURE) d.specTrans *= sampleTextureRef(d.transmissionTexture, uv).x;
+  if (d.transmissionTexture != PT_NO_TEXTURE)
+    d.specTrans *= sampleTextureRef(d.transmissionTexture, uv, footprint).x;
   if (d.sheenColorTexture != PT_NO_TEXTURE)
-    d.sheenColor *= sampleTextureRef(d.sheenColorTexture, uv).xyz;
+    d.sheenColor *= sampleTextureRef(d.sheenColorTexture, uv, footprint).xyz;
   if (d.sheenRoughnessTexture != PT_NO_TEXTURE)
-    d.sheenRoughness *= sampleTextureRef(d.sheenRoughnessTexture, uv).w;
+    d.sheenRoughness *= sampleTextureRef(d.sheenRoughnessTexture, uv, footprint).w;
   if (d.specularTexture != PT_NO_TEXTURE) {
-    float a = sampleTextureRef(d.specularTexture, uv).w;
+    float a = sampleTextureRef(d.specularTexture, uv, footprint).w;
     d.specular *= a;
 #if PT_HAS_EFFECT(PT_EFFECT_SPECULAR_COLOR)
     d.specularF90 *= a;  // glTF: F90 = specularFactor x the texture's alpha
 #endif
   }
   if (d.specularColorTexture != PT_NO_TEXTURE)
-    d.specularColor *= sampleTextureRef(d.specularColorTexture, uv).xyz;
+    d.specularColor *= sampleTextureRef(d.specularColorTexture, uv, footprint).xyz;
   if (d.anisotropyTexture != PT_NO_TEXTURE)
-    d.anisotropyStrength = saturate(d.anisotropyStrength * sampleTextureRef(d.anisotropyTexture, uv).z);
+    d.anisotropyStrength =
+        saturate(d.anisotropyStrength * sampleTextureRef(d.anisotropyTexture, uv, footprint).z);
 #if PT_HAS_EFFECT(PT_EFFECT_DIFFUSE_TRANSMISSION)
   if (d.diffuseTransmissionTexture != PT_NO_TEXTURE)
-    d.diffuseTransmission *= sampleTextureRef(d.diffuseTransmissionTexture, uv).w;
+    d.diffuseTransmission *= sampleTextureRef(d.diffuseTransmissionTexture, uv, footprint).w;
   if (d.diffuseTransmissionColorTexture != PT_NO_TEXTURE)
-    d.diffuseTransmissionColor *= sampleTextureRef(d.diffuseTransmissionColorTexture, uv).xyz;
+    d.diffuseTransmissionColor *=
+        sampleTextureRef(d.diffuseTransmissionColorTexture, uv, footprint).xyz;
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_IRIDESCENCE)
   if (d.iridescenceTexture != PT_NO_TEXTURE)
-    d.iridescence *= sampleTextureRef(d.iridescenceTexture, uv).x;
+    d.iridescence *= sampleTextureRef(d.iridescenceTexture, uv, footprint).x;
   if (d.iridescenceThicknessTexture != PT_NO_TEXTURE)
-    d.iridescenceThickness.y = lerp(d.iridescenceThickness.x, d.iridescenceThickness.y,
-                                    sampleTextureRef(d.iridescenceThicknessTexture, uv).y);
+    d.iridescenceThickness.y =
+        lerp(d.iridescenceThickness.x, d.iridescenceThickness.y,
+             sampleTextureRef(d.iridescenceThicknessTexture, uv, footprint).y);
 #endif
 }
 
 // The material at a surface point: each texture multiplies its factor
 // (glTF 2.0 3.9.2): base colour rgb, metallic from blue and roughness from
 // green, emission rgb. sRGB textures arrive decoded to linear by the sampler.
-MaterialData applyMaterialTextures(MaterialData d, float4 uv) {
-  if (d.baseColorTexture != PT_NO_TEXTURE) d.baseColor *= sampleTextureRef(d.baseColorTexture, uv).xyz;
+MaterialData applyMaterialTextures(MaterialData d, float4 uv, float2 footprint) {
+  if (d.baseColorTexture != PT_NO_TEXTURE)
+    d.baseColor *= sampleTextureRef(d.baseColorTexture, uv, footprint).xyz;
   if (d.metallicRoughnessTexture != PT_NO_TEXTURE) {
-    float4 mr = sampleTextureRef(d.metallicRoughnessTexture, uv);
+    float4 mr = sampleTextureRef(d.metallicRoughnessTexture, uv, footprint);
     d.metallic *= mr.z;
     d.roughness *= mr.y;
   }
-  if (d.emissionTexture != PT_NO_TEXTURE) d.emission *= sampleTextureRef(d.emissionTexture, uv).xyz;
-  applyExtensionTextures(d, uv);
+  // Emission at level 0: next-event estimation samples emitters by their
+  // level-0 texels (lights.hlsli), and MIS needs both strategies to see the
+  // same emission.
+  if (d.emissionTexture != PT_NO_TEXTURE)
+    d.emission *= sampleTextureRef(d.emissionTexture, uv, PT_FINEST_FOOTPRINT).xyz;
+  applyExtensionTextures(d, uv, footprint);
   return d;
 }
 
@@ -89,7 +114,8 @@ MaterialData applyMaterialTextures(MaterialData d, float4 uv) {
 // vertex colour's alpha.
 float materialAlpha(MaterialData d, float4 uv, float vertexAlpha) {
   float alpha = d.alpha * vertexAlpha;
-  if (d.baseColorTexture != PT_NO_TEXTURE) alpha *= sampleTextureRef(d.baseColorTexture, uv).w;
+  if (d.baseColorTexture != PT_NO_TEXTURE)
+    alpha *= sampleTextureRef(d.baseColorTexture, uv, PT_FINEST_FOOTPRINT).w;
   return alpha;
 }
 
@@ -122,9 +148,9 @@ float alphaCoverageRandom(uint2 pixel, uint samplesBefore, uint seed, float3 ori
 }
 
 // The occlusion texture's factor (1 without): 1 + strength * (r - 1).
-float materialOcclusion(MaterialData d, float4 uv) {
+float materialOcclusion(MaterialData d, float4 uv, float2 footprint) {
   if (d.occlusionTexture == PT_NO_TEXTURE) return 1.0;
-  return 1.0 + d.occlusionStrength * (sampleTextureRef(d.occlusionTexture, uv).x - 1.0);
+  return 1.0 + d.occlusionStrength * (sampleTextureRef(d.occlusionTexture, uv, footprint).x - 1.0);
 }
 
 // A tangent-space normal map applied to the world-space frame (n: unit vertex
@@ -133,17 +159,17 @@ float materialOcclusion(MaterialData d, float4 uv) {
 // xy are scaled by normalScale (glTF normalTexture.scale). Returns an
 // unnormalised normal; a degenerate frame returns n. glTF's coat normal map
 // (clearcoatNormalTexture) is read the same way.
-float3 mapNormal(uint map, float scale, float4 uv, float3 n, float3 t, float3 b) {
+float3 mapNormal(uint map, float scale, float4 uv, float2 footprint, float3 n, float3 t, float3 b) {
   if (map == PT_NO_TEXTURE) return n;
-  float3 m = sampleTextureRef(map, uv).xyz * 2.0 - splat3(1.0);
+  float3 m = sampleTextureRef(map, uv, footprint).xyz * 2.0 - splat3(1.0);
   m.x *= scale;
   m.y *= scale;
   float3 mapped = t * m.x + b * m.y + n * m.z;
   return dot(t, t) > 0.0 && dot(b, b) > 0.0 ? mapped : n;
 }
 
-float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
-  return mapNormal(d.normalTexture, d.normalScale, uv, n, t, b);
+float3 applyNormalMap(MaterialData d, float4 uv, float2 footprint, float3 n, float3 t, float3 b) {
+  return mapNormal(d.normalTexture, d.normalScale, uv, footprint, n, t, b);
 }
 
 // The tangent glTF anisotropy stretches the lobes along
@@ -153,7 +179,7 @@ float3 applyNormalMap(MaterialData d, float4 uv, float3 n, float3 t, float3 b) {
 // does: a node's non-uniform scale stretches t and b unequally, which would
 // otherwise bend the angle. Unnormalised result; (t, b) with a zero axis
 // leaves t. (An 8-bit texel is never exactly zero: 128 is 1/255.)
-float3 anisotropyTangent(MaterialData d, float4 uv, float3 t, float3 b) {
+float3 anisotropyTangent(MaterialData d, float4 uv, float2 footprint, float3 t, float3 b) {
   float lt = dot(t, t);
   float lb = dot(b, b);
   if (!(lt > 0.0) || !(lb > 0.0)) return t;
@@ -161,7 +187,7 @@ float3 anisotropyTangent(MaterialData d, float4 uv, float3 t, float3 b) {
   b *= rsqrt(lb);
   float2 direction = float2(1.0, 0.0);
   if (d.anisotropyTexture != PT_NO_TEXTURE) {
-    float2 texel = sampleTextureRef(d.anisotropyTexture, uv).xy * 2.0 - float2(1.0, 1.0);
+    float2 texel = sampleTextureRef(d.anisotropyTexture, uv, footprint).xy * 2.0 - float2(1.0, 1.0);
     if (dot(texel, texel) > 1e-12) direction = texel;
   }
   float2 r = d.anisotropyDirection;

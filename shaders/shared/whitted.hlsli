@@ -68,8 +68,8 @@ float3 traceWhitted(FrameConstants c, float3 origin, float3 direction) {
     MaterialData data = loadMaterial(instance.materialIndex);
     float occlusion = 1.0;
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)
-    data = applyMaterialTextures(data, hit.uv);
-    occlusion = materialOcclusion(data, hit.uv);
+    data = applyMaterialTextures(data, hit.uv, hit.textureFootprint);
+    occlusion = materialOcclusion(data, hit.uv, hit.textureFootprint);
     data.baseColor *= hit.color.xyz;  // COLOR_0
 #endif
 #if PT_HAS_EFFECT(PT_EFFECT_TEXTURES)

@@ -44,8 +44,8 @@ float loadEnvironmentCdf(uint index) { return gEnvironmentCdf[index]; }
 float loadSheenAlbedo(uint index) {
   return gSheenAlbedo[index];
 }
-float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) {
-  return PT_SAMPLE_LEVEL0(gTextures, gSamplers, textureIndex, samplerIndex, uv);
+float4 sampleTextureLevel(uint textureIndex, uint samplerIndex, float2 uv, float level) {
+  return PT_SAMPLE_LEVEL(gTextures, gSamplers, textureIndex, samplerIndex, uv, level);
 }
 #include "textures.hlsli"
 #include "environment.hlsli"

@@ -177,7 +177,8 @@ TEST_CASE("textures: a nearest-filtered emissive texture shows each texel where 
   const auto texture = makeTexture(4, 4, true, distinctTexel);
   scene::TextureRef ref;
   ref.sampler = {scene::TextureFilter::Nearest, scene::TextureFilter::Nearest,
-                 scene::TextureWrap::ClampToEdge, scene::TextureWrap::ClampToEdge};
+                 scene::MipFilter::Linear, scene::TextureWrap::ClampToEdge,
+                 scene::TextureWrap::ClampToEdge};
 
   SECTION("identity transform, clamped") {}
   SECTION("KHR_texture_transform: offset, 90-degree rotation and scale, repeated") {
@@ -573,7 +574,8 @@ scene::Texture alphaChecker() {
 scene::TextureRef nearestRef() {
   scene::TextureRef ref;
   ref.sampler = {scene::TextureFilter::Nearest, scene::TextureFilter::Nearest,
-                 scene::TextureWrap::ClampToEdge, scene::TextureWrap::ClampToEdge};
+                 scene::MipFilter::Linear, scene::TextureWrap::ClampToEdge,
+                 scene::TextureWrap::ClampToEdge};
   return ref;
 }
 

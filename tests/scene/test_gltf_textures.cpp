@@ -204,28 +204,35 @@ TEST_CASE("glTF textures: one per image and colour space, sRGB for colour", "[gl
 
 TEST_CASE("glTF samplers map onto filters and wrap modes", "[gltf]") {
   using F = scene::TextureFilter;
+  using M = scene::MipFilter;
   using W = scene::TextureWrap;
   const auto s = scene::loadGltf(gltf("textures.gltf"));
-  // Sampler 0: NEAREST, NEAREST_MIPMAP_LINEAR (-> nearest), CLAMP_TO_EDGE, MIRRORED_REPEAT.
+  // Sampler 0: NEAREST, NEAREST_MIPMAP_LINEAR (-> nearest, linear between
+  // levels), CLAMP_TO_EDGE, MIRRORED_REPEAT.
   const auto& a = ref(s, materialNamed(s, "painted").baseColorTexture).sampler;
   REQUIRE(a.magFilter == F::Nearest);
   REQUIRE(a.minFilter == F::Nearest);
+  REQUIRE(a.mipFilter == M::Linear);
   REQUIRE(a.wrapU == W::ClampToEdge);
   REQUIRE(a.wrapV == W::MirroredRepeat);
-  // Sampler 1: LINEAR, LINEAR_MIPMAP_NEAREST (-> linear), MIRRORED_REPEAT, REPEAT.
+  // Sampler 1: LINEAR, LINEAR_MIPMAP_NEAREST (-> linear, the nearest
+  // level), MIRRORED_REPEAT, REPEAT.
   const auto& b = ref(s, materialNamed(s, "transformed").baseColorTexture).sampler;
   REQUIRE(b.magFilter == F::Linear);
   REQUIRE(b.minFilter == F::Linear);
+  REQUIRE(b.mipFilter == M::Nearest);
   REQUIRE(b.wrapU == W::MirroredRepeat);
   REQUIRE(b.wrapV == W::Repeat);
-  // No sampler, and an empty sampler: repeat, filters undefined -> linear.
-  const scene::TextureSampler defaults{F::Linear, F::Linear, W::Repeat, W::Repeat};
+  // No sampler, and an empty sampler: repeat, filters undefined -> linear,
+  // trilinear between levels.
+  const scene::TextureSampler defaults{F::Linear, F::Linear, M::Linear, W::Repeat, W::Repeat};
   REQUIRE(ref(s, materialNamed(s, "painted").metallicRoughnessTexture).sampler == defaults);
   REQUIRE(ref(s, materialNamed(s, "grey").baseColorTexture).sampler == defaults);
   // Sampler 3: only minFilter NEAREST_MIPMAP_NEAREST.
   const auto& c = ref(s, materialNamed(s, "greyAlpha").baseColorTexture).sampler;
   REQUIRE(c.magFilter == F::Linear);
   REQUIRE(c.minFilter == F::Nearest);
+  REQUIRE(c.mipFilter == M::Nearest);
   REQUIRE(c.wrapU == W::Repeat);
 }
 
@@ -438,9 +445,11 @@ TEST_CASE("the renderer's textured quad", "[gltf]") {
   REQUIRE(m.emission == glm::vec3(1.0f));
   REQUIRE(m.baseColorTexture == scene::Material::kNoTexture);
   const auto& emissive = ref(s, m.emissiveTexture);
+  // minFilter NEAREST: no mipmapping.
   REQUIRE(emissive.sampler ==
           scene::TextureSampler{scene::TextureFilter::Nearest, scene::TextureFilter::Nearest,
-                                scene::TextureWrap::ClampToEdge, scene::TextureWrap::ClampToEdge});
+                                scene::MipFilter::None, scene::TextureWrap::ClampToEdge,
+                                scene::TextureWrap::ClampToEdge});
   const auto& checker = s.textures[emissive.texture];
   REQUIRE(checker.srgb);
   REQUIRE(checker.width == 4u);

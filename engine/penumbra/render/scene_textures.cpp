@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/render/texture_mips.h"
+
 namespace penumbra::render {
 namespace {
 
@@ -26,6 +28,19 @@ float srgbToLinear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+rhi::MipFilter mipFilter(scene::MipFilter f) {
+  switch (f) {
+    case scene::MipFilter::None:
+      return rhi::MipFilter::None;
+    case scene::MipFilter::Nearest:
+      return rhi::MipFilter::Nearest;
+    case scene::MipFilter::Linear:
+      return rhi::MipFilter::Linear;
+  }
+  return rhi::MipFilter::Linear;
+}
+
+// The texture with its whole mip chain (texture_mips.h).
 rhi::TextureHandle createTexture(rhi::IDevice& device, rhi::ICommandList& commandList,
                                  uint32_t width, uint32_t height, bool srgb, const uint8_t* rgba8,
                                  const std::string& name) {
@@ -34,10 +49,12 @@ rhi::TextureHandle createTexture(rhi::IDevice& device, rhi::ICommandList& comman
   desc.height = height;
   desc.format = srgb ? rhi::Format::RGBA8_SRGB : rhi::Format::RGBA8_UNORM;
   desc.usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::CopyDest;
+  desc.mipLevels = rhi::mipLevelCount(width, height);
   desc.debugName = name;
   auto texture = device.createTexture(desc);
+  const std::vector<uint8_t> chain = mipChainRgba8(rgba8, width, height, srgb);
   commandList.setTextureState(texture.get(), rhi::ResourceState::CopyDest);
-  commandList.writeTexture(texture.get(), rgba8, size_t(width) * height * 4);
+  commandList.writeTexture(texture.get(), chain.data(), chain.size());
   commandList.setTextureState(texture.get(), rhi::ResourceState::ShaderResource);
   return texture;
 }
@@ -48,12 +65,14 @@ rhi::SamplerDesc samplerDesc(const scene::TextureSampler& s) {
   rhi::SamplerDesc d;
   d.magFilter = filter(s.magFilter);
   d.minFilter = filter(s.minFilter);
+  d.mipFilter = mipFilter(s.mipFilter);
   d.addressU = addressMode(s.wrapU);
   d.addressV = addressMode(s.wrapV);
   return d;
 }
 
-gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t samplerIndex) {
+gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t samplerIndex,
+                                   uint32_t width, uint32_t height) {
   gpu::TextureRefData d{};
   d.column0 = {ref.transform0.x, ref.transform0.y};
   d.column1 = {ref.transform1.x, ref.transform1.y};
@@ -61,6 +80,11 @@ gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t sample
   d.textureIndex = ref.texture;
   d.samplerIndex = samplerIndex;
   d.texCoordSet = ref.texCoord;
+  // A transform that collapses the coordinates (det 0) would ask for an
+  // infinite level; 1e-12 of the area is 20 levels down, past any chain.
+  const float areaScale =
+      std::abs(ref.transform0.x * ref.transform1.y - ref.transform0.y * ref.transform1.x);
+  d.lodOffset = 0.5f * std::log2(float(width) * float(height) * std::max(areaScale, 1e-12f));
   return d;
 }
 
@@ -89,7 +113,8 @@ SceneTextures uploadSceneTextures(rhi::IDevice& device, rhi::ICommandList& comma
   for (const auto& ref : scene.textureRefs) {
     auto it = std::find(distinct.begin(), distinct.end(), ref.sampler);
     if (it == distinct.end()) it = distinct.insert(distinct.end(), ref.sampler);
-    out.refs.push_back(packTextureRef(ref, uint32_t(it - distinct.begin())));
+    const scene::Texture& t = scene.textures.at(ref.texture);
+    out.refs.push_back(packTextureRef(ref, uint32_t(it - distinct.begin()), t.width, t.height));
   }
   if (distinct.empty()) distinct.emplace_back();
   for (const auto& s : distinct) {
@@ -97,7 +122,7 @@ SceneTextures uploadSceneTextures(rhi::IDevice& device, rhi::ICommandList& comma
     desc.debugName = "scene sampler";
     out.samplers.push_back(device.createSampler(desc));
   }
-  if (out.refs.empty()) out.refs.push_back(packTextureRef(scene::TextureRef{}, 0));
+  if (out.refs.empty()) out.refs.push_back(packTextureRef(scene::TextureRef{}, 0, 1, 1));
   return out;
 }
 

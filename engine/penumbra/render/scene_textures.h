@@ -1,5 +1,5 @@
 #pragma once
-// A scene's textures on the GPU: one sampled texture per scene::Texture, the
+// A scene's textures on the GPU: one sampled texture with its mip chain per scene::Texture, the
 // distinct samplers its texture references use, and the references packed
 // for the shaders (PT_T_TEXTURES, PT_S_SAMPLERS, PT_T_TEXTURE_REFS).
 #include <glm/glm.hpp>
@@ -24,8 +24,10 @@ struct SceneTextures {
 SceneTextures uploadSceneTextures(rhi::IDevice& device, rhi::ICommandList& commandList,
                                   const scene::Scene& scene);
 
-// The GPU form of a texture reference whose sampler is samplers[samplerIndex].
-gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t samplerIndex);
+// The GPU form of a texture reference whose sampler is samplers[samplerIndex]
+// and whose texture is width x height.
+gpu::TextureRefData packTextureRef(const scene::TextureRef& ref, uint32_t samplerIndex,
+                                   uint32_t width, uint32_t height);
 
 // rhi::SamplerDesc for a glTF sampler.
 rhi::SamplerDesc samplerDesc(const scene::TextureSampler& sampler);

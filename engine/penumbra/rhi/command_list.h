@@ -64,12 +64,13 @@ class ICommandList {
   // D3D12: upload heap + CopyBufferRegion. Vulkan: staging buffer + vkCmdCopyBuffer.
   virtual void writeBuffer(IBuffer* buffer, const void* data, size_t bytes,
                            uint64_t offset = 0) = 0;
-  // Copies tightly packed rows (width * texel size bytes each, `bytes` must be
-  // the whole texture) into a texture through a staging buffer the list owns;
-  // moves the texture to CopyDest first. Move it to ShaderResource before
-  // shaders sample it (binding sets do that when bound).
-  // D3D12: upload heap + CopyTextureRegion (rows padded to 256 bytes).
-  // Vulkan: staging buffer + vkCmdCopyBufferToImage.
+  // Copies tightly packed rows (width * texel size bytes each) of every mip
+  // level, largest first (`bytes` must be textureByteSize(desc)), into a
+  // texture through a staging buffer the list owns; moves the texture to
+  // CopyDest first. Move it to ShaderResource before shaders sample it
+  // (binding sets do that when bound).
+  // D3D12: upload heap + one CopyTextureRegion per level (rows padded to 256 bytes).
+  // Vulkan: staging buffer + vkCmdCopyBufferToImage, one region per level.
   virtual void writeTexture(ITexture* texture, const void* data, size_t bytes) = 0;
   // D3D12: CopyBufferRegion. Vulkan: vkCmdCopyBuffer.
   virtual void copyBuffer(IBuffer* dst, uint64_t dstOffset, IBuffer* src, uint64_t srcOffset,

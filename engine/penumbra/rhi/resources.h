@@ -36,10 +36,21 @@ struct TextureDesc {
   uint32_t height = 1;
   Format format = Format::RGBA32_FLOAT;
   TextureUsage usage = TextureUsage::Storage;
+  // Level i is max(1, width >> i) x max(1, height >> i); at most
+  // mipLevelCount(width, height). More than one only for textures that are
+  // sampled and written with writeTexture, not storage or render targets.
+  uint32_t mipLevels = 1;
   std::string debugName;
 };
 
-// D3D12: ID3D12Resource (TEXTURE2D). Vulkan: VkImage + VkImageView (2D, one mip).
+// The levels of a full mip chain down to 1x1: floor(log2(max(w, h))) + 1.
+uint32_t mipLevelCount(uint32_t width, uint32_t height);
+// The bytes of every level of `desc`, tightly packed, largest first: what
+// writeTexture takes.
+uint64_t textureByteSize(const TextureDesc& desc);
+
+// D3D12: ID3D12Resource (TEXTURE2D, desc.mipLevels). Vulkan: VkImage + VkImageView (2D,
+// every level).
 class ITexture {
  public:
   virtual ~ITexture() = default;
@@ -50,13 +61,17 @@ using TextureHandle = std::shared_ptr<ITexture>;
 
 // Samplers are separate objects (HLSL SamplerState, GLSL `sampler`), combined
 // with a texture in the shader, so any texture can be read with any sampler.
-// Textures have one mip level, so there is no mip filter or LOD range.
+// The shader picks the level (SampleLevel: rays have no screen derivatives).
 enum class Filter : uint8_t { Nearest, Linear };
+// Between mip levels: None reads level 0 only, whatever level is asked;
+// Nearest the nearest level; Linear blends the two nearest (trilinear).
+enum class MipFilter : uint8_t { None, Nearest, Linear };
 enum class AddressMode : uint8_t { Repeat, MirroredRepeat, ClampToEdge };
 
 struct SamplerDesc {
   Filter minFilter = Filter::Linear;
   Filter magFilter = Filter::Linear;
+  MipFilter mipFilter = MipFilter::None;
   AddressMode addressU = AddressMode::Repeat;
   AddressMode addressV = AddressMode::Repeat;
   std::string debugName;
@@ -64,7 +79,7 @@ struct SamplerDesc {
 
 // D3D12: a sampler descriptor (D3D12_SAMPLER_DESC), written into the
 // shader-visible sampler heap by the binding sets that hold it.
-// Vulkan: VkSampler (mipmapMode NEAREST, LOD range [0, 0], no anisotropy).
+// Vulkan: VkSampler (LOD range [0, 0] for MipFilter::None, no anisotropy).
 class ISampler {
  public:
   virtual ~ISampler() = default;

@@ -1,6 +1,22 @@
 #include "penumbra/rhi/rhi.h"
 
+#include <algorithm>
+
 namespace penumbra::rhi {
+
+uint32_t mipLevelCount(uint32_t width, uint32_t height) {
+  uint32_t levels = 1;
+  for (uint32_t size = std::max(width, height); size > 1; size >>= 1) ++levels;
+  return levels;
+}
+
+uint64_t textureByteSize(const TextureDesc& desc) {
+  uint64_t bytes = 0;
+  for (uint32_t level = 0; level < desc.mipLevels; ++level)
+    bytes += uint64_t(std::max(1u, desc.width >> level)) * std::max(1u, desc.height >> level) *
+             formatByteSize(desc.format);
+  return bytes;
+}
 
 uint32_t formatByteSize(Format format) {
   switch (format) {

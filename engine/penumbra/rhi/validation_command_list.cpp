@@ -154,9 +154,10 @@ void ValidationCommandList::writeTexture(ITexture* texture, const void* data, si
   const char* call = "writeTexture";
   requireOutsideRendering(call);
   const TextureDesc& d = texture->desc();
-  const uint64_t expected = uint64_t(d.width) * d.height * formatByteSize(d.format);
+  const uint64_t expected = textureByteSize(d);
   if (bytes != expected)
-    fail(call, "{} bytes into {} ({}x{}, {} bytes)", bytes, nameOf(d), d.width, d.height, expected);
+    fail(call, "{} bytes into {} ({}x{}, {} mip levels, {} bytes)", bytes, nameOf(d), d.width,
+         d.height, d.mipLevels, expected);
   if (!data) fail(call, "{} bytes into {} from a null pointer", bytes, nameOf(d));
   backend_->writeTexture(texture, data, bytes);
 }

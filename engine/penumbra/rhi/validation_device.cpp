@@ -109,6 +109,15 @@ TextureHandle ValidationDevice::createTexture(const TextureDesc& desc) {
   // Neither API can write sRGB textures from shaders (no storage sRGB formats).
   if (desc.format == Format::RGBA8_SRGB && hasFlag(desc.usage, TextureUsage::Storage))
     fail("createTexture", "{}: RGBA8_SRGB cannot have TextureUsage::Storage", nameOf(desc));
+  if (desc.mipLevels == 0 || desc.mipLevels > mipLevelCount(desc.width, desc.height))
+    fail("createTexture", "{} ({}x{}) has {} mip levels; it can have 1 to {}", nameOf(desc),
+         desc.width, desc.height, desc.mipLevels, mipLevelCount(desc.width, desc.height));
+  // Storage and render-target views, copies and readbacks address level 0.
+  if (desc.mipLevels > 1 && (hasFlag(desc.usage, TextureUsage::Storage) ||
+                             hasFlag(desc.usage, TextureUsage::RenderTarget)))
+    fail("createTexture",
+         "{}: a texture with mip levels is sampled only, not storage or a render target",
+         nameOf(desc));
   return backend_->createTexture(desc);
 }
 

@@ -283,6 +283,18 @@ TextureSampler convertSampler(const tinygltf::Sampler& src, const std::string& w
   // invalid, but its in-level filter is the evident intent.
   out.magFilter = filter(src.magFilter, "magFilter");
   out.minFilter = filter(src.minFilter, "minFilter");
+  switch (src.minFilter) {
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      out.mipFilter = MipFilter::None;
+      break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      out.mipFilter = MipFilter::Nearest;
+      break;
+    default:
+      out.mipFilter = MipFilter::Linear;
+  }
   out.wrapU = wrap(src.wrapS, "wrapS");
   out.wrapV = wrap(src.wrapT, "wrapT");
   return out;

@@ -58,8 +58,8 @@ bool decodeImage(tinygltf::Image* image, int index, std::string* err, std::strin
 std::vector<uint8_t> toRgba8(const std::vector<unsigned char>& pixels, uint32_t width,
                              uint32_t height, int components, int bits, const std::string& where);
 
-// A glTF sampler (spec 3.8.4): the mipmapped minification filters reduce to
-// their in-level filter (there are no mipmaps); absent filters are linear.
+// A glTF sampler (spec 3.8.4): minFilter's in-level filter and its filter
+// between mip levels (none for NEAREST and LINEAR); absent filters are linear.
 // Unknown values give a warning and the default.
 TextureSampler convertSampler(const tinygltf::Sampler& sampler, const std::string& where,
                               std::vector<std::string>& warnings);

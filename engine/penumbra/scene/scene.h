@@ -26,13 +26,18 @@ struct Texture {
   bool srgb = false;
 };
 
-// How a texture is filtered and wrapped (glTF samplers). Without mipmaps the
-// minification filter reduces to nearest or linear.
+// How a texture is filtered and wrapped (glTF samplers). Within a level,
+// nearest or linear; between the mip levels a ray's footprint picks, none
+// (level 0 only), the nearest level or a blend of the two (glTF's minFilter:
+// NEAREST and LINEAR have none, *_MIPMAP_NEAREST nearest, *_MIPMAP_LINEAR and
+// no filter at all a blend).
 enum class TextureFilter { Nearest, Linear };
+enum class MipFilter { None, Nearest, Linear };
 enum class TextureWrap { Repeat, MirroredRepeat, ClampToEdge };
 struct TextureSampler {
   TextureFilter magFilter = TextureFilter::Linear;
   TextureFilter minFilter = TextureFilter::Linear;
+  MipFilter mipFilter = MipFilter::Linear;
   TextureWrap wrapU = TextureWrap::Repeat;
   TextureWrap wrapV = TextureWrap::Repeat;
   bool operator==(const TextureSampler&) const = default;

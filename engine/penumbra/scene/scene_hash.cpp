@@ -19,7 +19,7 @@ static_assert(fieldCount<Mesh>() == 9, "a Mesh field is not hashed (scene_hash.c
 static_assert(fieldCount<Camera>() == 9, "a Camera field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<PointLight>() == 8, "a PointLight field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<TextureRef>() == 6, "a TextureRef field is not hashed (scene_hash.cpp)");
-static_assert(fieldCount<TextureSampler>() == 4, "a sampler field is not hashed (scene_hash.cpp)");
+static_assert(fieldCount<TextureSampler>() == 5, "a sampler field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<Texture>() == 5, "a Texture field is not hashed (scene_hash.cpp)");
 static_assert(fieldCount<ImplicitObject>() == 5, "an ImplicitObject field is not hashed");
 static_assert(fieldCount<SphereTracing>() == 2, "a SphereTracing field is not hashed");
@@ -121,6 +121,7 @@ std::string contentHash(const Scene& scene) {
     h.value(r.texture);
     h.value(r.sampler.magFilter);
     h.value(r.sampler.minFilter);
+    h.value(r.sampler.mipFilter);
     h.value(r.sampler.wrapU);
     h.value(r.sampler.wrapV);
     h.value(r.texCoord);

@@ -132,7 +132,7 @@ TextureRefData loadTextureRef(uint index) {
   r.column1 = float2(0.0, 1.0);
   return r;
 }
-float4 sampleTextureLod0(uint textureIndex, uint samplerIndex, float2 uv) { return float4(1.0, 1.0, 1.0, 1.0); }
+float4 sampleTextureLevel(uint textureIndex, uint samplerIndex, float2 uv, float level) { return float4(1.0, 1.0, 1.0, 1.0); }
 #include "textures.hlsli"
 
 // The harness has no meshes; these only let the triangle half of the record
@@ -153,6 +153,8 @@ float3 loadVertexNormal(uint vertex) { return float3(0.0, 0.0, 1.0); }
 float4 loadVertexTangent(uint vertex) { return float4(1.0, 0.0, 0.0, 1.0); }
 float4 loadVertexTexCoords(uint vertex) { return float4(0.0, 0.0, 0.0, 0.0); }
 float4 loadVertexColor(uint vertex) { return float4(1.0, 1.0, 1.0, 1.0); }
+// The camera of the run (the ray cone's, for textures; the sphere has none).
+FrameConstants frameConstants() { return gPush.frame; }
 #include "surface_from_record.hlsli"
 
 // No environment in this harness (no PT_EFFECT_ENVIRONMENT); its code compiles through
@@ -172,7 +174,6 @@ float loadSheenAlbedo(uint index) { return 0.0; }
 // The harness keeps no guides.
 static uint2 gPixel;
 uint2 launchPixel() { return gPixel; }
-FrameConstants frameConstants() { return gPush.frame; }
 void addGuideSample(uint2 pixel, uint samplesBefore, float3 albedo, float4 normalDepth, float3 emission) {}
 
 #include "camera.hlsli"
