@@ -2,16 +2,16 @@
 // the material. Needs the entry point's loadTextureRef(index) and
 // sampleTextureLevel(texture, sampler, uv, level) (bindless arrays).
 //
-// Which mip level: rays have no screen-space derivatives, so each carries a
-// cone (Akenine-Moller et al., "Improved Shader and Texture Level of Detail
-// Using Ray Cones", JCGT 2021): its width W where it meets a triangle, over
-// |cos| of the angle to the triangle's normal, is the footprint's length on
-// the surface, and 0.5 log2 of the triangle's texture-coordinate area over
-// its world area turns that into texture-coordinate units. A hit's
-// `footprint` holds log2 of that length for TEXCOORD_0 and TEXCOORD_1
-// (surface_from_record.hlsli); each texture adds its own lodOffset (log2 of
-// its texels per coordinate unit), so the level is where one texel spans the
-// footprint.
+// Which mip level: rays have no screen-space derivatives, so a hit takes a
+// ray cone's (Akenine-Moller et al., "Improved Shader and Texture Level of
+// Detail Using Ray Cones", JCGT 2021), the camera's at that point
+// (camera.hlsli, pixelCone): its width W there, over |cos| of the angle to
+// the triangle's normal, is the footprint's length on the surface, and 0.5
+// log2 of the triangle's texture-coordinate area over its world area turns
+// that into texture-coordinate units. A hit's `footprint` holds log2 of that
+// length for TEXCOORD_0 and TEXCOORD_1 (surface_from_record.hlsli); each
+// texture adds its own lodOffset (log2 of its texels per coordinate unit),
+// so the level is where one texel spans the footprint.
 #ifndef PENUMBRA_TEXTURES_HLSLI
 #define PENUMBRA_TEXTURES_HLSLI
 #include "rng.hlsli"

@@ -181,6 +181,18 @@ TEST_CASE_METHOD(Fixture, "validation: writeTexture with the wrong byte count",
   REQUIRE_REJECTED(
       cmd->writeTexture(t.get(), data.data(), data.size()),
       ContainsSubstring("writeTexture: 100 bytes into texture 'albedo' (4x4, 256 bytes)"));
+  // With mip levels, every level: 4x4 + 2x2 + 1x1 texels of 16 bytes.
+  TextureDesc desc;
+  desc.width = 4;
+  desc.height = 4;
+  desc.usage = TextureUsage::Sampled | TextureUsage::CopyDest;
+  desc.mipLevels = 3;
+  desc.debugName = "mipmapped";
+  auto mipmapped = device->createTexture(desc);
+  std::vector<uint8_t> level0(256);
+  REQUIRE_REJECTED(cmd->writeTexture(mipmapped.get(), level0.data(), level0.size()),
+                   ContainsSubstring("writeTexture: 256 bytes into texture 'mipmapped' (4x4 and 2 "
+                                     "smaller mip levels, 336 bytes)"));
 }
 
 TEST_CASE_METHOD(Fixture, "validation: copyBuffer ranges lie inside both buffers",
@@ -301,6 +313,31 @@ TEST_CASE_METHOD(Fixture, "validation: buffers and textures have a size", "[rhi]
   desc.debugName = "flat";
   REQUIRE_REJECTED(device->createTexture(desc),
                    ContainsSubstring("createTexture: texture 'flat' is 0x1"));
+}
+
+TEST_CASE_METHOD(Fixture,
+                 "validation: mip levels run from 1 to the full chain, sampled textures only",
+                 "[rhi][validation]") {
+  TextureDesc desc;
+  desc.width = 5;
+  desc.height = 3;
+  desc.usage = TextureUsage::Sampled | TextureUsage::CopyDest;
+  desc.debugName = "odd";
+  desc.mipLevels = 0;
+  REQUIRE_REJECTED(
+      device->createTexture(desc),
+      ContainsSubstring("createTexture: texture 'odd' (5x3) has 0 mip levels; it can have 1 to 3"));
+  desc.mipLevels = 4;  // 5x3, 2x1, 1x1 is the whole chain
+  REQUIRE_REJECTED(
+      device->createTexture(desc),
+      ContainsSubstring("createTexture: texture 'odd' (5x3) has 4 mip levels; it can have 1 to 3"));
+  desc.mipLevels = 3;
+  REQUIRE(device->createTexture(desc));
+  desc.usage = TextureUsage::Storage;
+  REQUIRE_REJECTED(
+      device->createTexture(desc),
+      ContainsSubstring("createTexture: texture 'odd': a texture with mip levels is sampled "
+                        "only, not storage or a render target"));
 }
 
 TEST_CASE_METHOD(Fixture, "validation: acceleration-structure storage is device-local",

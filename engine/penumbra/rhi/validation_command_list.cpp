@@ -156,8 +156,9 @@ void ValidationCommandList::writeTexture(ITexture* texture, const void* data, si
   const TextureDesc& d = texture->desc();
   const uint64_t expected = textureByteSize(d);
   if (bytes != expected)
-    fail(call, "{} bytes into {} ({}x{}, {} mip levels, {} bytes)", bytes, nameOf(d), d.width,
-         d.height, d.mipLevels, expected);
+    fail(call, "{} bytes into {} ({}x{}{}, {} bytes)", bytes, nameOf(d), d.width, d.height,
+         d.mipLevels > 1 ? fmt::format(" and {} smaller mip levels", d.mipLevels - 1) : "",
+         expected);
   if (!data) fail(call, "{} bytes into {} from a null pointer", bytes, nameOf(d));
   backend_->writeTexture(texture, data, bytes);
 }
