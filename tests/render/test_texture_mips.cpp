@@ -94,7 +94,10 @@ TEST_CASE("mip chains: every level keeps the image's mean, odd sizes included",
   // about 0.02 here (7x5, 13x1).
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> byte(0, 255);
-  for (auto [w, h] : {std::pair{7u, 5u}, std::pair{13u, 1u}, std::pair{64u, 33u}}) {
+  for (const auto& size : {std::pair{7u, 5u}, std::pair{13u, 1u}, std::pair{64u, 33u}}) {
+    // Named copies, not structured bindings: clang's C++20 does not let the
+    // lambda below capture those.
+    const uint32_t w = size.first, h = size.second;
     std::vector<uint8_t> texels(size_t(w) * h * 4);
     for (auto& t : texels) t = uint8_t(byte(rng));
     for (bool srgb : {false, true}) {
