@@ -24,10 +24,6 @@ rhi::AddressMode addressMode(scene::TextureWrap w) {
   return rhi::AddressMode::Repeat;
 }
 
-float srgbToLinear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
 rhi::MipFilter mipFilter(scene::MipFilter f) {
   switch (f) {
     case scene::MipFilter::None:

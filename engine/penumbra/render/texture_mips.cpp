@@ -4,15 +4,15 @@
 #include <cmath>
 
 namespace penumbra::render {
-namespace {
-
-float decodeSrgb(float c) {
+float srgbToLinear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-float encodeSrgb(float c) {
+float linearToSrgb(float c) {
   return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
+
+namespace {
 
 struct Tap {
   uint32_t source;
@@ -66,7 +66,7 @@ std::vector<uint8_t> mipChainRgba8(const uint8_t* rgba8, uint32_t width, uint32_
   std::vector<float> level(texels * 4);
   for (size_t i = 0; i < texels * 4; ++i) {
     const float v = rgba8[i] / 255.0f;
-    level[i] = srgb && i % 4 != 3 ? decodeSrgb(v) : v;
+    level[i] = srgb && i % 4 != 3 ? srgbToLinear(v) : v;
   }
   while (width > 1 || height > 1) {
     const uint32_t toWidth = std::max(1u, width >> 1), toHeight = std::max(1u, height >> 1);
@@ -75,7 +75,7 @@ std::vector<uint8_t> mipChainRgba8(const uint8_t* rgba8, uint32_t width, uint32_
     height = toHeight;
     for (size_t i = 0; i < level.size(); ++i) {
       const float v = std::clamp(level[i], 0.0f, 1.0f);
-      chain.push_back(uint8_t(std::lround((srgb && i % 4 != 3 ? encodeSrgb(v) : v) * 255.0f)));
+      chain.push_back(uint8_t(std::lround((srgb && i % 4 != 3 ? linearToSrgb(v) : v) * 255.0f)));
     }
   }
   return chain;

@@ -7,6 +7,10 @@
 
 namespace penumbra::render {
 
+// sRGB's transfer function (IEC 61966-2-1), on [0, 1].
+float srgbToLinear(float c);
+float linearToSrgb(float c);
+
 // Every level of a width x height RGBA8 image down to 1x1, largest first,
 // tightly packed (level i is max(1, width >> i) x max(1, height >> i)), as
 // rhi::ICommandList::writeTexture takes them. Each texel of a level is the
